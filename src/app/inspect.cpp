@@ -1,0 +1,44 @@
+#include "app/inspect.hpp"
+
+#include <cstdio>
+
+#include "sumo/route_builder.hpp"
+
+namespace signalsim {
+namespace {
+
+std::string format(const char* fmt, auto... args) {
+  char buf[512];
+  std::snprintf(buf, sizeof buf, fmt, args...);
+  return buf;
+}
+
+}  // namespace
+
+void print_inspection(std::ostream& out, const sumo::NetIndex& net, const std::vector<std::string>& route) {
+  out << "net " << net.path() << ": " << net.edge_count() << " edges, " << net.tl_logics().size()
+      << " traffic lights, " << net.roundabouts().size() << " roundabouts, "
+      << (net.lefthand() ? "left-hand" : "right-hand") << " traffic\n";
+  if (route.empty()) return;
+  const sumo::RoutePlan plan = sumo::build_route(net, route);
+  out << "route: " << plan.map.size() << " lanelets, " << format("%.2f", plan.map.length()) << " m, "
+      << plan.lane_changes << " lane change(s) planned\n";
+  out << format("%4s %9s %9s  %-18s %-9s %-10s %-8s %7s %-14s %s\n", "#", "s_start", "s_end", "lane", "turn",
+                "roundabout", "junction", "v_max", "light", "params");
+  for (std::size_t i = 0; i < plan.map.size(); ++i) {
+    const Lanelet& l = plan.map.at(i);
+    std::string light = l.traffic_light ? l.traffic_light->tls_id + ":" + std::to_string(l.traffic_light->link_index) : "-";
+    std::string params;
+    if (l.turn_signal_distance) params += format("turn_signal_distance=%.1f ", *l.turn_signal_distance);
+    for (const auto& [key, value] : l.params)
+      if (key != "turn_signal_distance") params += key + "=" + value + " ";
+    if (l.stop_offset > 0.0) params += format("stop_offset=%.2f ", l.stop_offset);
+    out << format("%4zu %9.2f %9.2f  %-18s %-9s %-10s %-8s %7.2f %-14s %s\n", i, l.s_start, l.s_end(),
+                  l.lane_id.c_str(), std::string(to_string(l.turn_direction)).c_str(),
+                  std::string(to_string(l.roundabout_role)).c_str(),
+                  l.junction_id.empty() ? "-" : l.junction_id.c_str(), l.speed_limit, light.c_str(),
+                  params.empty() ? "-" : params.c_str());
+  }
+}
+
+}  // namespace signalsim

@@ -1,0 +1,22 @@
+// Speed along the route under the lane speed limits ahead (internal lanes included), within
+// comfortable acceleration and deceleration limits.
+#pragma once
+
+#include "map/route_map.hpp"
+
+namespace signalsim {
+
+struct SpeedLimits {
+  double max_speed = 13.89;  ///< vehicle maximum [m/s]
+  double accel = 1.0;        ///< [m/s^2], > 0
+  double decel = 1.0;        ///< [m/s^2], > 0
+};
+
+/// The speed to command for the next step of length dt: the highest speed from which every
+/// lanelet ahead can still be entered (front bumper) at no more than its limit with `decel`,
+/// reached from `speed` with at most `accel` and at most `decel` per second.
+/// Looks only as far ahead as the braking distance from max_speed: cost independent of the net.
+double plan_speed_under_limits(const RouteMap& route, double s_front, double speed, double dt,
+                               const SpeedLimits& limits);
+
+}  // namespace signalsim

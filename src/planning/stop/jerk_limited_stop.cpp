@@ -1,0 +1,200 @@
+#include "planning/stop/jerk_limited_stop.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace signalsim {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kStoppedVelocity = 1e-3;    // [m/s] at or below: standing
+constexpr double kBrakingAcceleration = -1e-3;  // [m/s^2] below: already braking
+constexpr double kDistanceTolerance = 0.01;  // [m] feasibility slack against step discretisation
+
+// Smallest t in (0, t_max] with v + a t + s t^2 / 2 = 0 (v > 0), if any.
+std::optional<double> first_stop_time(double v, double a, double s, double t_max) {
+  if (t_max <= 0.0) return std::nullopt;
+  double best = kInf;
+  if (s == 0.0) {
+    if (a < 0.0) best = -v / a;
+  } else {
+    const double A = 0.5 * s;
+    const double disc = a * a - 4.0 * A * v;
+    if (disc >= 0.0) {
+      const double sq = std::sqrt(disc);
+      for (const double t : {(-a - sq) / (2.0 * A), (-a + sq) / (2.0 * A)}) {
+        if (t > 0.0 && t < best) best = t;
+      }
+    }
+  }
+  if (best <= t_max) return best;
+  return std::nullopt;
+}
+
+struct Ramp {
+  double s;  // signed jerk of the ramp
+  double t;  // ramp duration
+};
+
+Ramp ramp(double a, double target_acc, double jerk) {
+  if (std::isinf(jerk) || target_acc == a) return {0.0, 0.0};
+  const double s = target_acc < a ? -jerk : jerk;
+  return {s, std::abs(target_acc - a) / jerk};
+}
+
+struct Motion {
+  double v;
+  double a;
+};
+
+// The profile's state after dt.
+Motion advance(double v, double a, double target_acc, double jerk, double dt) {
+  if (v <= 0.0) return {0.0, 0.0};
+  const Ramp r = ramp(a, target_acc, jerk);
+  const double a0 = std::isinf(jerk) ? target_acc : a;
+  const double tau = std::min(dt, r.t);
+  if (first_stop_time(v, a0, r.s, tau)) return {0.0, 0.0};
+  const double v1 = v + a0 * tau + 0.5 * r.s * tau * tau;
+  const double a1 = a0 + r.s * tau;
+  const double rest = dt - tau;
+  if (rest <= 0.0) return {v1, a1};
+  const double v2 = v1 + target_acc * rest;
+  if (v2 <= 0.0) return {0.0, 0.0};
+  return {v2, target_acc};
+}
+
+void require_finite(double value, const char* name) {
+  if (!std::isfinite(value)) throw std::invalid_argument(std::string("plan_stop: ") + name + " is not finite");
+}
+
+void validate_set(const StopConstraintSet& c, const char* name) {
+  if (!std::isfinite(c.min_acc) || !(c.min_acc < 0.0)) {
+    throw std::invalid_argument(std::string("stop planner parameter ") + name + ".min_acc must be finite and < 0");
+  }
+  if (std::isnan(c.min_jerk) || !(c.min_jerk < 0.0)) {
+    throw std::invalid_argument(std::string("stop planner parameter ") + name + ".min_jerk must be < 0");
+  }
+}
+
+}  // namespace
+
+std::string_view to_string(StopLevel level) {
+  switch (level) {
+    case StopLevel::Normal: return "normal";
+    case StopLevel::Limit: return "limit";
+    case StopLevel::Emergency: return "emergency";
+  }
+  return "invalid";
+}
+
+void validate(const StopPlannerParameters& p) {
+  validate_set(p.normal, "normal");
+  validate_set(p.limit, "limit");
+  validate_set(p.emergency, "emergency");
+}
+
+double stopping_distance(double v, double a, double target_acc, double jerk) {
+  if (v <= 0.0) return 0.0;
+  const Ramp r = ramp(a, target_acc, jerk);
+  const double a0 = std::isinf(jerk) ? target_acc : a;
+  // Stops during the ramp?
+  if (const auto t = first_stop_time(v, a0, r.s, r.t)) {
+    return v * *t + 0.5 * a0 * *t * *t + r.s * *t * *t * *t / 6.0;
+  }
+  const double x1 = v * r.t + 0.5 * a0 * r.t * r.t + r.s * r.t * r.t * r.t / 6.0;
+  const double v1 = v + a0 * r.t + 0.5 * r.s * r.t * r.t;
+  if (v1 <= 0.0) return x1;
+  if (target_acc >= 0.0) return kInf;
+  return x1 + v1 * v1 / (-2.0 * target_acc);
+}
+
+double min_stopping_distance(double v, double a, const StopConstraintSet& c) {
+  return stopping_distance(v, a, c.min_acc, std::abs(c.min_jerk));
+}
+
+StopCommand plan_stop(const StopPlannerInput& in, const StopPlannerParameters& params) {
+  validate(params);
+  require_finite(in.velocity, "velocity");
+  require_finite(in.acceleration, "acceleration");
+  require_finite(in.distance_to_stop, "distance_to_stop");
+  require_finite(in.dt, "dt");
+  if (!(in.dt > 0.0)) throw std::invalid_argument("plan_stop: dt must be > 0");
+
+  const double v = std::max(0.0, in.velocity);
+  const double a = in.acceleration;
+  const double D = in.distance_to_stop;
+  StopCommand cmd;
+
+  // Standing: hold (the stop constrains the ego only at or past the stop point).
+  if (v <= kStoppedVelocity) {
+    cmd.level = StopLevel::Normal;
+    cmd.feasible = true;
+    cmd.braking = D <= 0.0;
+    cmd.commanded_velocity = cmd.braking ? 0.0 : v;
+    return cmd;
+  }
+
+  const std::array<std::pair<StopLevel, StopConstraintSet>, 3> levels = {
+      {{StopLevel::Normal, params.normal}, {StopLevel::Limit, params.limit}, {StopLevel::Emergency, params.emergency}}};
+
+  for (const auto& [level, set] : levels) {
+    const double s_min = min_stopping_distance(v, a, set);
+    if (s_min > D + kDistanceTolerance) continue;
+
+    cmd.level = level;
+    cmd.feasible = true;
+    cmd.stopping_distance = s_min;
+    const double jerk = std::abs(set.min_jerk);
+
+    // Cruise while the normal level can still stop after one more step at this speed.
+    if (level == StopLevel::Normal && a >= kBrakingAcceleration &&
+        min_stopping_distance(v, 0.0, set) <= D - v * in.dt) {
+      cmd.braking = false;
+      cmd.commanded_velocity = v;
+      cmd.commanded_acceleration = 0.0;
+      cmd.target_acceleration = 0.0;
+      return cmd;
+    }
+
+    // Exact stop: the gentlest target within the set whose profile ends at D.
+    double lo = set.min_acc;  // S(lo) <= D (+ tolerance)
+    double hi = -1e-9;        // S(hi) is (practically) >= D
+    if (stopping_distance(v, a, hi, jerk) <= D) {
+      lo = hi;
+    } else if (s_min < D) {
+      for (int i = 0; i < 200 && hi - lo > 1e-12; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        if (stopping_distance(v, a, mid, jerk) <= D) {
+          lo = mid;
+        } else {
+          hi = mid;
+        }
+      }
+    }
+    const Motion next = advance(v, a, lo, jerk, in.dt);
+    cmd.braking = true;
+    cmd.target_acceleration = lo;
+    cmd.commanded_velocity = next.v;
+    cmd.commanded_acceleration = next.a;
+    return cmd;
+  }
+
+  // Not even the emergency level stops in time: brake as hard as the vehicle can.
+  cmd.level = StopLevel::Emergency;
+  cmd.feasible = false;
+  cmd.braking = true;
+  cmd.stopping_distance = min_stopping_distance(v, a, params.emergency);
+  const Motion next = advance(v, a, params.emergency.min_acc, std::abs(params.emergency.min_jerk), in.dt);
+  cmd.target_acceleration = params.emergency.min_acc;
+  cmd.commanded_velocity = next.v;
+  cmd.commanded_acceleration = next.a;
+  return cmd;
+}
+
+}  // namespace signalsim

@@ -1,0 +1,82 @@
+// Jerk-limited stop planner with relaxation levels (spec TLJ §2.7, Decisions "dilemma zone"):
+// bring the ego to rest at a stop point, with the first constraint set that can still do it:
+// normal (-1.0 m/s^2, -1.0 m/s^3), then limit (-2.5, -1.5) (Autoware common.param.yaml), then the
+// vehicle's emergency deceleration with unbounded jerk. Pure functions and value types only.
+//
+// Profile model ("ramp then hold"): from the current (v, a) the acceleration moves at the level's
+// jerk magnitude J toward a target a_t in [min_acc, 0), then holds a_t until standstill; with
+// unbounded jerk it jumps to a_t at once. Its stopping distance S(v, a, a_t, J) grows as a_t -> 0,
+// so the exact-stop target is found by bisection. The level's minimum stopping distance is
+// S(v, a, min_acc, J): the level is feasible iff that is <= distance (+ 1 cm tolerance).
+//
+// plan_stop(in) each step:
+//   if v <= 1e-3:            hold 0 (braking iff distance <= 0); level Normal, feasible
+//   level := first of (normal, limit, emergency) with S_min(level) <= distance + 1 cm
+//   if none:                 level Emergency, infeasible: brake at emergency min_acc
+//   if level == normal and a >= -1e-3 (not braking yet) and S_min(normal from (v, 0)) <= distance - v dt:
+//                            cruise: commanded v (braking = false; braking can still start next step)
+//   else:                    a_t := solve S(v, a, a_t, J) = distance on [min_acc, 0)
+//                            commanded := the profile's speed and acceleration after dt
+// So braking starts as late as the normal level allows (like a velocity smoother tracking the speed
+// limit), and at once, as gently as possible, when only a relaxed level can still stop.
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <string_view>
+
+namespace signalsim {
+
+/// Which constraint set a stop uses (the timeline records it; spec TLJ Decisions).
+enum class StopLevel : std::uint8_t { Normal, Limit, Emergency };
+
+std::string_view to_string(StopLevel level);
+
+/// One constraint set (Autoware's common.param.yaml names; both negative).
+struct StopConstraintSet {
+  double min_acc = -1.0;   ///< [m/s^2] strongest deceleration allowed, < 0
+  double min_jerk = -1.0;  ///< [m/s^3] strongest jerk allowed, < 0; -infinity = unbounded
+};
+
+struct StopPlannerParameters {
+  StopConstraintSet normal{-1.0, -1.0};  ///< [LAUNCH] common.param.yaml `normal`
+  StopConstraintSet limit{-2.5, -1.5};   ///< [LAUNCH] common.param.yaml `limit`
+  /// Vehicle emergency deceleration, jerk unbounded. Default: SUMO's passenger emergencyDecel 9.0;
+  /// the SUMO adapter should pass the ego vType's emergencyDecel.
+  StopConstraintSet emergency{-9.0, -std::numeric_limits<double>::infinity()};
+};
+
+/// Throws std::invalid_argument unless every min_acc is finite and < 0 and every min_jerk is < 0
+/// (finite or -infinity).
+void validate(const StopPlannerParameters& params);
+
+struct StopPlannerInput {
+  double velocity = 0.0;          ///< [m/s] current speed v (>= 0 expected; negative counts as 0)
+  double acceleration = 0.0;      ///< [m/s^2] current acceleration a
+  double distance_to_stop = 0.0;  ///< [m] from the reference point to where it must come to rest
+  double dt = 0.1;                ///< [s] step length, > 0
+};
+
+struct StopCommand {
+  StopLevel level = StopLevel::Normal;  ///< first feasible level (Emergency if none)
+  bool feasible = true;   ///< false: even the emergency level overshoots the stop point
+  bool braking = false;   ///< false: the stop does not constrain the speed yet (cruise)
+  double commanded_velocity = 0.0;      ///< [m/s] speed to reach at the end of this step, >= 0
+  double commanded_acceleration = 0.0;  ///< [m/s^2] plan's acceleration at the end of the step
+  double target_acceleration = 0.0;     ///< [m/s^2] a_t of the plan (0 when not braking)
+  double stopping_distance = 0.0;       ///< [m] the chosen level's minimum stopping distance
+};
+
+/// Stopping distance of the ramp-then-hold profile (see top). `jerk` is a magnitude (> 0,
+/// +infinity = jump). Returns 0 for v <= 0 and +infinity if a_t >= 0 and the ramp does not stop
+/// the vehicle. Never throws.
+double stopping_distance(double v, double a, double target_acc, double jerk);
+
+/// Minimum stopping distance within a constraint set: stopping_distance(v, a, c.min_acc, |c.min_jerk|).
+double min_stopping_distance(double v, double a, const StopConstraintSet& c);
+
+/// One step of the planner (algorithm at the top). Throws std::invalid_argument if dt <= 0, an
+/// input is not finite, or validate(params) throws.
+StopCommand plan_stop(const StopPlannerInput& in, const StopPlannerParameters& params = {});
+
+}  // namespace signalsim

@@ -1,0 +1,108 @@
+#include "scenario/expectations.hpp"
+
+#include <optional>
+#include <sstream>
+
+#include "scenario/input_error.hpp"
+
+namespace signalsim {
+namespace {
+
+struct Span {
+  double enter = 0.0;  // route s where the route enters the junction / lanelet
+  double leave = 0.0;  // route s where it leaves
+};
+
+// The first stretch of consecutive route lanelets in the junction (or the lanelet itself).
+std::optional<Span> span_of(const ExpectBlinkerThrough& e, const RouteMap& route) {
+  for (std::size_t i = 0; i < route.size(); ++i) {
+    const Lanelet& l = route.at(i);
+    const bool match = e.junction.empty() ? l.lane_id == e.lanelet : l.junction_id == e.junction;
+    if (!match) continue;
+    Span span{l.s_start, l.s_end()};
+    while (!e.junction.empty() && i + 1 < route.size() && route.at(i + 1).junction_id == e.junction)
+      span.leave = route.at(++i).s_end();
+    return span;
+  }
+  return std::nullopt;
+}
+
+std::string at(const TimelineRow& row) {
+  std::ostringstream out;
+  out.setf(std::ios::fixed);
+  out.precision(2);
+  out << "t=" << row.time << " s, s_front=" << row.s_front << " m";
+  return out.str();
+}
+
+ExpectationResult check(const ExpectBlinkerThrough& e, const RouteMap& route, const RunRecord& record) {
+  const Span span = *span_of(e, route);
+  const double from = span.enter - e.lead;
+  std::size_t checked = 0;
+  for (const TimelineRow& row : record.rows) {
+    const double s_base = row.s_front - record.base_link_to_front;
+    if (row.s_front < from || s_base > span.leave) continue;
+    ++checked;
+    if (row.blinker != e.blinker)
+      return {"", false, "blinker " + std::string(to_string(row.blinker)) + " at " + at(row)};
+  }
+  if (checked == 0) return {"", false, "the ego never drove through the span"};
+  const double last_base = record.rows.back().s_front - record.base_link_to_front;
+  if (last_base <= span.leave) return {"", false, "the run ended before base_link left the span"};
+  std::ostringstream out;
+  out << checked << " steps from s_front " << from << " m until base_link passed " << span.leave << " m";
+  return {"", true, out.str()};
+}
+
+// Every step with the front bumper in [from_s, to_s] shows `wanted`.
+ExpectationResult check_range(Blinker wanted, double from_s, double to_s, const RunRecord& record) {
+  std::size_t checked = 0;
+  for (const TimelineRow& row : record.rows) {
+    if (row.s_front < from_s || row.s_front > to_s) continue;
+    ++checked;
+    if (row.blinker != wanted)
+      return {"", false, "blinker " + std::string(to_string(row.blinker)) + " at " + at(row)};
+  }
+  if (checked == 0) return {"", false, "no step had the front bumper in the range"};
+  return {"", true, std::to_string(checked) + " steps with blinker " + std::string(to_string(wanted))};
+}
+
+ExpectationResult check(const ExpectNoBlinker& e, const RouteMap&, const RunRecord& record) {
+  return check_range(Blinker::None, e.from_s, e.to_s, record);
+}
+
+ExpectationResult check(const ExpectBlinkerOn& e, const RouteMap&, const RunRecord& record) {
+  return check_range(e.blinker, e.from_s, e.to_s, record);
+}
+
+ExpectationResult check(const ExpectBlinkerNever& e, const RouteMap&, const RunRecord& record) {
+  for (const TimelineRow& row : record.rows)
+    if (row.blinker == e.blinker) return {"", false, "blinker " + std::string(to_string(row.blinker)) + " at " + at(row)};
+  if (record.rows.empty()) return {"", false, "the run recorded no step"};
+  return {"", true, std::to_string(record.rows.size()) + " steps checked"};
+}
+
+}  // namespace
+
+void check_expectations_apply(const Scenario& scenario, const RouteMap& route) {
+  for (std::size_t i = 0; i < scenario.expect.size(); ++i) {
+    const auto* through = std::get_if<ExpectBlinkerThrough>(&scenario.expect[i]);
+    if (!through || span_of(*through, route)) continue;
+    const std::string what = through->junction.empty() ? "lanelet '" + through->lanelet + "'"
+                                                        : "junction '" + through->junction + "'";
+    throw InputError(scenario.path, 0, "expect[" + std::to_string(i) + "]: " + what + " is not on the ego's route");
+  }
+}
+
+std::vector<ExpectationResult> evaluate_expectations(const Scenario& scenario, const RouteMap& route,
+                                                     const RunRecord& record) {
+  std::vector<ExpectationResult> results;
+  for (const Expectation& expectation : scenario.expect) {
+    ExpectationResult r = std::visit([&](const auto& e) { return check(e, route, record); }, expectation);
+    r.description = describe(expectation);
+    results.push_back(std::move(r));
+  }
+  return results;
+}
+
+}  // namespace signalsim

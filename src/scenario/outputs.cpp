@@ -1,0 +1,136 @@
+#include "scenario/outputs.hpp"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
+
+namespace signalsim {
+namespace fs = std::filesystem;
+namespace {
+
+void write_atomically(const std::string& path, const std::string& content) {
+  const std::string tmp = path + ".tmp";
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    if (!out) throw std::runtime_error(path + ": cannot write output file");
+    out << content;
+    if (!out) throw std::runtime_error(path + ": write failed");
+  }
+  fs::rename(tmp, path);
+}
+
+std::string fixed(double v, int decimals) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  std::string s = buf;
+  if (s == "-0.000" || s == "-0.00" || s == "-0.0") s.erase(0, 1);  // deterministic zero
+  return s;
+}
+
+nlohmann::ordered_json parameters_json(const ParameterSet& set) {
+  nlohmann::ordered_json out = nlohmann::ordered_json::object();
+  for (const ParameterSpec& spec : parameter_schema()) {
+    std::visit([&](const auto& v) { out[spec.name] = v; }, set.values().at(spec.name));
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string_view to_string(RunStatus status) {
+  switch (status) {
+    case RunStatus::Passed: return "passed";
+    case RunStatus::Failed: return "failed";
+    case RunStatus::Error: break;
+  }
+  return "error";
+}
+
+void write_timeline_csv(const std::string& path, const std::vector<TimelineRow>& rows) {
+  std::string out =
+      "time,s_front,x,y,speed,accel,edge,lane,lateral_offset,blinker,blinker_source,sumo_signals,"
+      "tl_id,tl_state,tl_decision,stop_distance\n";
+  out.reserve(rows.size() * 120);
+  for (const TimelineRow& r : rows) {
+    out += fixed(r.time, 3) + ',' + fixed(r.s_front, 3) + ',' + fixed(r.x, 3) + ',' + fixed(r.y, 3) + ',' +
+           fixed(r.speed, 3) + ',' + fixed(r.accel, 3) + ',' + r.edge + ',' + r.lane + ',' +
+           fixed(r.lateral_offset, 3) + ',' + std::string(to_string(r.blinker)) + ',' +
+           std::string(to_string(r.blinker_source)) + ',' +
+           (r.sumo_signals >= 0 ? std::to_string(r.sumo_signals) : std::string()) + ',' + r.tl_id + ',' +
+           (r.tl_state ? std::string(1, r.tl_state) : std::string()) + ",,\n";
+  }
+  write_atomically(path, out);
+}
+
+void write_events_csv(const std::string& path, const std::vector<TimelineEvent>& events) {
+  std::string out = "time,s_front,kind,from,to,source\n";
+  for (const TimelineEvent& e : events)
+    out += fixed(e.time, 3) + ',' + fixed(e.s_front, 3) + ',' + e.kind + ',' + e.from + ',' + e.to + ',' +
+           e.source + '\n';
+  write_atomically(path, out);
+}
+
+void write_run_outputs(const std::string& dir, const Scenario& scenario, const sumo::RoutePlan& plan,
+                       const RunRecord& record, const std::vector<ExpectationResult>& results,
+                       RunStatus status) {
+  fs::create_directories(dir);
+  fs::remove(fs::path(dir) / "summary.json");  // a stale summary must never describe new files
+  write_timeline_csv((fs::path(dir) / "timeline.csv").string(), record.rows);
+  write_events_csv((fs::path(dir) / "events.csv").string(), record.events);
+
+  nlohmann::ordered_json summary;
+  summary["scenario"] = scenario.name;
+  summary["file"] = scenario.path;
+  summary["net"] = scenario.net;
+  summary["status"] = to_string(status);
+  summary["seed"] = scenario.seed;
+  summary["step_length"] = scenario.step_length;
+  summary["duration"] = scenario.duration;
+  summary["route"] = {{"edges", scenario.ego.route},
+                      {"lanelets", plan.map.size()},
+                      {"length", std::stod(fixed(plan.map.length(), 3))},
+                      {"lane_changes", plan.lane_changes}};
+  nlohmann::ordered_json counts;
+  counts["steps"] = record.rows.size();
+  counts["simulated_time"] = record.rows.empty() ? 0.0 : std::stod(fixed(record.rows.back().time, 3));
+  counts["arrived"] = record.arrived;
+  counts["collisions"] = record.collisions;
+  counts["blinker_events"] = record.events.size();
+  std::size_t left = 0, right = 0, hazard = 0, mismatches = 0;
+  for (const TimelineRow& r : record.rows) {
+    left += r.blinker == Blinker::Left;
+    right += r.blinker == Blinker::Right;
+    hazard += r.blinker == Blinker::Hazard;
+    if (r.sumo_signals >= 0) {
+      const int expected = r.blinker == Blinker::Left ? 2 : r.blinker == Blinker::Right ? 1 : r.blinker == Blinker::Hazard ? 4 : 0;
+      mismatches += (r.sumo_signals & 7) != expected;
+    }
+  }
+  counts["steps_left"] = left;
+  counts["steps_right"] = right;
+  counts["steps_hazard"] = hazard;
+  counts["sumo_signal_mismatches"] = mismatches;
+  summary["counts"] = counts;
+  nlohmann::ordered_json expectations = nlohmann::ordered_json::array();
+  for (const ExpectationResult& r : results)
+    expectations.push_back({{"expectation", r.description}, {"passed", r.passed}, {"detail", r.detail}});
+  summary["expectations"] = expectations;
+  summary["parameters"] = parameters_json(scenario.params);
+  write_atomically((fs::path(dir) / "summary.json").string(), summary.dump(2) + "\n");
+}
+
+void write_error_summary(const std::string& dir, const Scenario* scenario, const std::string& message) {
+  fs::create_directories(dir);
+  for (const char* name : {"timeline.csv", "events.csv"}) fs::remove(fs::path(dir) / name);
+  nlohmann::ordered_json summary;
+  summary["scenario"] = scenario ? scenario->name : "";
+  summary["file"] = scenario ? scenario->path : "";
+  summary["status"] = "error";
+  summary["error"] = message;
+  write_atomically((fs::path(dir) / "summary.json").string(), summary.dump(2) + "\n");
+}
+
+}  // namespace signalsim

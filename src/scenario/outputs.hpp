@@ -1,0 +1,30 @@
+// Plain files a user can open: timeline.csv, events.csv, summary.json.
+// Each file is written to "<name>.tmp" and renamed, and summary.json comes last: a directory with a
+// summary.json whose status is not "error" holds a complete run.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "scenario/scenario.hpp"
+#include "scenario/timeline.hpp"
+#include "sumo/route_builder.hpp"
+
+namespace signalsim {
+
+/// Outcome of a run as the summary and the exit code see it.
+enum class RunStatus { Passed, Failed, Error };
+std::string_view to_string(RunStatus status);
+
+void write_timeline_csv(const std::string& path, const std::vector<TimelineRow>& rows);
+void write_events_csv(const std::string& path, const std::vector<TimelineEvent>& events);
+
+/// Writes timeline.csv, events.csv and summary.json into `dir` (created if missing).
+void write_run_outputs(const std::string& dir, const Scenario& scenario, const sumo::RoutePlan& plan,
+                       const RunRecord& record, const std::vector<ExpectationResult>& results,
+                       RunStatus status);
+
+/// Writes only summary.json, status "error", with the message (a run that could not finish).
+void write_error_summary(const std::string& dir, const Scenario* scenario, const std::string& message);
+
+}  // namespace signalsim

@@ -1,0 +1,57 @@
+// The parameter schema: Autoware's names, defaults and the ranges signalsim accepts.
+#include "scenario/parameters.hpp"
+
+namespace signalsim {
+
+const std::vector<ParameterSpec>& parameter_schema() {
+  static const std::vector<ParameterSpec> schema = {
+      // Turn-signal decider (spec TSD §10).
+      {"turn_signal_intersection_search_distance", 30.0, 0.0, 1000.0, {}, "m", "TSD §10"},
+      {"turn_signal_intersection_angle_threshold_deg", 15.0, 0.0, 180.0, {}, "deg", "TSD §10"},
+      {"turn_signal_roundabout_on_entry", std::string("None"), 0, 0, {"None", "Left", "Right"}, "-", "TSD §10"},
+      {"turn_signal_roundabout_entry_indicator_persistence", false, 0, 0, {}, "-", "TSD §10"},
+      {"turn_signal_roundabout_on_exit", std::string("Left"), 0, 0, {"None", "Left", "Right"}, "-", "TSD §10"},
+      {"turn_signal_roundabout_search_distance", 30.0, 0.0, 1000.0, {}, "m", "TSD §10"},
+      {"turn_signal_roundabout_angle_threshold_deg", 15.0, 0.0, 180.0, {}, "deg", "TSD §10"},
+      {"turn_signal_roundabout_backward_depth", 50, -1.0, 100000.0, {}, "lanelets", "TSD §10"},
+      {"turn_signal_minimum_search_distance", 10.0, 0.0, 1000.0, {}, "m", "TSD §10"},
+      {"turn_signal_path_backward_length", 100.0, 0.0, 10000.0, {}, "m", "TSD §10"},
+      {"turn_signal_search_time", 3.0, 0.0, 60.0, {}, "s", "TSD §10"},
+      {"turn_signal_shift_length_threshold", 0.3, 0.0, 10.0, {}, "m", "TSD §10"},
+      {"turn_signal_remaining_shift_length_threshold", 0.1, 0.0, 10.0, {}, "m", "TSD §10"},
+      {"turn_signal_remaining_distance_to_bound_threshold", 1.3, 0.0, 10.0, {}, "m", "TSD §10"},
+      {"turn_signal_on_swerving", true, 0, 0, {}, "-", "TSD §10"},
+      {"forward_path_length", 300.0, 1.0, 10000.0, {}, "m", "TSD §10"},
+      {"input_path_interval", 2.0, 0.01, 100.0, {}, "m", "TSD §10 (parity only: s needs no resampling)"},
+      {"ego_nearest_dist_threshold", 3.0, 0.0, 100.0, {}, "m", "TSD §1.4"},
+      {"ego_nearest_yaw_threshold", 1.046, 0.0, 3.1416, {}, "rad", "TSD §1.4"},
+      {"min_length_for_turn_signal_activation", 10.0, 0.0, 1000.0, {}, "m", "TSD §10 (lane change)"},
+      {"max_prepare_time", 3.0, 0.0, 60.0, {}, "s", "TSD §10 (avoidance)"},
+      {"turn_signal_on_centerline_start", std::string("RIGHT"), 0, 0, {"LEFT", "RIGHT"}, "-", "TSD §10 (start planner)"},
+      {"minimum_shift_length", 0.5, 0.0, 10.0, {}, "m", "TSD §10 (start planner)"},
+      {"th_distance_to_middle_of_the_road", 0.5, 0.0, 10.0, {}, "m", "TSD §10 (start planner)"},
+      {"prepare_time_before_start", 0.0, 0.0, 60.0, {}, "s", "TSD §10 (start planner)"},
+      // Traffic-light judge (spec TLJ §4 and its Decisions).
+      {"stop_margin", 0.0, -10.0, 50.0, {}, "m", "TLJ §4"},
+      {"tl_state_timeout", 1.0, 0.0, 60.0, {}, "s", "TLJ §4"},
+      {"stop_time_hysteresis", 0.1, 0.0, 60.0, {}, "s", "TLJ §4"},
+      {"yellow_lamp_period", 2.75, 0.0, 60.0, {}, "s", "TLJ §4"},
+      {"yellow_light_stop_velocity", 2.0, 0.0, 50.0, {}, "m/s", "TLJ Decisions (brief: 2.0)"},
+      {"enable_pass_judge", true, 0, 0, {}, "-", "TLJ §4"},
+      {"enable_rtc", false, 0, 0, {}, "-", "TLJ §1.5 (only false: no operator in simulation)"},
+      {"restart_suppression.min_behind_distance_to_stop", 0.5, 0.0, 10.0, {}, "m", "TLJ §1.6"},
+      {"restart_suppression.max_behind_distance_to_stop", 1.0, 0.0, 10.0, {}, "m", "TLJ §1.6"},
+      {"v2i.use_remaining_time", false, 0, 0, {}, "-", "TLJ §1.7"},
+      {"v2i.last_time_allowed_to_pass", 2.0, 0.0, 60.0, {}, "s", "TLJ §1.7"},
+      {"v2i.velocity_threshold", 0.5, 0.0, 50.0, {}, "m/s", "TLJ §1.7"},
+      {"v2i.required_time_to_departure", 3.0, 0.0, 60.0, {}, "s", "TLJ §1.7"},
+      {"enable_arrow_aware_yellow_passing", true, 0, 0, {}, "-", "TLJ §1.8"},
+      {"is_simulation", true, 0, 0, {}, "-", "TLJ Decisions"},
+      {"max_accel", -2.8, -50.0, -0.01, {}, "m/s^2", "TLJ §2.1 (pass-judge deceleration, negative)"},
+      {"max_jerk", -5.0, -100.0, -0.01, {}, "m/s^3", "TLJ §2.1 (pass-judge jerk, negative)"},
+      {"delay_response_time", 0.5, 0.0, 10.0, {}, "s", "TLJ §2.1"},
+  };
+  return schema;
+}
+
+}  // namespace signalsim

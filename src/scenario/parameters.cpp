@@ -1,0 +1,179 @@
+#include "scenario/parameters.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+
+#include "scenario/input_error.hpp"
+
+namespace signalsim {
+namespace {
+
+const ParameterSpec* find_spec(const std::string& name) {
+  for (const ParameterSpec& spec : parameter_schema())
+    if (spec.name == name) return &spec;
+  return nullptr;
+}
+
+int line_of(const YAML::Node& node) { return node.Mark().line >= 0 ? node.Mark().line + 1 : 0; }
+
+std::string describe(const ParameterValue& v) {
+  return std::visit(
+      [](const auto& x) -> std::string {
+        using T = std::decay_t<decltype(x)>;
+        if constexpr (std::is_same_v<T, bool>) return x ? "true" : "false";
+        else if constexpr (std::is_same_v<T, std::string>) return "\"" + x + "\"";
+        else {
+          std::ostringstream out;
+          out << x;
+          return out.str();
+        }
+      },
+      v);
+}
+
+// Converts a scalar to the spec's type, or explains why not.
+ParameterValue convert(const ParameterSpec& spec, const YAML::Node& node, const std::string& origin) {
+  const int line = line_of(node);
+  const std::string key = "parameter '" + spec.name + "'";
+  if (!node.IsScalar())
+    throw InputError(origin, line, key + ": expected a single value, got a list or map");
+  const std::string raw = node.Scalar();
+  auto fail_type = [&](const char* expected) {
+    throw InputError(origin, line, key + ": expected " + expected + ", got '" + raw + "'");
+  };
+  auto check_range = [&](double x) {
+    if (!std::isfinite(x) || x < spec.min || x > spec.max) {
+      std::ostringstream out;
+      out << key << ": value " << raw << " is out of range [" << spec.min << ", " << spec.max << "]";
+      throw InputError(origin, line, out.str());
+    }
+  };
+  if (std::holds_alternative<bool>(spec.default_value)) {
+    bool value = false;
+    if (!YAML::convert<bool>::decode(node, value)) fail_type("true or false");
+    return value;
+  }
+  if (std::holds_alternative<int>(spec.default_value)) {
+    int value = 0;
+    if (!YAML::convert<int>::decode(node, value)) fail_type("an integer");
+    check_range(value);
+    return value;
+  }
+  if (std::holds_alternative<double>(spec.default_value)) {
+    double value = 0.0;
+    if (node.Tag() == "!" || !YAML::convert<double>::decode(node, value)) fail_type("a number");
+    check_range(value);
+    return value;
+  }
+  if (!spec.choices.empty() &&
+      std::find(spec.choices.begin(), spec.choices.end(), raw) == spec.choices.end()) {
+    std::string allowed;
+    for (const auto& c : spec.choices) allowed += (allowed.empty() ? "" : ", ") + c;
+    throw InputError(origin, line, key + ": '" + raw + "' is not one of " + allowed);
+  }
+  return raw;
+}
+
+}  // namespace
+
+ParameterSet::ParameterSet() {
+  for (const ParameterSpec& spec : parameter_schema()) {
+    values_[spec.name] = spec.default_value;
+    origins_[spec.name] = "default";
+  }
+}
+
+void ParameterSet::apply(const YAML::Node& mapping, const std::string& origin) {
+  if (!mapping || mapping.IsNull()) return;
+  if (!mapping.IsMap()) throw InputError(origin, line_of(mapping), "parameters must be a mapping of name: value");
+  // An Autoware parameter file wraps its values in `/**: ros__parameters:` (or `<node>:`).
+  if (mapping.size() == 1) {
+    const auto only = *mapping.begin();
+    if (only.second.IsMap() && only.second["ros__parameters"]) {
+      apply_node(only.second["ros__parameters"], "", origin);
+      check_consistency(origin);
+      return;
+    }
+  }
+  apply_node(mapping, "", origin);
+  check_consistency(origin);
+}
+
+void ParameterSet::check_consistency(const std::string& origin) const {
+  // Cross-parameter rule (spec TLJ §1.6): the restart-suppression window must not be inverted.
+  if (number("restart_suppression.min_behind_distance_to_stop") >
+      number("restart_suppression.max_behind_distance_to_stop"))
+    throw InputError(origin, 0,
+                     "restart_suppression.min_behind_distance_to_stop is greater than "
+                     "restart_suppression.max_behind_distance_to_stop");
+}
+
+void ParameterSet::apply_node(const YAML::Node& node, const std::string& prefix, const std::string& origin) {
+  for (const auto& entry : node) {
+    const std::string name = prefix + entry.first.as<std::string>();
+    const ParameterSpec* spec = find_spec(name);
+    if (!spec && entry.second.IsMap()) {
+      apply_node(entry.second, name + ".", origin);
+      continue;
+    }
+    if (!spec) throw InputError(origin, line_of(entry.first), "unknown parameter '" + name + "'");
+    ParameterValue value = convert(*spec, entry.second, origin);
+    if (spec->name == "enable_rtc" && std::get<bool>(value))
+      throw InputError(origin, line_of(entry.second),
+                       "parameter 'enable_rtc': true is not supported (no operator approves in simulation)");
+    values_[name] = std::move(value);
+    origins_[name] = origin;
+  }
+}
+
+void ParameterSet::apply_file(const std::string& path) {
+  if (!std::filesystem::is_regular_file(path)) throw InputError(path, 0, "parameter file not found");
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(path);
+  } catch (const YAML::Exception& e) {
+    throw InputError(path, e.mark.line + 1, "malformed YAML: " + e.msg);
+  }
+  apply(root, path);
+}
+
+double ParameterSet::number(const std::string& name) const {
+  const ParameterValue& v = values_.at(name);
+  if (const int* i = std::get_if<int>(&v)) return *i;
+  return std::get<double>(v);
+}
+int ParameterSet::integer(const std::string& name) const { return std::get<int>(values_.at(name)); }
+bool ParameterSet::boolean(const std::string& name) const { return std::get<bool>(values_.at(name)); }
+const std::string& ParameterSet::text(const std::string& name) const {
+  return std::get<std::string>(values_.at(name));
+}
+
+TurnSignalParameters turn_signal_parameters(const ParameterSet& set, double base_link_to_front) {
+  TurnSignalParameters p;
+  p.base_link_to_front = base_link_to_front;
+  p.turn_signal_intersection_search_distance = set.number("turn_signal_intersection_search_distance");
+  p.turn_signal_intersection_angle_threshold_deg = set.number("turn_signal_intersection_angle_threshold_deg");
+  p.turn_signal_search_time = set.number("turn_signal_search_time");
+  p.turn_signal_minimum_search_distance = set.number("turn_signal_minimum_search_distance");
+  p.turn_signal_path_backward_length = set.number("turn_signal_path_backward_length");
+  p.forward_path_length = set.number("forward_path_length");
+  p.turn_signal_roundabout_on_entry = set.text("turn_signal_roundabout_on_entry");
+  p.turn_signal_roundabout_on_exit = set.text("turn_signal_roundabout_on_exit");
+  p.turn_signal_roundabout_entry_indicator_persistence =
+      set.boolean("turn_signal_roundabout_entry_indicator_persistence");
+  p.turn_signal_roundabout_search_distance = set.number("turn_signal_roundabout_search_distance");
+  p.turn_signal_roundabout_angle_threshold_deg = set.number("turn_signal_roundabout_angle_threshold_deg");
+  p.turn_signal_roundabout_backward_depth = set.integer("turn_signal_roundabout_backward_depth");
+  p.turn_signal_shift_length_threshold = set.number("turn_signal_shift_length_threshold");
+  p.turn_signal_remaining_shift_length_threshold = set.number("turn_signal_remaining_shift_length_threshold");
+  p.turn_signal_remaining_distance_to_bound_threshold =
+      set.number("turn_signal_remaining_distance_to_bound_threshold");
+  p.turn_signal_on_swerving = set.boolean("turn_signal_on_swerving");
+  return p;
+}
+
+std::string describe_parameter(const ParameterValue& v) { return describe(v); }
+
+}  // namespace signalsim

@@ -1,0 +1,162 @@
+#include "scenario/scenario.hpp"
+
+#include <filesystem>
+#include <sstream>
+
+#include "scenario/input_error.hpp"
+#include "scenario/yaml_fields.hpp"
+
+namespace signalsim {
+namespace fs = std::filesystem;
+namespace {
+
+std::string resolve_relative(const std::string& scenario_path, const std::string& path) {
+  const fs::path p(path);
+  if (p.is_absolute()) return p.lexically_normal().string();
+  return (fs::path(scenario_path).parent_path() / p).lexically_normal().string();
+}
+
+Blinker parse_blinker(const YamlFields& fields, const std::string& key) {
+  const std::string v = fields.text(key);
+  if (v == "left") return Blinker::Left;
+  if (v == "right") return Blinker::Right;
+  if (v == "hazard") return Blinker::Hazard;
+  if (v == "none") return Blinker::None;
+  fields.fail(key, "'" + v + "' is not one of left, right, hazard, none");
+}
+
+Expectation parse_expectation(const YAML::Node& item, const std::string& file, std::size_t index) {
+  const std::string where = "expect[" + std::to_string(index) + "]";
+  if (!item.IsMap() || item.size() != 1)
+    throw InputError(file, yaml_line(item), where + ": each expectation is a one-key mapping, e.g. "
+                                                    "'- blinker_never: right'");
+  const std::string kind = item.begin()->first.Scalar();
+  const YAML::Node body = item.begin()->second;
+  if (kind == "blinker_never") {
+    YAML::Node wrapped;
+    wrapped["blinker"] = body;
+    YamlFields fields(wrapped, file, where + "." + kind);
+    if (!body.IsScalar()) throw InputError(file, yaml_line(body), where + ".blinker_never: expected left, right or hazard");
+    return ExpectBlinkerNever{parse_blinker(fields, "blinker")};
+  }
+  YamlFields fields(body, file, where + "." + kind);
+  if (kind == "blinker_through_junction" || kind == "blinker_through_lanelet") {
+    ExpectBlinkerThrough e;
+    if (kind == "blinker_through_junction") e.junction = fields.text("junction");
+    else e.lanelet = fields.text("lanelet");
+    e.blinker = parse_blinker(fields, "blinker");
+    e.lead = fields.required_number("lead", 0.0, 10000.0);
+    fields.finish();
+    return e;
+  }
+  if (kind == "blinker_on") {
+    ExpectBlinkerOn e;
+    e.blinker = parse_blinker(fields, "blinker");
+    e.from_s = fields.required_number("from_s", -1e6, 1e9);
+    e.to_s = fields.required_number("to_s", e.from_s, 1e9);
+    fields.finish();
+    return e;
+  }
+  if (kind == "no_blinker") {
+    ExpectNoBlinker e;
+    e.from_s = fields.required_number("from_s", -1e6, 1e9);
+    e.to_s = fields.required_number("to_s", e.from_s, 1e9);
+    fields.finish();
+    return e;
+  }
+  throw InputError(file, yaml_line(item.begin()->first),
+                   where + ": unknown expectation '" + kind +
+                       "' (known: blinker_through_junction, blinker_through_lanelet, blinker_on, no_blinker, blinker_never)");
+}
+
+}  // namespace
+
+std::string_view to_string(Blinker b) {
+  switch (b) {
+    case Blinker::Left: return "left";
+    case Blinker::Right: return "right";
+    case Blinker::Hazard: return "hazard";
+    case Blinker::None: break;
+  }
+  return "none";
+}
+
+std::string describe(const Expectation& expectation) {
+  std::ostringstream out;
+  std::visit(
+      [&](const auto& e) {
+        using T = std::decay_t<decltype(e)>;
+        if constexpr (std::is_same_v<T, ExpectBlinkerThrough>) {
+          out << (e.junction.empty() ? "blinker_through_lanelet " + e.lanelet
+                                     : "blinker_through_junction " + e.junction)
+              << " " << to_string(e.blinker) << " lead " << e.lead;
+        } else if constexpr (std::is_same_v<T, ExpectBlinkerOn>) {
+          out << "blinker_on " << to_string(e.blinker) << " from_s " << e.from_s << " to_s " << e.to_s;
+        } else if constexpr (std::is_same_v<T, ExpectNoBlinker>) {
+          out << "no_blinker from_s " << e.from_s << " to_s " << e.to_s;
+        } else {
+          out << "blinker_never " << to_string(e.blinker);
+        }
+      },
+      expectation);
+  return out.str();
+}
+
+Scenario load_scenario(const std::string& path) {
+  if (!fs::is_regular_file(path)) throw InputError(path, 0, "scenario file not found");
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(path);
+  } catch (const YAML::Exception& e) {
+    throw InputError(path, e.mark.line + 1, "malformed YAML: " + e.msg);
+  }
+  Scenario s;
+  s.path = path;
+  YamlFields top(root, path, "");
+  s.name = top.text("name");
+  s.description = top.text_or("description", "");
+  s.net = resolve_relative(path, top.text("net"));
+  if (!fs::is_regular_file(s.net)) top.fail("net", "net file '" + s.net + "' not found");
+  for (const std::string& a : top.text_list("additional")) {
+    s.additional.push_back(resolve_relative(path, a));
+    if (!fs::is_regular_file(s.additional.back()))
+      top.fail("additional", "file '" + s.additional.back() + "' not found");
+  }
+  s.step_length = top.number("step_length", 0.1, 0.001, 1.0);
+  s.duration = top.number("duration", 60.0, 0.001, 86400.0);
+  s.seed = top.integer("seed", 1, 0, 2147483647);
+
+  if (!top.has("ego")) throw InputError(path, 0, "missing required key 'ego'");
+  YamlFields ego(top.node("ego"), path, "ego");
+  s.ego.route = ego.text_list("route");
+  if (s.ego.route.empty()) ego.fail("route", "the route needs at least one edge");
+  s.ego.depart_pos = ego.number("depart_pos", 0.0, 0.0, 1e6);
+  s.ego.depart_speed = ego.number("depart_speed", 0.0, 0.0, 100.0);
+  s.ego.max_speed = ego.number("max_speed", 13.89, 0.1, 100.0);
+  s.ego.length = ego.number("length", 4.5, 0.5, 30.0);
+  s.ego.base_link_to_front = ego.number("base_link_to_front", 3.7, 0.0, 30.0);
+  if (s.ego.base_link_to_front > s.ego.length)
+    ego.fail("base_link_to_front", "is longer than the vehicle (ego.length)");
+  s.ego.accel = ego.number("accel", 1.0, 0.1, 10.0);
+  s.ego.decel = ego.number("decel", 1.0, 0.1, 10.0);
+  if (s.ego.depart_speed > s.ego.max_speed) ego.fail("depart_speed", "exceeds ego.max_speed");
+  ego.finish();
+
+  if (top.has("params")) {
+    YamlFields params(top.node("params"), path, "params");
+    for (const std::string& file : params.text_list("files")) s.params.apply_file(resolve_relative(path, file));
+    const YAML::Node set = params.node("set");
+    if (set && !set.IsNull()) s.params.apply(set, path);
+    params.finish();
+  }
+
+  const YAML::Node expect = top.node("expect");
+  if (expect && !expect.IsNull()) {
+    if (!expect.IsSequence()) top.fail("expect", "expected a list of expectations");
+    for (std::size_t i = 0; i < expect.size(); ++i) s.expect.push_back(parse_expectation(expect[i], path, i));
+  }
+  top.finish();
+  return s;
+}
+
+}  // namespace signalsim

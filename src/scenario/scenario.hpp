@@ -1,0 +1,73 @@
+// A scenario file: the net, the ego and its route, parameters and expectations (YAML).
+#pragma once
+
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "scenario/parameters.hpp"
+
+namespace signalsim {
+
+/// The blinker the timeline records (`blinker` column).
+enum class Blinker { None, Left, Right, Hazard };
+std::string_view to_string(Blinker b);
+
+struct EgoSpec {
+  std::vector<std::string> route;   ///< edge ids; each must connect to the next
+  double depart_pos = 0.0;          ///< [m] on the first edge
+  double depart_speed = 0.0;        ///< [m/s]
+  double max_speed = 13.89;         ///< [m/s]
+  double length = 4.5;              ///< [m]
+  double base_link_to_front = 3.7;  ///< rear-axle centre to front bumper [m]
+  double accel = 1.0;               ///< comfortable acceleration [m/s^2] (Autoware normal set)
+  double decel = 1.0;               ///< comfortable deceleration [m/s^2] (Autoware normal set)
+};
+
+/// A blinker direction is on continuously from at least `lead` metres (front bumper) before the
+/// route enters `junction` (or the lanelet `lanelet`) until base_link leaves it.
+struct ExpectBlinkerThrough {
+  std::string junction;
+  std::string lanelet;
+  Blinker blinker = Blinker::Left;
+  double lead = 0.0;
+};
+/// No blinker while the front bumper is within [from_s, to_s].
+struct ExpectNoBlinker {
+  double from_s = 0.0;
+  double to_s = 0.0;
+};
+/// A blinker value never occurs.
+struct ExpectBlinkerNever {
+  Blinker blinker = Blinker::Left;
+};
+/// The blinker is `blinker` at every step with the front bumper within [from_s, to_s].
+struct ExpectBlinkerOn {
+  Blinker blinker = Blinker::Left;
+  double from_s = 0.0;
+  double to_s = 0.0;
+};
+using Expectation = std::variant<ExpectBlinkerThrough, ExpectNoBlinker, ExpectBlinkerNever, ExpectBlinkerOn>;
+
+/// One line describing an expectation, e.g. "blinker_through_junction C left lead 30".
+std::string describe(const Expectation& e);
+
+struct Scenario {
+  std::string path;                     ///< the scenario file
+  std::string name;
+  std::string description;
+  std::string net;                      ///< absolute or relative to the cwd (resolved from the file)
+  std::vector<std::string> additional;  ///< resolved like `net`
+  double step_length = 0.1;             ///< [s]
+  double duration = 60.0;               ///< simulated seconds at most
+  int seed = 1;
+  EgoSpec ego;
+  ParameterSet params;                  ///< defaults, then params.files, then params.set
+  std::vector<Expectation> expect;
+};
+
+/// Reads and checks a scenario file. Throws InputError naming the file, line and key for a missing
+/// file, malformed YAML, an unknown or missing key, a wrong type or an out-of-range value.
+Scenario load_scenario(const std::string& path);
+
+}  // namespace signalsim

@@ -1,0 +1,22 @@
+// The step loop (DESIGN.md): observe -> window -> decide -> plan -> apply -> record, every step.
+//
+//   start SUMO, insert the ego on the planned first lane, wait for its departure
+//   loop until the ego arrives or `duration` simulated seconds have passed:
+//     observe  ego lane/position/speed from SUMO; s_front from the RouteMap; s_base = s_front - b2f
+//     decide   blinker = TurnSignalDecider::decide(route, ego)                  (spec TSD §3)
+//     plan     speed under the lane limits ahead                                (planning/)
+//     apply    blinker bits + speed to SUMO (re-sent every step, spec SUMO §4)
+//     step     SUMO advances one step
+//     record   the row: observation, decision, and the mask SUMO showed while executing it
+#pragma once
+
+#include "scenario/scenario.hpp"
+#include "scenario/timeline.hpp"
+#include "sumo/route_builder.hpp"
+
+namespace signalsim {
+
+/// Runs one scenario on its planned route. Throws sumo::SumoError when SUMO fails.
+RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan);
+
+}  // namespace signalsim

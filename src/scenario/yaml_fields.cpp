@@ -1,0 +1,108 @@
+#include "scenario/yaml_fields.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "scenario/input_error.hpp"
+
+namespace signalsim {
+
+int yaml_line(const YAML::Node& node) { return node && node.Mark().line >= 0 ? node.Mark().line + 1 : 0; }
+
+YamlFields::YamlFields(const YAML::Node& mapping, std::string file, std::string where)
+    : mapping_(mapping), file_(std::move(file)), where_(std::move(where)) {
+  if (!mapping_.IsMap())
+    throw InputError(file_, yaml_line(mapping_),
+                     (where_.empty() ? std::string("the file") : "'" + where_ + "'") + " must be a mapping of key: value");
+}
+
+std::string YamlFields::qualified(const std::string& key) const { return where_.empty() ? key : where_ + "." + key; }
+
+int YamlFields::line_of(const std::string& key) const {
+  for (const auto& entry : mapping_)
+    if (entry.first.Scalar() == key) return yaml_line(entry.first);
+  return yaml_line(mapping_);
+}
+
+void YamlFields::fail(const std::string& key, const std::string& reason) const {
+  throw InputError(file_, line_of(key), "key '" + qualified(key) + "': " + reason);
+}
+
+bool YamlFields::has(const std::string& key) const { return static_cast<bool>(mapping_[key]); }
+
+YAML::Node YamlFields::node(const std::string& key) const {
+  read_.insert(key);
+  return mapping_[key];
+}
+
+std::string YamlFields::text(const std::string& key) const {
+  const YAML::Node n = node(key);
+  if (!n) throw InputError(file_, yaml_line(mapping_), "missing required key '" + qualified(key) + "'");
+  if (!n.IsScalar()) fail(key, "expected a text value");
+  return n.Scalar();
+}
+
+std::string YamlFields::text_or(const std::string& key, const std::string& fallback) const {
+  return has(key) ? text(key) : (read_.insert(key), fallback);
+}
+
+double YamlFields::number(const std::string& key, double fallback, double min, double max) const {
+  if (!has(key)) {
+    read_.insert(key);
+    return fallback;
+  }
+  return required_number(key, min, max);
+}
+
+double YamlFields::required_number(const std::string& key, double min, double max) const {
+  const YAML::Node n = node(key);
+  if (!n) throw InputError(file_, yaml_line(mapping_), "missing required key '" + qualified(key) + "'");
+  double value = 0.0;
+  if (!n.IsScalar() || !YAML::convert<double>::decode(n, value) || !std::isfinite(value))
+    fail(key, "expected a number, got '" + (n.IsScalar() ? n.Scalar() : std::string("a list or map")) + "'");
+  if (value < min || value > max) {
+    std::ostringstream out;
+    out << "value " << n.Scalar() << " is out of range [" << min << ", " << max << "]";
+    fail(key, out.str());
+  }
+  return value;
+}
+
+int YamlFields::integer(const std::string& key, int fallback, int min, int max) const {
+  if (!has(key)) {
+    read_.insert(key);
+    return fallback;
+  }
+  const YAML::Node n = node(key);
+  int value = 0;
+  if (!n.IsScalar() || !YAML::convert<int>::decode(n, value))
+    fail(key, "expected an integer, got '" + (n.IsScalar() ? n.Scalar() : std::string("a list or map")) + "'");
+  if (value < min || value > max) {
+    std::ostringstream out;
+    out << "value " << value << " is out of range [" << min << ", " << max << "]";
+    fail(key, out.str());
+  }
+  return value;
+}
+
+std::vector<std::string> YamlFields::text_list(const std::string& key) const {
+  const YAML::Node n = node(key);
+  std::vector<std::string> out;
+  if (!n || n.IsNull()) return out;
+  if (!n.IsSequence()) fail(key, "expected a list");
+  for (const auto& item : n) {
+    if (!item.IsScalar()) fail(key, "expected a list of text values");
+    out.push_back(item.Scalar());
+  }
+  return out;
+}
+
+void YamlFields::finish() const {
+  for (const auto& entry : mapping_) {
+    const std::string key = entry.first.Scalar();
+    if (!read_.count(key))
+      throw InputError(file_, yaml_line(entry.first), "unknown key '" + qualified(key) + "'");
+  }
+}
+
+}  // namespace signalsim

@@ -1,0 +1,83 @@
+#include "sumo/lane_plan.hpp"
+
+#include <algorithm>
+#include <cstdlib>
+#include <limits>
+
+namespace signalsim::sumo {
+namespace {
+
+constexpr int kImpossible = std::numeric_limits<int>::max() / 4;
+
+/// The connection to lane `to` that a vehicle on lane `from` takes: from `from` itself, else the
+/// one whose from-lane is closest (ties: the rightmost). Null when no connection reaches `to`.
+const NetConnection* link_to(const std::vector<const NetConnection*>& links, int from, int to) {
+  const NetConnection* best = nullptr;
+  for (const NetConnection* c : links) {
+    if (c->to_lane != to) continue;
+    if (c->from_lane == from) return c;
+    if (best == nullptr) {
+      best = c;
+      continue;
+    }
+    const int d = std::abs(c->from_lane - from);
+    const int best_d = std::abs(best->from_lane - from);
+    if (d < best_d || (d == best_d && c->from_lane < best->from_lane)) best = c;
+  }
+  return best;
+}
+
+}  // namespace
+
+LanePlan plan_lanes(const std::vector<int>& lane_counts,
+                    const std::vector<std::vector<const NetConnection*>>& links) {
+  const std::size_t n = lane_counts.size();
+  LanePlan plan;
+  if (n == 0 || links.size() + 1 != n) return plan;
+
+  // cost[i][l]: fewest lane changes from entering edge i on lane l to the end of the route.
+  std::vector<std::vector<int>> cost(n);
+  std::vector<std::vector<int>> next(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    cost[i].assign(static_cast<std::size_t>(std::max(lane_counts[i], 0)), kImpossible);
+    next[i].assign(cost[i].size(), -1);
+  }
+  std::fill(cost[n - 1].begin(), cost[n - 1].end(), 0);
+
+  for (std::size_t i = n - 1; i-- > 0;) {
+    for (int l = 0; l < static_cast<int>(cost[i].size()); ++l) {
+      for (int m = 0; m < static_cast<int>(cost[i + 1].size()); ++m) {
+        const int after = cost[i + 1][static_cast<std::size_t>(m)];
+        if (after >= kImpossible) continue;
+        const NetConnection* c = link_to(links[i], l, m);
+        if (c == nullptr || c->from_lane < 0 || c->from_lane >= static_cast<int>(cost[i].size())) continue;
+        const int total = std::abs(c->from_lane - l) + after;
+        if (total < cost[i][static_cast<std::size_t>(l)]) {  // strict: ties keep the lowest m
+          cost[i][static_cast<std::size_t>(l)] = total;
+          next[i][static_cast<std::size_t>(l)] = m;
+        }
+      }
+    }
+  }
+
+  int lane = -1;
+  for (int l = 0; l < static_cast<int>(cost[0].size()); ++l) {
+    if (cost[0][static_cast<std::size_t>(l)] < kImpossible &&
+        (lane < 0 || cost[0][static_cast<std::size_t>(l)] < cost[0][static_cast<std::size_t>(lane)])) {
+      lane = l;
+    }
+  }
+  if (lane < 0) return plan;
+
+  plan.lane_changes = cost[0][static_cast<std::size_t>(lane)];
+  plan.lanes.push_back(lane);
+  for (std::size_t i = 0; i + 1 < n; ++i) {
+    const int m = next[i][static_cast<std::size_t>(lane)];
+    plan.links.push_back(link_to(links[i], lane, m));
+    plan.lanes.push_back(m);
+    lane = m;
+  }
+  return plan;
+}
+
+}  // namespace signalsim::sumo

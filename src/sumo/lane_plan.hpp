@@ -1,0 +1,27 @@
+// The lane plan of a route: one lane per route edge, chosen by a backward dynamic programme.
+// Private to route_builder.cpp; pure (no net access), so it is easy to reason about.
+#pragma once
+
+#include <vector>
+
+#include "sumo/net_index.hpp"
+
+namespace signalsim::sumo {
+
+struct LanePlan {
+  std::vector<int> lanes;                      ///< planned lane index per edge
+  std::vector<const NetConnection*> links;     ///< per gap i (edge i -> i+1): the connection taken
+  int lane_changes = 0;                        ///< total lane changes the plan needs
+};
+
+/// `lane_counts[i]`: lanes of route edge i. `links[i]`: the connections from edge i to edge i+1
+/// (non-empty, size lane_counts.size() - 1).
+///
+/// Cost of lane l on edge i followed by lane m on edge i+1: 0 when a connection l -> m exists, else
+/// the fewest lane changes on edge i to a lane with a connection to m (|l - from|), else impossible.
+/// cost_i(l) = min_m cost(l, m) + cost_{i+1}(m); the last edge costs 0. Ties: the lowest (rightmost)
+/// lane. The connection taken in gap i is l -> m if it exists, else the one to m whose from-lane is
+/// closest to l (ties: the rightmost). `lanes` is empty when no lane sequence exists.
+LanePlan plan_lanes(const std::vector<int>& lane_counts, const std::vector<std::vector<const NetConnection*>>& links);
+
+}  // namespace signalsim::sumo

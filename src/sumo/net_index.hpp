@@ -1,0 +1,125 @@
+// NetIndex: everything signalsim needs from a SUMO .net.xml (plain or gzip), read once with pugixml.
+//
+// libsumo 1.15 has no API for roundabouts, junction types or <stopOffset> (spec SUMO §2), so the net
+// file is read directly. All lookups are hash-map based: O(1) in the size of the net.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "core/polyline.hpp"
+
+namespace signalsim::sumo {
+
+/// Thrown for an unreadable, malformed or inconsistent net. what() = "<file>: <reason>".
+class NetError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct NetLane {
+  std::string id;                              ///< "<edge>_<index>"
+  int index = 0;                               ///< 0 = rightmost
+  double speed = 13.89;                        ///< [m/s]
+  double length = 0.0;                         ///< [m], the unit of SUMO lane positions
+  double width = 3.2;                          ///< [m]
+  Polyline shape;
+  std::map<std::string, std::string> params;   ///< <param key value>
+  double stop_offset = 0.0;                    ///< lane <stopOffset value> (else the edge's) [m]
+};
+
+struct NetEdge {
+  std::string id;
+  std::string from_junction;                   ///< empty for internal edges
+  std::string to_junction;
+  bool is_internal = false;                    ///< function="internal"
+  std::vector<NetLane> lanes;                  ///< by index
+  std::map<std::string, std::string> params;
+  double stop_offset = 0.0;                    ///< edge-level <stopOffset value> [m]
+};
+
+struct NetConnection {
+  std::string from_edge;
+  std::string to_edge;
+  int from_lane = 0;
+  int to_lane = 0;
+  std::string via;        ///< internal lane id, empty when the net has no internal links
+  char dir = 's';         ///< s t l r L R (and 'i' for invalid)
+  char state = 'M';       ///< static link state
+  std::string tl;         ///< traffic-light id, empty when unsignalised
+  int link_index = -1;    ///< index into the light's state string
+};
+
+struct NetRoundabout {
+  std::vector<std::string> nodes;
+  std::vector<std::string> edges;
+};
+
+struct NetPhase {
+  double duration = 0.0;
+  std::string state;
+};
+
+struct NetTlLogic {
+  std::string id;
+  std::string program_id;
+  std::string type;
+  double offset = 0.0;
+  std::vector<NetPhase> phases;
+};
+
+struct NetJunction {
+  std::string id;
+  std::string type;       ///< priority, traffic_light, internal, dead_end, ...
+  double x = 0.0;
+  double y = 0.0;
+};
+
+class NetIndex {
+ public:
+  /// Reads `path` (gzip detected by its magic bytes, not its name). Throws NetError.
+  static NetIndex load(const std::string& path);
+
+  const std::string& path() const { return path_; }
+  bool lefthand() const { return lefthand_; }
+
+  const NetEdge* edge(const std::string& id) const;
+  const NetLane* lane(const std::string& id) const;
+  /// Edge id of a lane id (the lane must exist).
+  const NetEdge* edge_of_lane(const std::string& lane_id) const;
+  const NetJunction* junction(const std::string& id) const;
+
+  /// Connections leaving a (normal or internal) lane, in file order.
+  const std::vector<NetConnection>& connections_from_lane(const std::string& lane_id) const;
+  /// The connection whose via is this internal lane, if any.
+  const NetConnection* connection_via(const std::string& internal_lane_id) const;
+
+  const std::vector<NetRoundabout>& roundabouts() const { return roundabouts_; }
+  /// Index into roundabouts() of the roundabout listing this (normal) edge, if any.
+  std::optional<std::size_t> roundabout_of_edge(const std::string& edge_id) const;
+
+  const std::vector<NetTlLogic>& tl_logics() const { return tl_logics_; }
+  const NetTlLogic* tl_logic(const std::string& id) const;
+
+  std::size_t edge_count() const { return edges_.size(); }
+
+ private:
+  std::string path_;
+  bool lefthand_ = false;
+  std::vector<NetEdge> edges_;
+  std::unordered_map<std::string, std::size_t> edge_by_id_;
+  std::unordered_map<std::string, std::pair<std::size_t, std::size_t>> lane_by_id_;  // edge, lane
+  std::unordered_map<std::string, NetJunction> junctions_;
+  std::unordered_map<std::string, std::vector<NetConnection>> connections_by_from_lane_;
+  std::unordered_map<std::string, NetConnection> connection_by_via_;
+  std::vector<NetRoundabout> roundabouts_;
+  std::unordered_map<std::string, std::size_t> roundabout_by_edge_;
+  std::vector<NetTlLogic> tl_logics_;
+  std::unordered_map<std::string, std::size_t> tl_logic_by_id_;
+};
+
+}  // namespace signalsim::sumo

@@ -1,0 +1,236 @@
+// Route edges -> RouteMap: the planned lane of every edge and, between two edges, the internal lanes of
+// the connection taken (spec SUMO §3: turn lanelets are the internal lanes of the route's connections).
+#include "sumo/route_builder.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <string_view>
+#include <utility>
+
+#include "sumo/lane_plan.hpp"
+#include "sumo/number_parsing.hpp"
+
+namespace signalsim::sumo {
+namespace {
+
+// An internal lane chain longer than this is a malformed net (netconvert makes at most two).
+constexpr int kMaxInternalChain = 16;
+
+std::string quoted(const std::string& id) { return "'" + id + "'"; }
+
+/// Connection `dir` -> Autoware turn_direction (spec SUMO §3).
+TurnDirection turn_direction_of(char dir, bool lefthand) {
+  switch (dir) {
+    case 'l':
+    case 'L': return TurnDirection::Left;
+    case 'r':
+    case 'R': return TurnDirection::Right;
+    case 's': return TurnDirection::Straight;
+    // A U-turn goes round to the driver's side: left in right-hand traffic, right in left-hand traffic.
+    case 't': return lefthand ? TurnDirection::Right : TurnDirection::Left;
+    // SUMO 1.15's netconvert writes U-turns of left-hand nets as 'T' (LinkDirection::TURN_LEFTHAND),
+    // a clockwise turn: right.
+    case 'T': return TurnDirection::Right;
+    default: return TurnDirection::None;  // 'i' (invalid) and anything unknown
+  }
+}
+
+/// Turn directions of the connections leaving `lane_id` that have an internal lane (spec SUMO §3),
+/// in file order, without repeats. For an internal lane, that is the next internal lane of its chain.
+std::vector<TurnDirection> successor_directions(const NetIndex& net, const std::string& lane_id) {
+  std::vector<TurnDirection> out;
+  for (const NetConnection& c : net.connections_from_lane(lane_id)) {
+    if (c.via.empty()) continue;
+    const TurnDirection d = turn_direction_of(c.dir, net.lefthand());
+    if (std::find(out.begin(), out.end(), d) == out.end()) out.push_back(d);
+  }
+  return out;
+}
+
+bool all_digits(std::string_view s) {
+  return !s.empty() && std::all_of(s.begin(), s.end(), [](unsigned char c) { return std::isdigit(c) != 0; });
+}
+
+/// ":<junction>_<edge>_<lane>" -> "<junction>": strips the last two "_<int>" groups (junction ids may
+/// contain '_', spec SUMO §2) and the leading ':'. Empty when the id has another form.
+std::string junction_of_internal_lane(std::string_view id) {
+  for (int group = 0; group < 2; ++group) {
+    const std::size_t cut = id.rfind('_');
+    if (cut == std::string_view::npos || !all_digits(id.substr(cut + 1))) return {};
+    id = id.substr(0, cut);
+  }
+  if (!id.empty() && id.front() == ':') id.remove_prefix(1);
+  return std::string(id);
+}
+
+/// A normal lane's params (its edge's, overlaid by its own) and its turn_signal_distance param.
+struct LaneParams {
+  std::map<std::string, std::string> params;
+  std::optional<double> turn_signal_distance;
+};
+
+LaneParams lane_params(const NetEdge& edge, const NetLane& lane) {
+  LaneParams out;
+  out.params = edge.params;
+  for (const auto& [key, value] : lane.params) out.params[key] = value;
+  if (auto it = out.params.find("turn_signal_distance"); it != out.params.end()) {
+    out.turn_signal_distance = parse_double(it->second);
+    if (!out.turn_signal_distance) {
+      throw RouteError("lane " + quoted(lane.id) + ": param 'turn_signal_distance' is not a number: " +
+                       quoted(it->second));
+    }
+  }
+  return out;
+}
+
+/// The roundabout role of the internal lanes between two route edges (spec SUMO §3): from the
+/// <roundabout> element, never from `dir` (spec SUMO §2).
+std::pair<RoundaboutRole, std::optional<std::size_t>> junction_role(const NetIndex& net, const std::string& from,
+                                                                    const std::string& to) {
+  const auto ring_from = net.roundabout_of_edge(from);
+  const auto ring_to = net.roundabout_of_edge(to);
+  if (ring_from && ring_to && *ring_from == *ring_to) return {RoundaboutRole::Internal, ring_from};
+  if (ring_to) return {RoundaboutRole::Entry, ring_to};
+  if (ring_from) return {RoundaboutRole::Exit, ring_from};
+  return {RoundaboutRole::None, std::nullopt};
+}
+
+Lanelet lanelet_of(const NetEdge& edge, const NetLane& lane) {
+  Lanelet l;
+  l.lane_id = lane.id;
+  l.edge_id = edge.id;
+  l.is_internal = edge.is_internal;
+  l.length = lane.length;
+  l.speed_limit = lane.speed;
+  l.width = lane.width;
+  l.shape = lane.shape;
+  l.stop_offset = lane.stop_offset;  // the lane's <stopOffset>, else its edge's (NetIndex)
+  return l;
+}
+
+}  // namespace
+
+RoutePlan build_route(const NetIndex& net, const std::vector<std::string>& edges) {
+  if (edges.empty()) throw RouteError("the route has no edges");
+
+  // Every route edge exists and is a normal edge.
+  std::vector<const NetEdge*> route;
+  route.reserve(edges.size());
+  for (const std::string& id : edges) {
+    const NetEdge* edge = net.edge(id);
+    if (edge == nullptr) throw RouteError("route edge " + quoted(id) + " is not in the net " + quoted(net.path()));
+    // SUMO reserves ids starting with ':' for junction edges (internal, crossing, walkingarea).
+    if (edge->is_internal || id.front() == ':') {
+      throw RouteError("route edge " + quoted(id) + " is an internal (junction) edge; a route lists normal edges");
+    }
+    if (edge->lanes.empty()) throw RouteError("route edge " + quoted(id) + " has no lanes");
+    route.push_back(edge);
+  }
+
+  // Consecutive edges are connected.
+  std::vector<std::vector<const NetConnection*>> links(route.size() - 1);
+  std::vector<int> lane_counts;
+  for (std::size_t i = 0; i < route.size(); ++i) {
+    lane_counts.push_back(static_cast<int>(route[i]->lanes.size()));
+    if (i + 1 == route.size()) break;
+    for (const NetLane& lane : route[i]->lanes) {
+      for (const NetConnection& c : net.connections_from_lane(lane.id)) {
+        if (c.to_edge == edges[i + 1]) links[i].push_back(&c);
+      }
+    }
+    if (links[i].empty()) {
+      throw RouteError("route edges " + quoted(edges[i]) + " -> " + quoted(edges[i + 1]) + " are not connected");
+    }
+  }
+
+  const LanePlan plan = plan_lanes(lane_counts, links);
+  if (plan.lanes.size() != route.size()) {
+    throw RouteError("route " + quoted(edges.front()) + " ... " + quoted(edges.back()) +
+                     ": no lane sequence connects the route edges");
+  }
+
+  std::vector<Lanelet> lanelets;
+  double s = 0.0;
+  const auto push = [&](Lanelet l) {
+    l.s_start = s;
+    s += l.length;
+    lanelets.push_back(std::move(l));
+  };
+
+  for (std::size_t i = 0; i < route.size(); ++i) {
+    const NetEdge& edge = *route[i];
+    const NetLane& lane = edge.lanes[static_cast<std::size_t>(plan.lanes[i])];
+    const auto edge_ring = net.roundabout_of_edge(edge.id);
+
+    Lanelet normal = lanelet_of(edge, lane);
+    normal.successor_turn_directions = successor_directions(net, lane.id);
+    LaneParams own = lane_params(edge, lane);
+    normal.params = std::move(own.params);
+    normal.turn_signal_distance = own.turn_signal_distance;
+    if (edge_ring) {
+      normal.roundabout_role = RoundaboutRole::Internal;
+      normal.roundabout_id = std::to_string(*edge_ring);
+    }
+    const NetConnection* link = i + 1 < route.size() ? plan.links[i] : nullptr;
+    // The stop line is this lane's end: the light of the connection taken leaves it.
+    if (link != nullptr && !link->tl.empty()) normal.traffic_light = TrafficLightLink{link->tl, link->link_index};
+    push(std::move(normal));
+    if (link == nullptr) break;
+
+    // The internal lanes of the connection taken, then those chained from them.
+    const std::string& next_edge = edges[i + 1];
+    if (link->via.empty()) {
+      throw RouteError("route edges " + quoted(edge.id) + " -> " + quoted(next_edge) +
+                       ": the connection has no internal lane; the net has no internal lanes "
+                       "(built with netconvert --no-internal-links)");
+    }
+    // Internal lanes take the params of the approach lane, the one the connection starts from (spec SUMO §3).
+    const NetLane& approach = edge.lanes[static_cast<std::size_t>(link->from_lane)];
+    const LaneParams approach_params = lane_params(edge, approach);
+    const auto [role, ring] = junction_role(net, edge.id, next_edge);
+
+    std::string via = link->via;
+    for (int chained = 0; !via.empty(); ++chained) {
+      if (chained >= kMaxInternalChain) {
+        throw RouteError("route edges " + quoted(edge.id) + " -> " + quoted(next_edge) +
+                         ": the internal lanes of the connection do not end");
+      }
+      const NetLane* internal = net.lane(via);
+      const NetEdge* internal_edge = net.edge_of_lane(via);
+      if (internal == nullptr || internal_edge == nullptr) {
+        throw RouteError("route edges " + quoted(edge.id) + " -> " + quoted(next_edge) + ": internal lane " +
+                         quoted(via) + " is not in the net");
+      }
+      Lanelet l = lanelet_of(*internal_edge, *internal);
+      l.is_internal = true;
+      l.junction_id = junction_of_internal_lane(via);
+      if (net.junction(l.junction_id) == nullptr) l.junction_id = edge.to_junction;
+      const NetConnection* via_of = net.connection_via(via);
+      l.turn_direction = turn_direction_of(via_of != nullptr ? via_of->dir : link->dir, net.lefthand());
+      l.successor_turn_directions = successor_directions(net, via);
+      l.params = approach_params.params;
+      l.turn_signal_distance = approach_params.turn_signal_distance;
+      l.roundabout_role = role;
+      if (ring) l.roundabout_id = std::to_string(*ring);
+      push(std::move(l));
+
+      // The connection from this internal lane towards the planned lane of the next edge.
+      const NetConnection* onward = nullptr;
+      for (const NetConnection& c : net.connections_from_lane(via)) {
+        if (c.to_edge != next_edge) continue;
+        if (onward == nullptr || (c.to_lane == plan.lanes[i + 1] && onward->to_lane != plan.lanes[i + 1])) {
+          onward = &c;
+        }
+      }
+      via = onward != nullptr ? onward->via : std::string();
+    }
+  }
+
+  RoutePlan out;
+  out.map = RouteMap(std::move(lanelets));
+  out.lane_per_edge = plan.lanes;
+  out.lane_changes = plan.lane_changes;
+  return out;
+}
+
+}  // namespace signalsim::sumo

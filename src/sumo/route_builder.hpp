@@ -1,0 +1,33 @@
+// Builds the ego's RouteMap from a list of edges: the planned lane sequence, internal lanes included.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "map/route_map.hpp"
+#include "sumo/net_index.hpp"
+
+namespace signalsim::sumo {
+
+/// Thrown when the route cannot be built. what() names the edge(s) and the reason, e.g.
+/// "route edge 'in_X' is not in the net" or "route edges 'a' -> 'b' are not connected".
+class RouteError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct RoutePlan {
+  RouteMap map;                    ///< normal and internal lanelets, contiguous in s from 0
+  std::vector<int> lane_per_edge;  ///< planned lane index on each route edge (same order as the edges)
+  int lane_changes = 0;            ///< lane changes the plan needs (0 when one lane sequence connects all)
+};
+
+/// Plans one lane per route edge so that each lane has a connection to the next edge's lane,
+/// minimising lane changes (backward dynamic programme; ties: the rightmost lane). Between two edges
+/// the connection's via lane and any further internal lanes chained from it become lanelets.
+/// Turn directions, roundabout roles, params, lights and stop offsets per spec SUMO §3.
+/// Throws RouteError.
+RoutePlan build_route(const NetIndex& net, const std::vector<std::string>& edges);
+
+}  // namespace signalsim::sumo

@@ -1,0 +1,121 @@
+#include "traffic_light/perception_model.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace signalsim {
+
+namespace {
+
+std::int64_t to_ns(double seconds) { return static_cast<std::int64_t>(std::llround(seconds * 1e9)); }
+
+// splitmix64 (Steele, Lea, Flood 2014): spreads (seed, stream) into well-mixed 64-bit seeds.
+std::uint64_t splitmix64(std::uint64_t x) {
+  x += 0x9E3779B97F4A7C15ULL;
+  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ULL;
+  x = (x ^ (x >> 27)) * 0x94D049BB133111EBULL;
+  return x ^ (x >> 31);
+}
+
+std::uint64_t stream_seed(std::uint64_t seed, std::uint64_t stream) { return splitmix64(splitmix64(seed) ^ stream); }
+
+// Uniform in [0, 1) from the top 53 bits of one raw draw: exact and portable.
+double uniform01(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
+
+constexpr std::array<SignalColor, 4> kConfusableColors = {SignalColor::Unknown, SignalColor::Red, SignalColor::Amber,
+                                                          SignalColor::Green};
+
+SignalColor other_color(SignalColor truth, double u) {
+  std::array<SignalColor, 4> choices{};
+  std::size_t n = 0;
+  for (SignalColor c : kConfusableColors) {
+    if (c != truth) choices[n++] = c;
+  }
+  const auto index = std::min(static_cast<std::size_t>(u * static_cast<double>(n)), n - 1);
+  return choices[index];
+}
+
+}  // namespace
+
+void validate(const PerceptionModelParameters& p) {
+  const auto fail = [](const std::string& what) { throw std::invalid_argument("perception parameter " + what); };
+  if (std::isnan(p.detection_range) || p.detection_range < 0.0) fail("detection_range must be >= 0");
+  if (!(p.dropout_probability >= 0.0 && p.dropout_probability <= 1.0)) fail("dropout_probability must be in [0, 1]");
+  if (!std::isfinite(p.latency) || p.latency < 0.0) fail("latency must be finite and >= 0");
+  if (p.detections_per_light < 1) fail("detections_per_light must be >= 1");
+  if (!std::isfinite(p.confidence_noise) || p.confidence_noise < 0.0) fail("confidence_noise must be finite and >= 0");
+  if (!(p.misclassification_probability >= 0.0 && p.misclassification_probability <= 1.0)) {
+    fail("misclassification_probability must be in [0, 1]");
+  }
+  for (std::size_t i = 0; i < p.blackouts.size(); ++i) {
+    const auto& b = p.blackouts[i];
+    if (!std::isfinite(b.start) || !std::isfinite(b.end) || b.end < b.start) {
+      fail("blackouts[" + std::to_string(i) + "] must be finite with start <= end");
+    }
+  }
+}
+
+PerceptionModel::PerceptionModel(const PerceptionModelParameters& params) : params_(params) {
+  validate(params_);
+  latency_ns_ = to_ns(params_.latency);
+  reset();
+}
+
+void PerceptionModel::reset() {
+  dropout_rng_.seed(stream_seed(params_.seed, 1));
+  misclassification_rng_.seed(stream_seed(params_.seed, 2));
+  confidence_rng_.seed(stream_seed(params_.seed, 3));
+  queue_.clear();
+  last_now_ns_.reset();
+}
+
+std::optional<SignalObservation> PerceptionModel::observe(const std::vector<SignalElement>& truth,
+                                                          double distance_to_light, double now) {
+  if (!std::isfinite(now)) throw std::invalid_argument("PerceptionModel::observe: now is not finite");
+  if (std::isnan(distance_to_light)) throw std::invalid_argument("PerceptionModel::observe: distance is NaN");
+  const std::int64_t now_ns = to_ns(now);
+  if (last_now_ns_ && now_ns < *last_now_ns_) {
+    throw std::invalid_argument("PerceptionModel::observe: time went backwards");
+  }
+  last_now_ns_ = now_ns;
+
+  // Capture.
+  const double u_drop = uniform01(dropout_rng_);
+  const bool blacked_out = std::any_of(params_.blackouts.begin(), params_.blackouts.end(), [&](const auto& b) {
+    return to_ns(b.start) <= now_ns && now_ns <= to_ns(b.end);
+  });
+  const bool in_range = std::abs(distance_to_light) <= params_.detection_range;
+  const bool dropped = u_drop < params_.dropout_probability;
+  if (!blacked_out && in_range && !dropped) {
+    SignalObservation obs;
+    obs.stamp = now;
+    obs.elements.reserve(truth.size() * static_cast<std::size_t>(params_.detections_per_light));
+    for (int k = 0; k < params_.detections_per_light; ++k) {
+      for (const SignalElement& e : truth) {
+        SignalElement det = e;
+        const double u_mis = uniform01(misclassification_rng_);
+        const double u_which = uniform01(misclassification_rng_);
+        if (u_mis < params_.misclassification_probability) det.color = other_color(e.color, u_which);
+        const double u_conf = uniform01(confidence_rng_);
+        if (params_.confidence_noise > 0.0) {
+          det.confidence = std::clamp(e.confidence + params_.confidence_noise * (2.0 * u_conf - 1.0), 0.0, 1.0);
+        }
+        obs.elements.push_back(det);
+      }
+    }
+    queue_.push_back({now_ns + latency_ns_, std::move(obs)});
+  }
+
+  // Delivery: the newest due capture wins.
+  std::optional<SignalObservation> delivered;
+  while (!queue_.empty() && queue_.front().due_ns <= now_ns) {
+    delivered = std::move(queue_.front().observation);
+    queue_.pop_front();
+  }
+  return delivered;
+}
+
+}  // namespace signalsim

@@ -1,0 +1,55 @@
+// Intersection turn-signal requests (spec TSD §4): groups of turn lanelets ahead of the ego.
+#pragma once
+
+#include <cstddef>
+#include <map>
+#include <vector>
+
+#include "map/route_map.hpp"
+#include "turn_signal/turn_signal_info.hpp"
+#include "turn_signal/turn_signal_parameters.hpp"
+
+namespace signalsim {
+
+/// A group of consecutive route lanelets with the same turn direction (spec TSD §4.2).
+struct TurnLaneGroup {
+  std::size_t front_index = 0;  ///< route index of the first lanelet (the stored-start key)
+  std::size_t back_index = 0;   ///< route index of the last lanelet
+  TurnDirection direction = TurnDirection::None;
+};
+
+/// Owns the remembered desired starts (spec TSD §1.5, §4.4). Keys are route lanelet indices, not
+/// lane ids: on a looped route the second pass of a lane is a different key, so a stale start is
+/// never reused (the reference keys by lane id, spec TSD §12.1.5; documented in the README).
+class IntersectionRequests {
+ public:
+  /// One planning cycle. `window` is the path P (route indices around the ego); `behavior_command`
+  /// is the merged behaviour command (it decides which straight lanes count, §4.1).
+  /// Returns the first active request of the queue (§4.3 FIRST_ACTIVE) or EMPTY.
+  TurnSignalInfo update(const RouteMap& route, RouteMap::Window window, const EgoOnRoute& ego,
+                        TurnIndicator behavior_command, const TurnSignalParameters& params);
+
+  /// Geometry of a group, computed once (it depends on the map only).
+  struct GroupGeometry {
+    bool has_centerline = false;  ///< the merged centerline has >= 2 points
+    double required_end_s = 0.0;  ///< route s of the required end (§7)
+  };
+  const GroupGeometry& geometry(const RouteMap& route, const TurnLaneGroup& group,
+                                double angle_threshold_deg);
+
+  const std::map<std::size_t, double>& desired_starts() const { return desired_starts_; }
+
+ private:
+  std::map<std::size_t, double> desired_starts_;    // group front index -> s_base when stored
+  std::map<std::size_t, GroupGeometry> geometry_cache_;  // group front index -> geometry
+};
+
+/// spec TSD §4.2: the group starting at `index`, walking route successors with the same direction
+/// (possibly beyond the window).
+TurnLaneGroup group_from(const RouteMap& route, std::size_t index);
+
+/// spec TSD §4.2 / [LL2U combine_lanelets_shape]: the chain's centerlines joined, skipping any
+/// point within 0.01 m of any point already taken.
+Polyline merged_centerline(const RouteMap& route, const TurnLaneGroup& group);
+
+}  // namespace signalsim

@@ -1,0 +1,34 @@
+#include "turn_signal/turn_signal_decider.hpp"
+
+#include <algorithm>
+
+namespace signalsim {
+
+TurnSignalDecision TurnSignalDecider::decide(const RouteMap& route, const EgoOnRoute& ego,
+                                             const TurnSignalInfo& behavior) {
+  TurnSignalDecision decision;
+  decision.behavior = behavior;
+  // spec TSD §3.1: a hazard request (driving backward) bypasses the decider.
+  if (behavior.hazard == HazardLights::Enable) {
+    decision.turn = TurnIndicator::Disable;
+    decision.hazard = HazardLights::Enable;
+    decision.source = behavior.source;
+    return decision;
+  }
+  // spec TSD §3.2 early return: no path -> the raw, unfiltered behaviour command.
+  if (route.empty()) {
+    decision.turn = behavior.turn;
+    decision.source = behavior.turn == TurnIndicator::NoCommand ? RequestSource::None : behavior.source;
+    return decision;
+  }
+  const double back = std::max(0.0, ego.s_base - params_.turn_signal_path_backward_length);
+  const RouteMap::Window window = route.window(back, ego.s_base + params_.forward_path_length);
+  decision.intersection = intersections_.update(route, window, ego, behavior.turn, params_);
+  const ResolvedTurnSignal resolved =
+      resolve_turn_signal(ego, decision.intersection, decision.roundabout, behavior);
+  decision.turn = resolved.command;
+  decision.source = resolved.source;
+  return decision;
+}
+
+}  // namespace signalsim

@@ -1,0 +1,12 @@
+#!/bin/sh
+# Rebuilds the test nets from their plain-XML sources with SUMO 1.15's netconvert.
+# Usage: tests/data/nets/build.sh   (the built .net.xml files are committed; run after editing a source)
+set -eu
+cd "$(dirname "$0")"
+export SUMO_HOME="${SUMO_HOME:-/usr/share/sumo}"
+nc() { netconvert --no-warnings true --output.street-names false "$@"; }
+nc -n crossing.nod.xml -e crossing.edg.xml -x crossing.con.xml -o crossing.net.xml
+nc -n roundabout.nod.xml -e roundabout.edg.xml -o roundabout.net.xml
+nc -n line.nod.xml -e line.edg.xml -o line.net.xml
+nc -n line.nod.xml -e line.edg.xml --lefthand true -o line_lefthand.net.xml
+nc -n line.nod.xml -e line.edg.xml --no-internal-links true -o line_nointernal.net.xml
