@@ -90,6 +90,11 @@ TEST(UsePriorTurnSignal, EqualDesiredStartsMakeTheOriginalThePrior) {
   const auto b = request(kRight, 10.0, 100.0, 30.0, 45.0);
   EXPECT_PRED2(same, use_prior_turn_signal(ego_at_base(20.0), a, b), b);
   EXPECT_PRED2(same, use_prior_turn_signal(ego_at_base(20.0), b, a), b);  // b prior, front before its start
+  // Identical sections, ego inside them: PRIOR_WINS keeps the prior, which must be the original.
+  const auto left = request(kLeft, 10.0, 100.0, 30.0, 70.0);
+  const auto right = request(kRight, 10.0, 100.0, 30.0, 70.0);
+  EXPECT_PRED2(same, use_prior_turn_signal(ego_at_base(40.0), left, right), left);
+  EXPECT_PRED2(same, use_prior_turn_signal(ego_at_base(40.0), right, left), right);
 }
 
 TEST(UsePriorTurnSignal, IgnoresTheCommands) {
