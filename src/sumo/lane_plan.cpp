@@ -29,9 +29,9 @@ const NetConnection* link_to(const std::vector<const NetConnection*>& links, int
 
 }  // namespace
 
-LanePlan plan_lanes(const std::vector<int>& lane_counts,
+LanePlan plan_lanes(const std::vector<std::vector<bool>>& usable,
                     const std::vector<std::vector<const NetConnection*>>& links) {
-  const std::size_t n = lane_counts.size();
+  const std::size_t n = usable.size();
   LanePlan plan;
   if (n == 0 || links.size() + 1 != n) return plan;
 
@@ -39,18 +39,22 @@ LanePlan plan_lanes(const std::vector<int>& lane_counts,
   std::vector<std::vector<int>> cost(n);
   std::vector<std::vector<int>> next(n);
   for (std::size_t i = 0; i < n; ++i) {
-    cost[i].assign(static_cast<std::size_t>(std::max(lane_counts[i], 0)), kImpossible);
+    cost[i].assign(usable[i].size(), kImpossible);
     next[i].assign(cost[i].size(), -1);
   }
-  std::fill(cost[n - 1].begin(), cost[n - 1].end(), 0);
+  for (std::size_t l = 0; l < cost[n - 1].size(); ++l)
+    if (usable[n - 1][l]) cost[n - 1][l] = 0;
 
   for (std::size_t i = n - 1; i-- > 0;) {
     for (int l = 0; l < static_cast<int>(cost[i].size()); ++l) {
+      if (!usable[i][static_cast<std::size_t>(l)]) continue;
       for (int m = 0; m < static_cast<int>(cost[i + 1].size()); ++m) {
         const int after = cost[i + 1][static_cast<std::size_t>(m)];
         if (after >= kImpossible) continue;
         const NetConnection* c = link_to(links[i], l, m);
-        if (c == nullptr || c->from_lane < 0 || c->from_lane >= static_cast<int>(cost[i].size())) continue;
+        if (c == nullptr || c->from_lane < 0 || c->from_lane >= static_cast<int>(cost[i].size()) ||
+            !usable[i][static_cast<std::size_t>(c->from_lane)])
+          continue;
         const int total = std::abs(c->from_lane - l) + after;
         if (total < cost[i][static_cast<std::size_t>(l)]) {  // strict: ties keep the lowest m
           cost[i][static_cast<std::size_t>(l)] = total;

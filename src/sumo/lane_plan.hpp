@@ -14,14 +14,16 @@ struct LanePlan {
   int lane_changes = 0;                        ///< total lane changes the plan needs
 };
 
-/// `lane_counts[i]`: lanes of route edge i. `links[i]`: the connections from edge i to edge i+1
-/// (non-empty, size lane_counts.size() - 1).
+/// `usable[i][l]`: whether the ego may drive lane l of route edge i (lane permissions: a sidewalk
+/// or bike lane is not usable). `links[i]`: the connections from edge i to edge i+1
+/// (non-empty, size usable.size() - 1). Unusable lanes are never planned.
 ///
 /// Cost of lane l on edge i followed by lane m on edge i+1: 0 when a connection l -> m exists, else
 /// the fewest lane changes on edge i to a lane with a connection to m (|l - from|), else impossible.
 /// cost_i(l) = min_m cost(l, m) + cost_{i+1}(m); the last edge costs 0. Ties: the lowest (rightmost)
 /// lane. The connection taken in gap i is l -> m if it exists, else the one to m whose from-lane is
 /// closest to l (ties: the rightmost). `lanes` is empty when no lane sequence exists.
-LanePlan plan_lanes(const std::vector<int>& lane_counts, const std::vector<std::vector<const NetConnection*>>& links);
+LanePlan plan_lanes(const std::vector<std::vector<bool>>& usable,
+                    const std::vector<std::vector<const NetConnection*>>& links);
 
 }  // namespace signalsim::sumo

@@ -6,6 +6,8 @@
 // <request>, <neigh>, ...) is skipped. <location> is irrelevant: signalsim works in net coordinates.
 #include "sumo/net_index.hpp"
 
+#include <sstream>
+
 #include <pugixml.hpp>
 
 #include <algorithm>
@@ -16,6 +18,25 @@
 #include "sumo/net_xml_reading.hpp"
 
 namespace signalsim::sumo {
+namespace {
+
+bool lists_class(const std::string& classes, const std::string& wanted) {
+  std::istringstream words(classes);
+  for (std::string w; words >> w;)
+    if (w == wanted || w == "all") return true;
+  return false;
+}
+
+}  // namespace
+
+// SUMO lane permissions: `allow` lists the classes that may use the lane, else `disallow` those
+// that may not; neither means everyone.
+bool passenger_allowed(const std::string& allow, const std::string& disallow) {
+  if (!allow.empty()) return lists_class(allow, "passenger");
+  if (!disallow.empty()) return !lists_class(disallow, "passenger");
+  return true;
+}
+
 namespace {
 
 const std::vector<NetConnection> kNoConnections;
@@ -86,6 +107,7 @@ NetIndex NetIndex::load(const std::string& path) {
         lane.length = l.required_number("length");
         lane.width = l.number("width", lane.width);
         lane.shape = l.shape("shape");
+        lane.allows_passenger = passenger_allowed(l.text("allow"), l.text("disallow"));
         const std::string lane_what = describe("lane", lane.id);
         lane.params = read_params(path, lane_node, lane_what);
         lane.stop_offset = read_stop_offset(path, lane_node, lane_what).value_or(edge.stop_offset);

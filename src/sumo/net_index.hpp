@@ -30,6 +30,7 @@ struct NetLane {
   Polyline shape;
   std::map<std::string, std::string> params;   ///< <param key value>
   double stop_offset = 0.0;                    ///< lane <stopOffset value> (else the edge's) [m]
+  bool allows_passenger = true;                ///< from `allow` / `disallow`: the ego may use it
 };
 
 struct NetEdge {
@@ -48,7 +49,7 @@ struct NetConnection {
   int from_lane = 0;
   int to_lane = 0;
   std::string via;        ///< internal lane id, empty when the net has no internal links
-  char dir = 's';         ///< s t l r L R (and 'i' for invalid)
+  char dir = 's';         ///< s t T l r L R (T: U-turn in left-hand nets; 'i' invalid)
   char state = 'M';       ///< static link state
   std::string tl;         ///< traffic-light id, empty when unsignalised
   int link_index = -1;    ///< index into the light's state string
@@ -78,6 +79,9 @@ struct NetJunction {
   double x = 0.0;
   double y = 0.0;
 };
+
+/// Whether a passenger car may use a lane with these `allow` / `disallow` attributes.
+bool passenger_allowed(const std::string& allow, const std::string& disallow);
 
 class NetIndex {
  public:

@@ -129,9 +129,10 @@ RoutePlan build_route(const NetIndex& net, const std::vector<std::string>& edges
 
   // Consecutive edges are connected.
   std::vector<std::vector<const NetConnection*>> links(route.size() - 1);
-  std::vector<int> lane_counts;
+  std::vector<std::vector<bool>> usable;
   for (std::size_t i = 0; i < route.size(); ++i) {
-    lane_counts.push_back(static_cast<int>(route[i]->lanes.size()));
+    usable.emplace_back();
+    for (const NetLane& lane : route[i]->lanes) usable.back().push_back(lane.allows_passenger);
     if (i + 1 == route.size()) break;
     for (const NetLane& lane : route[i]->lanes) {
       for (const NetConnection& c : net.connections_from_lane(lane.id)) {
@@ -143,7 +144,7 @@ RoutePlan build_route(const NetIndex& net, const std::vector<std::string>& edges
     }
   }
 
-  const LanePlan plan = plan_lanes(lane_counts, links);
+  const LanePlan plan = plan_lanes(usable, links);
   if (plan.lanes.size() != route.size()) {
     throw RouteError("route " + quoted(edges.front()) + " ... " + quoted(edges.back()) +
                      ": no lane sequence connects the route edges");

@@ -34,6 +34,8 @@ struct Case {
   std::vector<Stretch> stretches;
 };
 
+void PrintTo(const Case& c, std::ostream* os) { *os << c.scenario; }
+
 std::string path_of(const std::string& scenario) {
   return std::string(SIGNALSIM_SOURCE_DIR) + "/scenarios/" + scenario + ".yaml";
 }
@@ -82,8 +84,9 @@ TEST_P(ScenarioBlinker, TurnsOnAndOffWhereTheSpecSays) {
     ASSERT_EQ(to_string(row.blinker), to_string(expected))
         << c.scenario << ": step " << k << " t=" << row.time << " s_front=" << row.s_front;
     current = expected;
-    if (row.sumo_signals >= 0)
+    if (row.sumo_signals >= 0) {
       ASSERT_EQ(row.sumo_signals & 7, mask_of(row.blinker)) << "SUMO shows another mask at t=" << row.time;
+    }
   }
   EXPECT_EQ(next, c.stretches.size()) << "every stretch must have started";
   EXPECT_EQ(record.collisions, 0);

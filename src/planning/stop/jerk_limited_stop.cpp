@@ -97,6 +97,9 @@ void validate(const StopPlannerParameters& p) {
   validate_set(p.normal, "normal");
   validate_set(p.limit, "limit");
   validate_set(p.emergency, "emergency");
+  if (!(p.brake_start_ratio > 0.0 && p.brake_start_ratio <= 1.0)) {
+    throw std::invalid_argument("stop planner parameter brake_start_ratio must be in (0, 1]");
+  }
 }
 
 double stopping_distance(double v, double a, double target_acc, double jerk) {
@@ -116,6 +119,10 @@ double stopping_distance(double v, double a, double target_acc, double jerk) {
 
 double min_stopping_distance(double v, double a, const StopConstraintSet& c) {
   return stopping_distance(v, a, c.min_acc, std::abs(c.min_jerk));
+}
+
+bool is_stop_feasible(double v, double a, double distance, const StopConstraintSet& c) {
+  return min_stopping_distance(std::max(0.0, v), a, c) <= distance + kDistanceTolerance;
 }
 
 StopCommand plan_stop(const StopPlannerInput& in, const StopPlannerParameters& params) {
@@ -144,17 +151,17 @@ StopCommand plan_stop(const StopPlannerInput& in, const StopPlannerParameters& p
       {{StopLevel::Normal, params.normal}, {StopLevel::Limit, params.limit}, {StopLevel::Emergency, params.emergency}}};
 
   for (const auto& [level, set] : levels) {
+    if (!is_stop_feasible(v, a, D, set)) continue;
     const double s_min = min_stopping_distance(v, a, set);
-    if (s_min > D + kDistanceTolerance) continue;
 
     cmd.level = level;
     cmd.feasible = true;
     cmd.stopping_distance = s_min;
     const double jerk = std::abs(set.min_jerk);
 
-    // Cruise while the normal level can still stop after one more step at this speed.
+    // Cruise while the normal level, less its tracking margin, can still stop after one more step.
     if (level == StopLevel::Normal && a >= kBrakingAcceleration &&
-        min_stopping_distance(v, 0.0, set) <= D - v * in.dt) {
+        stopping_distance(v, 0.0, params.brake_start_ratio * set.min_acc, jerk) <= D - v * in.dt) {
       cmd.braking = false;
       cmd.commanded_velocity = v;
       cmd.commanded_acceleration = 0.0;

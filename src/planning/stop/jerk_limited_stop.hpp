@@ -13,12 +13,14 @@
 //   if v <= 1e-3:            hold 0 (braking iff distance <= 0); level Normal, feasible
 //   level := first of (normal, limit, emergency) with S_min(level) <= distance + 1 cm
 //   if none:                 level Emergency, infeasible: brake at emergency min_acc
-//   if level == normal and a >= -1e-3 (not braking yet) and S_min(normal from (v, 0)) <= distance - v dt:
+//   if level == normal and a >= -1e-3 (not braking yet) and
+//      S(v, 0, brake_start_ratio * normal.min_acc, J) <= distance - v dt:
 //                            cruise: commanded v (braking = false; braking can still start next step)
 //   else:                    a_t := solve S(v, a, a_t, J) = distance on [min_acc, 0)
 //                            commanded := the profile's speed and acceleration after dt
-// So braking starts as late as the normal level allows (like a velocity smoother tracking the speed
-// limit), and at once, as gently as possible, when only a relaxed level can still stop.
+// So braking starts as late as the normal level allows, less a tracking margin (like a velocity
+// smoother tracking the speed limit), and at once, as gently as possible, when only a relaxed level
+// can still stop.
 #pragma once
 
 #include <cstdint>
@@ -44,10 +46,14 @@ struct StopPlannerParameters {
   /// Vehicle emergency deceleration, jerk unbounded. Default: SUMO's passenger emergencyDecel 9.0;
   /// the SUMO adapter should pass the ego vType's emergencyDecel.
   StopConstraintSet emergency{-9.0, -std::numeric_limits<double>::infinity()};
+  /// (0, 1]: a normal stop starts braking once its exact-stop target deceleration reaches
+  /// brake_start_ratio * normal.min_acc. The remaining share is tracking margin, so the normal level
+  /// stays feasible while a point mass with measured (step-averaged) acceleration follows the plan.
+  double brake_start_ratio = 0.9;
 };
 
-/// Throws std::invalid_argument unless every min_acc is finite and < 0 and every min_jerk is < 0
-/// (finite or -infinity).
+/// Throws std::invalid_argument unless every min_acc is finite and < 0, every min_jerk is < 0
+/// (finite or -infinity) and brake_start_ratio is in (0, 1].
 void validate(const StopPlannerParameters& params);
 
 struct StopPlannerInput {
@@ -74,6 +80,10 @@ double stopping_distance(double v, double a, double target_acc, double jerk);
 
 /// Minimum stopping distance within a constraint set: stopping_distance(v, a, c.min_acc, |c.min_jerk|).
 double min_stopping_distance(double v, double a, const StopConstraintSet& c);
+
+/// Whether the set can bring (v, a) to rest within `distance`: min_stopping_distance <= distance
+/// + 1 cm (tolerance against step discretisation). Never throws.
+bool is_stop_feasible(double v, double a, double distance, const StopConstraintSet& c);
 
 /// One step of the planner (algorithm at the top). Throws std::invalid_argument if dt <= 0, an
 /// input is not finite, or validate(params) throws.
