@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <sstream>
 
+#include "scenario/countries.hpp"
 #include "scenario/input_error.hpp"
 #include "scenario/yaml_fields.hpp"
 
@@ -69,6 +70,52 @@ Expectation parse_expectation(const YAML::Node& item, const std::string& file, s
                        "' (known: blinker_through_junction, blinker_through_lanelet, blinker_on, no_blinker, blinker_never)");
 }
 
+// Top-level scenario keys; any other override key is a parameter name.
+bool is_scenario_key(const std::string& key) {
+  static const char* const keys[] = {"name", "description", "net", "additional", "step_length", "duration",
+                                     "seed", "country", "ego", "params", "expect"};
+  for (const char* k : keys)
+    if (key == k) return true;
+  return false;
+}
+
+// Applies "--set key=value" overrides to the YAML tree; parameters are collected separately.
+YAML::Node apply_overrides(YAML::Node root, const ScenarioOverrides& overrides, YAML::Node& parameters) {
+  for (const std::string& item : overrides.set) {
+    const auto eq = item.find('=');
+    if (eq == std::string::npos || eq == 0)
+      throw InputError("--set", 0, "'" + item + "' is not of the form key=value");
+    const std::string key = item.substr(0, eq);
+    YAML::Node value;
+    try {
+      value = YAML::Load(item.substr(eq + 1));
+    } catch (const YAML::Exception& e) {
+      throw InputError("--set", 0, "'" + item + "': malformed value: " + e.msg);
+    }
+    const std::string head = key.substr(0, key.find('.'));
+    if (!is_scenario_key(head)) {
+      parameters[key] = value;
+      continue;
+    }
+    // Walk (creating) the mapping path a.b.c and set its last element.
+    YAML::Node node = root;
+    std::size_t start = 0;
+    while (true) {
+      const std::size_t dot = key.find('.', start);
+      const std::string part = key.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
+      if (dot == std::string::npos) {
+        node[part] = value;
+        break;
+      }
+      if (node[part] && !node[part].IsMap())
+        throw InputError("--set", 0, "'" + key + "': '" + part + "' is not a mapping");
+      node.reset(node[part]);
+      start = dot + 1;
+    }
+  }
+  return root;
+}
+
 }  // namespace
 
 std::string_view to_string(Blinker b) {
@@ -102,7 +149,7 @@ std::string describe(const Expectation& expectation) {
   return out.str();
 }
 
-Scenario load_scenario(const std::string& path) {
+Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrides) {
   if (!fs::is_regular_file(path)) throw InputError(path, 0, "scenario file not found");
   YAML::Node root;
   try {
@@ -110,6 +157,8 @@ Scenario load_scenario(const std::string& path) {
   } catch (const YAML::Exception& e) {
     throw InputError(path, e.mark.line + 1, "malformed YAML: " + e.msg);
   }
+  YAML::Node parameter_overrides;
+  root = apply_overrides(root, overrides, parameter_overrides);
   Scenario s;
   s.path = path;
   YamlFields top(root, path, "");
@@ -125,6 +174,7 @@ Scenario load_scenario(const std::string& path) {
   s.step_length = top.number("step_length", 0.1, 0.001, 1.0);
   s.duration = top.number("duration", 60.0, 0.001, 86400.0);
   s.seed = top.integer("seed", 1, 0, 2147483647);
+  s.country = top.text_or("country", "");
 
   if (!top.has("ego")) throw InputError(path, 0, "missing required key 'ego'");
   YamlFields ego(top.node("ego"), path, "ego");
@@ -142,13 +192,20 @@ Scenario load_scenario(const std::string& path) {
   if (s.ego.depart_speed > s.ego.max_speed) ego.fail("depart_speed", "exceeds ego.max_speed");
   ego.finish();
 
+  // Parameters: defaults, params.files, the country preset, params.set, then --set overrides.
+  YAML::Node set;
   if (top.has("params")) {
     YamlFields params(top.node("params"), path, "params");
     for (const std::string& file : params.text_list("files")) s.params.apply_file(resolve_relative(path, file));
-    const YAML::Node set = params.node("set");
-    if (set && !set.IsNull()) s.params.apply(set, path);
+    set = params.node("set");
     params.finish();
   }
+  if (!s.country.empty()) {
+    const Country country = load_country(s.country);
+    s.params.apply(country.parameters, country.path);
+  }
+  if (set && !set.IsNull()) s.params.apply(set, path);
+  if (parameter_overrides.size() > 0) s.params.apply(parameter_overrides, "--set");
 
   const YAML::Node expect = top.node("expect");
   if (expect && !expect.IsNull()) {

@@ -52,6 +52,13 @@ using Expectation = std::variant<ExpectBlinkerThrough, ExpectNoBlinker, ExpectBl
 /// One line describing an expectation, e.g. "blinker_through_junction C left lead 30".
 std::string describe(const Expectation& e);
 
+/// Changes to a scenario from the command line or a sweep, applied to the YAML before it is read.
+struct ScenarioOverrides {
+  /// "key=value": a scenario key path (`seed=3`, `ego.max_speed=10`, `country=de`) or a parameter
+  /// name (`turn_signal_search_time=2.5`, applied after params.set). Values are YAML scalars.
+  std::vector<std::string> set;
+};
+
 struct Scenario {
   std::string path;                     ///< the scenario file
   std::string name;
@@ -61,13 +68,14 @@ struct Scenario {
   double step_length = 0.1;             ///< [s]
   double duration = 60.0;               ///< simulated seconds at most
   int seed = 1;
+  std::string country;                  ///< preset code ("jp"), empty for none
   EgoSpec ego;
-  ParameterSet params;                  ///< defaults, then params.files, then params.set
+  ParameterSet params;                  ///< defaults, params.files, the country, params.set, overrides
   std::vector<Expectation> expect;
 };
 
 /// Reads and checks a scenario file. Throws InputError naming the file, line and key for a missing
 /// file, malformed YAML, an unknown or missing key, a wrong type or an out-of-range value.
-Scenario load_scenario(const std::string& path);
+Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrides = {});
 
 }  // namespace signalsim

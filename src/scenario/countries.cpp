@@ -1,0 +1,68 @@
+#include "scenario/countries.hpp"
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+
+#include "scenario/input_error.hpp"
+#include "scenario/yaml_fields.hpp"
+
+namespace signalsim {
+namespace fs = std::filesystem;
+namespace {
+
+fs::path countries_dir() { return fs::path(config_dir()) / "countries"; }
+
+std::vector<std::string> known_codes() {
+  std::vector<std::string> codes;
+  if (fs::is_directory(countries_dir()))
+    for (const auto& entry : fs::directory_iterator(countries_dir()))
+      if (entry.path().extension() == ".yaml") codes.push_back(entry.path().stem().string());
+  std::sort(codes.begin(), codes.end());
+  return codes;
+}
+
+Country read_country(const fs::path& path) {
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(path.string());
+  } catch (const YAML::Exception& e) {
+    throw InputError(path.string(), e.mark.line + 1, "malformed YAML: " + e.msg);
+  }
+  YamlFields fields(root, path.string(), "");
+  Country c;
+  c.path = path.string();
+  c.code = fields.text("code");
+  if (c.code != path.stem().string())
+    fields.fail("code", "'" + c.code + "' does not match the file name '" + path.stem().string() + "'");
+  c.name = fields.text("name");
+  c.parameters = fields.node("parameters");
+  if (!c.parameters || !c.parameters.IsMap()) fields.fail("parameters", "expected a mapping of parameter: value");
+  fields.finish();
+  return c;
+}
+
+}  // namespace
+
+std::string config_dir() {
+  if (const char* env = std::getenv("SIGNALSIM_CONFIG_DIR"); env && *env) return env;
+  return SIGNALSIM_DEFAULT_CONFIG_DIR;
+}
+
+Country load_country(const std::string& code) {
+  const fs::path path = countries_dir() / (code + ".yaml");
+  if (!fs::is_regular_file(path)) {
+    std::string known;
+    for (const auto& k : known_codes()) known += (known.empty() ? "" : ", ") + k;
+    throw InputError(path.string(), 0, "unknown country '" + code + "' (known: " + known + ")");
+  }
+  return read_country(path);
+}
+
+std::vector<Country> list_countries() {
+  std::vector<Country> out;
+  for (const auto& code : known_codes()) out.push_back(read_country(countries_dir() / (code + ".yaml")));
+  return out;
+}
+
+}  // namespace signalsim

@@ -1,0 +1,28 @@
+// Country presets: parameter values a country's road traffic law asks for, as data
+// (config/countries/<code>.yaml), never as code branches.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <yaml-cpp/yaml.h>
+
+namespace signalsim {
+
+struct Country {
+  std::string code;        ///< ISO 3166-1 alpha-2, lower case ("jp")
+  std::string name;        ///< "Japan"
+  std::string path;        ///< the file it came from
+  YAML::Node parameters;   ///< Autoware names -> values (applied like a parameter file)
+};
+
+/// config/ folder: $SIGNALSIM_CONFIG_DIR, else the source tree's config/ (compiled in).
+std::string config_dir();
+
+/// Reads config/countries/<code>.yaml. Throws InputError (unknown code: lists the known ones).
+Country load_country(const std::string& code);
+
+/// Every preset, sorted by code.
+std::vector<Country> list_countries();
+
+}  // namespace signalsim
