@@ -38,7 +38,7 @@ int run(const RunOptions& options) {
     check_expectations_apply(*scenario, plan.map);
 
     const auto start = std::chrono::steady_clock::now();
-    const RunRecord record = run_scenario(*scenario, plan);
+    const RunRecord record = run_scenario(*scenario, plan, net);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const auto results = evaluate_expectations(*scenario, plan.map, record);
     bool all = true;

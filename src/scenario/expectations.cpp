@@ -1,5 +1,6 @@
 #include "scenario/expectations.hpp"
 
+#include <cmath>
 #include <optional>
 #include <sstream>
 
@@ -7,6 +8,8 @@
 
 namespace signalsim {
 namespace {
+
+constexpr double kRestSpeed = 0.1;  // [m/s] "came to rest" for passes_light
 
 struct Span {
   double enter = 0.0;  // route s where the route enters the junction / lanelet
@@ -82,10 +85,73 @@ ExpectationResult check(const ExpectBlinkerNever& e, const RouteMap&, const RunR
   return {"", true, std::to_string(record.rows.size()) + " steps checked"};
 }
 
+// Route s of the stop line of the first approach to `light`, if the route meets it.
+std::optional<double> stop_line_of(const std::string& light, const RouteMap& route) {
+  for (const Lanelet& l : route.lanelets())
+    if (!l.is_internal && l.traffic_light && l.traffic_light->tls_id == light) return l.s_end() - l.stop_offset;
+  return std::nullopt;
+}
+
+bool is_stop(JudgeDecision d) { return d == JudgeDecision::Stop || d == JudgeDecision::EmergencyStop; }
+
+ExpectationResult check(const ExpectStopsBeforeLight& e, const RouteMap&, const RunRecord& record) {
+  for (const LightStop& stop : record.stops) {
+    if (stop.tl_id != e.light) continue;
+    std::ostringstream out;
+    out.setf(std::ios::fixed);
+    out.precision(3);
+    out << "at rest at t=" << stop.time << " s, " << stop.error << " m from the stop point ("
+        << to_string(stop.decision) << ", " << to_string(stop.worst_level) << " level)";
+    return {"", std::abs(stop.error) <= e.tolerance, out.str()};
+  }
+  return {"", false, "the ego never came to rest for a stop at light " + e.light};
+}
+
+ExpectationResult check(const ExpectPassesLight& e, const RouteMap& route, const RunRecord& record) {
+  const double line = *stop_line_of(e.light, route);
+  bool crossed = false;
+  for (const TimelineRow& row : record.rows) {
+    if (row.s_front >= line) {
+      crossed = true;
+      break;
+    }
+    if (row.tl_id == e.light && is_stop(row.tl_decision))
+      return {"", false, "the judge ordered " + std::string(to_string(row.tl_decision)) + " at " + at(row)};
+    if (row.speed < kRestSpeed && row.time > record.rows.front().time)
+      return {"", false, "the ego came to rest before the stop line at " + at(row)};
+  }
+  if (!crossed) return {"", false, "the ego never reached the stop line"};
+  return {"", true, "crossed the stop line without a stop"};
+}
+
+ExpectationResult check(const ExpectEmergencyStopAtLight& e, const RouteMap&, const RunRecord& record) {
+  for (const TimelineRow& row : record.rows)
+    if (row.tl_id == e.light && row.tl_decision == JudgeDecision::EmergencyStop)
+      return {"", true, "emergency stop ordered at " + at(row) + " (zone " + std::string(to_string(row.zone)) + ")"};
+  return {"", false, "no emergency stop was ordered at light " + e.light};
+}
+
+ExpectationResult check(const ExpectNeverRunsRed&, const RouteMap&, const RunRecord& record) {
+  if (record.red_violations.empty()) return {"", true, "no stop line crossed on red"};
+  const RedLightViolation& v = record.red_violations.front();
+  std::ostringstream out;
+  out.setf(std::ios::fixed);
+  out.precision(2);
+  out << "crossed the stop line of " << v.tl_id << " on red at t=" << v.time << " s, s_front=" << v.s_front << " m";
+  return {"", false, out.str()};
+}
+
 }  // namespace
 
 void check_expectations_apply(const Scenario& scenario, const RouteMap& route) {
   for (std::size_t i = 0; i < scenario.expect.size(); ++i) {
+    std::string light;
+    if (const auto* e = std::get_if<ExpectStopsBeforeLight>(&scenario.expect[i])) light = e->light;
+    if (const auto* e = std::get_if<ExpectPassesLight>(&scenario.expect[i])) light = e->light;
+    if (const auto* e = std::get_if<ExpectEmergencyStopAtLight>(&scenario.expect[i])) light = e->light;
+    if (!light.empty() && !stop_line_of(light, route))
+      throw InputError(scenario.path, 0,
+                       "expect[" + std::to_string(i) + "]: traffic light '" + light + "' is not on the ego's route");
     const auto* through = std::get_if<ExpectBlinkerThrough>(&scenario.expect[i]);
     if (!through || span_of(*through, route)) continue;
     const std::string what = through->junction.empty() ? "lanelet '" + through->lanelet + "'"

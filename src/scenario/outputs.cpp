@@ -52,7 +52,8 @@ std::string_view to_string(RunStatus status) {
 void write_timeline_csv(const std::string& path, const std::vector<TimelineRow>& rows) {
   std::string out =
       "time,s_front,x,y,speed,accel,edge,lane,lateral_offset,blinker,blinker_source,sumo_signals,"
-      "tl_id,tl_state,tl_decision,stop_distance\n";
+      "tl_id,tl_state,tl_observed,tl_decision,stop_distance,judge_distance,yellow_lamp_line,zone,stop_s,"
+      "stop_level\n";
   out.reserve(rows.size() * 120);
   for (const TimelineRow& r : rows) {
     out += fixed(r.time, 3) + ',' + fixed(r.s_front, 3) + ',' + fixed(r.x, 3) + ',' + fixed(r.y, 3) + ',' +
@@ -60,7 +61,14 @@ void write_timeline_csv(const std::string& path, const std::vector<TimelineRow>&
            fixed(r.lateral_offset, 3) + ',' + std::string(to_string(r.blinker)) + ',' +
            std::string(to_string(r.blinker_source)) + ',' +
            (r.sumo_signals >= 0 ? std::to_string(r.sumo_signals) : std::string()) + ',' + r.tl_id + ',' +
-           (r.tl_state ? std::string(1, r.tl_state) : std::string()) + ",,\n";
+           (r.tl_state ? std::string(1, r.tl_state) : std::string()) + ',' + r.tl_observed + ',' +
+           (r.tl_id.empty() ? std::string() : std::string(to_string(r.tl_decision))) + ',' +
+           (r.stop_distance ? fixed(*r.stop_distance, 3) : std::string()) + ',' +
+           (r.stop_distance ? fixed(r.judge_distance, 3) : std::string()) + ',' +
+           (r.stop_distance ? fixed(r.yellow_lamp_line, 3) : std::string()) + ',' +
+           (r.zone == JudgeZone::None ? std::string() : std::string(to_string(r.zone))) + ',' +
+           (r.stop_s ? fixed(*r.stop_s, 3) : std::string()) + ',' +
+           (r.stop_level ? std::string(to_string(*r.stop_level)) : std::string()) + '\n';
   }
   write_atomically(path, out);
 }
@@ -114,6 +122,23 @@ void write_run_outputs(const std::string& dir, const Scenario& scenario, const s
   counts["steps_hazard"] = hazard;
   counts["sumo_signal_mismatches"] = mismatches;
   summary["counts"] = counts;
+  nlohmann::ordered_json lights;
+  nlohmann::ordered_json stops = nlohmann::ordered_json::array();
+  for (const LightStop& stop : record.stops)
+    stops.push_back({{"light", stop.tl_id}, {"time", std::stod(fixed(stop.time, 3))},
+                     {"stop_s", std::stod(fixed(stop.stop_s, 3))}, {"rest_s", std::stod(fixed(stop.rest_s, 3))},
+                     {"error", std::stod(fixed(stop.error, 3))}, {"decision", to_string(stop.decision)},
+                     {"level", to_string(stop.worst_level)}});
+  lights["stops"] = stops;
+  nlohmann::ordered_json violations = nlohmann::ordered_json::array();
+  for (const RedLightViolation& v : record.red_violations)
+    violations.push_back({{"light", v.tl_id}, {"time", std::stod(fixed(v.time, 3))},
+                          {"s_front", std::stod(fixed(v.s_front, 3))}});
+  lights["red_light_violations"] = violations;
+  std::size_t emergency = 0;
+  for (const TimelineEvent& e : record.events) emergency += e.kind == "light" && e.to == "emergency_stop";
+  lights["emergency_stops"] = emergency;
+  summary["lights"] = lights;
   nlohmann::ordered_json expectations = nlohmann::ordered_json::array();
   for (const ExpectationResult& r : results)
     expectations.push_back({{"expectation", r.description}, {"passed", r.passed}, {"detail", r.detail}});

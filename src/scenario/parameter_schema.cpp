@@ -14,6 +14,8 @@ const std::vector<ParameterSpec>& parameter_schema() {
       {"turn_signal_roundabout_search_distance", 30.0, 0.0, 1000.0, {}, "m", "TSD §10"},
       {"turn_signal_roundabout_angle_threshold_deg", 15.0, 0.0, 180.0, {}, "deg", "TSD §10"},
       {"turn_signal_roundabout_backward_depth", 50, -1.0, 100000.0, {}, "lanelets", "TSD §10"},
+      {"turn_signal_roundabout_exit_signal_from_previous_exit", false, 0, 0, {}, "-",
+       "signalsim: mark ring lanes from the previous exit as enable_exit_turn_signal (Japan)"},
       {"turn_signal_minimum_search_distance", 10.0, 0.0, 1000.0, {}, "m", "TSD §10"},
       {"turn_signal_path_backward_length", 100.0, 0.0, 10000.0, {}, "m", "TSD §10"},
       {"turn_signal_search_time", 3.0, 0.0, 60.0, {}, "s", "TSD §10"},

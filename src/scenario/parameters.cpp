@@ -123,6 +123,9 @@ void ParameterSet::apply_node(const YAML::Node& node, const std::string& prefix,
     if (spec->name == "enable_rtc" && std::get<bool>(value))
       throw InputError(origin, line_of(entry.second),
                        "parameter 'enable_rtc': true is not supported (no operator approves in simulation)");
+    if (spec->name == "v2i.use_remaining_time" && std::get<bool>(value))
+      throw InputError(origin, line_of(entry.second),
+                       "parameter 'v2i.use_remaining_time': true is not supported yet (spec TLJ §1.7 is optional work)");
     values_[name] = std::move(value);
     origins_[name] = origin;
   }
@@ -171,6 +174,24 @@ TurnSignalParameters turn_signal_parameters(const ParameterSet& set, double base
   p.turn_signal_remaining_distance_to_bound_threshold =
       set.number("turn_signal_remaining_distance_to_bound_threshold");
   p.turn_signal_on_swerving = set.boolean("turn_signal_on_swerving");
+  return p;
+}
+
+TrafficLightJudgeParameters traffic_light_parameters(const ParameterSet& set) {
+  TrafficLightJudgeParameters p;
+  p.stop_margin = set.number("stop_margin");
+  p.tl_state_timeout = set.number("tl_state_timeout");
+  p.stop_time_hysteresis = set.number("stop_time_hysteresis");
+  p.yellow_lamp_period = set.number("yellow_lamp_period");
+  p.yellow_light_stop_velocity = set.number("yellow_light_stop_velocity");
+  p.enable_pass_judge = set.boolean("enable_pass_judge");
+  p.is_simulation = set.boolean("is_simulation");
+  p.restart_suppression.min_behind_distance_to_stop = set.number("restart_suppression.min_behind_distance_to_stop");
+  p.restart_suppression.max_behind_distance_to_stop = set.number("restart_suppression.max_behind_distance_to_stop");
+  p.enable_arrow_aware_yellow_passing = set.boolean("enable_arrow_aware_yellow_passing");
+  p.max_accel = set.number("max_accel");
+  p.max_jerk = set.number("max_jerk");
+  p.delay_response_time = set.number("delay_response_time");
   return p;
 }
 

@@ -9,6 +9,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "traffic_light/traffic_light_judge.hpp"
 #include "turn_signal/turn_signal_parameters.hpp"
 
 namespace signalsim {
@@ -58,6 +59,9 @@ class ParameterSet {
 
 /// A value as text (strings quoted), for messages and summaries.
 std::string describe_parameter(const ParameterValue& value);
+
+/// The judge's parameters from a resolved set.
+TrafficLightJudgeParameters traffic_light_parameters(const ParameterSet& set);
 
 /// The decider's parameters from a resolved set.
 TurnSignalParameters turn_signal_parameters(const ParameterSet& set, double base_link_to_front);

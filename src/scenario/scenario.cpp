@@ -1,5 +1,6 @@
 #include "scenario/scenario.hpp"
 
+#include <cmath>
 #include <filesystem>
 #include <sstream>
 
@@ -33,7 +34,12 @@ Expectation parse_expectation(const YAML::Node& item, const std::string& file, s
                                                     "'- blinker_never: right'");
   const std::string kind = item.begin()->first.Scalar();
   const YAML::Node body = item.begin()->second;
-  if (kind == "blinker_never") {
+  if (kind == "blinker_never" || kind == "never_runs_red") {
+    if (kind == "never_runs_red") {
+      if (!body.IsScalar() || body.Scalar() != "true")
+        throw InputError(file, yaml_line(body), where + ".never_runs_red: write 'never_runs_red: true'");
+      return ExpectNeverRunsRed{};
+    }
     YAML::Node wrapped;
     wrapped["blinker"] = body;
     YamlFields fields(wrapped, file, where + "." + kind);
@@ -47,6 +53,25 @@ Expectation parse_expectation(const YAML::Node& item, const std::string& file, s
     else e.lanelet = fields.text("lanelet");
     e.blinker = parse_blinker(fields, "blinker");
     e.lead = fields.required_number("lead", 0.0, 10000.0);
+    fields.finish();
+    return e;
+  }
+  if (kind == "stops_before_light") {
+    ExpectStopsBeforeLight e;
+    e.light = fields.text("light");
+    e.tolerance = fields.number("tolerance", 0.5, 0.0, 100.0);
+    fields.finish();
+    return e;
+  }
+  if (kind == "passes_light") {
+    ExpectPassesLight e;
+    e.light = fields.text("light");
+    fields.finish();
+    return e;
+  }
+  if (kind == "emergency_stop_at_light") {
+    ExpectEmergencyStopAtLight e;
+    e.light = fields.text("light");
     fields.finish();
     return e;
   }
@@ -67,13 +92,38 @@ Expectation parse_expectation(const YAML::Node& item, const std::string& file, s
   }
   throw InputError(file, yaml_line(item.begin()->first),
                    where + ": unknown expectation '" + kind +
-                       "' (known: blinker_through_junction, blinker_through_lanelet, blinker_on, no_blinker, blinker_never)");
+                       "' (known: blinker_through_junction, blinker_through_lanelet, blinker_on, no_blinker, blinker_never, "
+                       "stops_before_light, passes_light, emergency_stop_at_light, never_runs_red)");
+}
+
+PerceptionModelParameters parse_perception(const YAML::Node& node, const std::string& file) {
+  YamlFields f(node, file, "perception");
+  PerceptionModelParameters p;
+  p.detection_range = f.number("detection_range", p.detection_range, 0.0, 1e9);
+  p.dropout_probability = f.number("dropout_probability", 0.0, 0.0, 1.0);
+  p.latency = f.number("latency", 0.0, 0.0, 60.0);
+  p.detections_per_light = f.integer("detections_per_light", 1, 1, 100);
+  p.confidence_noise = f.number("confidence_noise", 0.0, 0.0, 1.0);
+  p.misclassification_probability = f.number("misclassification_probability", 0.0, 0.0, 1.0);
+  const YAML::Node blackouts = f.node("blackouts");
+  if (blackouts && !blackouts.IsNull()) {
+    if (!blackouts.IsSequence()) f.fail("blackouts", "expected a list of [start, end] pairs");
+    for (const auto& pair : blackouts) {
+      double a = 0.0, b = 0.0;
+      if (!pair.IsSequence() || pair.size() != 2 || !YAML::convert<double>::decode(pair[0], a) ||
+          !YAML::convert<double>::decode(pair[1], b) || !(a <= b))
+        throw InputError(file, yaml_line(pair), "key 'perception.blackouts': each entry is [start, end] with start <= end");
+      p.blackouts.push_back({a, b});
+    }
+  }
+  f.finish();
+  return p;
 }
 
 // Top-level scenario keys; any other override key is a parameter name.
 bool is_scenario_key(const std::string& key) {
   static const char* const keys[] = {"name", "description", "net", "additional", "step_length", "duration",
-                                     "seed", "country", "ego", "params", "expect"};
+                                     "seed", "country", "ego", "perception", "light_offsets", "params", "expect"};
   for (const char* k : keys)
     if (key == k) return true;
   return false;
@@ -107,9 +157,10 @@ YAML::Node apply_overrides(YAML::Node root, const ScenarioOverrides& overrides, 
         node[part] = value;
         break;
       }
-      if (node[part] && !node[part].IsMap())
-        throw InputError("--set", 0, "'" + key + "': '" + part + "' is not a mapping");
-      node.reset(node[part]);
+      if (!node[part] || node[part].IsNull()) node[part] = YAML::Node(YAML::NodeType::Map);
+      if (!node[part].IsMap()) throw InputError("--set", 0, "'" + key + "': '" + part + "' is not a mapping");
+      YAML::Node child = node[part];
+      node.reset(child);
       start = dot + 1;
     }
   }
@@ -139,6 +190,14 @@ std::string describe(const Expectation& expectation) {
               << " " << to_string(e.blinker) << " lead " << e.lead;
         } else if constexpr (std::is_same_v<T, ExpectBlinkerOn>) {
           out << "blinker_on " << to_string(e.blinker) << " from_s " << e.from_s << " to_s " << e.to_s;
+        } else if constexpr (std::is_same_v<T, ExpectStopsBeforeLight>) {
+          out << "stops_before_light " << e.light << " tolerance " << e.tolerance;
+        } else if constexpr (std::is_same_v<T, ExpectPassesLight>) {
+          out << "passes_light " << e.light;
+        } else if constexpr (std::is_same_v<T, ExpectEmergencyStopAtLight>) {
+          out << "emergency_stop_at_light " << e.light;
+        } else if constexpr (std::is_same_v<T, ExpectNeverRunsRed>) {
+          out << "never_runs_red";
         } else if constexpr (std::is_same_v<T, ExpectNoBlinker>) {
           out << "no_blinker from_s " << e.from_s << " to_s " << e.to_s;
         } else {
@@ -189,15 +248,31 @@ Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrid
     ego.fail("base_link_to_front", "is longer than the vehicle (ego.length)");
   s.ego.accel = ego.number("accel", 1.0, 0.1, 10.0);
   s.ego.decel = ego.number("decel", 1.0, 0.1, 10.0);
+  s.ego.emergency_decel = ego.number("emergency_decel", 9.0, 1.0, 15.0);
   if (s.ego.depart_speed > s.ego.max_speed) ego.fail("depart_speed", "exceeds ego.max_speed");
   ego.finish();
+
+  if (top.has("perception")) s.perception = parse_perception(top.node("perception"), path);
+  s.perception.seed = static_cast<std::uint64_t>(s.seed);
+  if (top.has("light_offsets")) {
+    YAML::Node offsets = top.node("light_offsets");
+    if (!offsets.IsMap()) top.fail("light_offsets", "expected a mapping of light id: seconds");
+    for (const auto& entry : offsets) {
+      double value = 0.0;
+      if (!entry.second.IsScalar() || !YAML::convert<double>::decode(entry.second, value) || !std::isfinite(value))
+        throw InputError(path, yaml_line(entry.second),
+                         "key 'light_offsets." + entry.first.Scalar() + "': expected a number of seconds");
+      s.light_offsets[entry.first.Scalar()] = value;
+    }
+  }
 
   // Parameters: defaults, params.files, the country preset, params.set, then --set overrides.
   YAML::Node set;
   if (top.has("params")) {
     YamlFields params(top.node("params"), path, "params");
     for (const std::string& file : params.text_list("files")) s.params.apply_file(resolve_relative(path, file));
-    set = params.node("set");
+    const YAML::Node given = params.node("set");
+    if (given) set.reset(given);  // (assigning an absent node would throw)
     params.finish();
   }
   if (!s.country.empty()) {

@@ -5,7 +5,10 @@
 #include <variant>
 #include <vector>
 
+#include <map>
+
 #include "scenario/parameters.hpp"
+#include "traffic_light/perception_model.hpp"
 
 namespace signalsim {
 
@@ -22,6 +25,7 @@ struct EgoSpec {
   double base_link_to_front = 3.7;  ///< rear-axle centre to front bumper [m]
   double accel = 1.0;               ///< comfortable acceleration [m/s^2] (Autoware normal set)
   double decel = 1.0;               ///< comfortable deceleration [m/s^2] (Autoware normal set)
+  double emergency_decel = 9.0;     ///< the most the ego can brake [m/s^2] (SUMO passenger default)
 };
 
 /// A blinker direction is on continuously from at least `lead` metres (front bumper) before the
@@ -47,7 +51,24 @@ struct ExpectBlinkerOn {
   double from_s = 0.0;
   double to_s = 0.0;
 };
-using Expectation = std::variant<ExpectBlinkerThrough, ExpectNoBlinker, ExpectBlinkerNever, ExpectBlinkerOn>;
+/// The ego comes to rest for light `light` with its front within `tolerance` of the stop point.
+struct ExpectStopsBeforeLight {
+  std::string light;
+  double tolerance = 0.5;
+};
+/// The ego crosses the stop line of `light` without a stop decision and without coming to rest.
+struct ExpectPassesLight {
+  std::string light;
+};
+/// The judge ordered an emergency stop (dilemma zone) at `light`.
+struct ExpectEmergencyStopAtLight {
+  std::string light;
+};
+/// The front never crosses a stop line while the ego's link shows red (r or u).
+struct ExpectNeverRunsRed {};
+using Expectation = std::variant<ExpectBlinkerThrough, ExpectNoBlinker, ExpectBlinkerNever, ExpectBlinkerOn,
+                                 ExpectStopsBeforeLight, ExpectPassesLight, ExpectEmergencyStopAtLight,
+                                 ExpectNeverRunsRed>;
 
 /// One line describing an expectation, e.g. "blinker_through_junction C left lead 30".
 std::string describe(const Expectation& e);
@@ -70,6 +91,8 @@ struct Scenario {
   int seed = 1;
   std::string country;                  ///< preset code ("jp"), empty for none
   EgoSpec ego;
+  PerceptionModelParameters perception;  ///< `perception:`; seeded with `seed`; all faults off by default
+  std::map<std::string, double> light_offsets;  ///< `light_offsets: {tls: seconds}` program shifts
   ParameterSet params;                  ///< defaults, params.files, the country, params.set, overrides
   std::vector<Expectation> expect;
 };

@@ -4,7 +4,9 @@
 //   loop until the ego arrives or `duration` simulated seconds have passed:
 //     observe  ego lane/position/speed from SUMO; s_front from the RouteMap; s_base = s_front - b2f
 //     decide   blinker = TurnSignalDecider::decide(route, ego)                  (spec TSD §3)
-//     plan     speed under the lane limits ahead                                (planning/)
+//     light    the next light: perception, then TrafficLightJudge::step         (spec TLJ §1-§2)
+//     plan     speed under the lane limits ahead, and a jerk-limited stop when the
+//              judge asks for one (normal, limit, then emergency constraint set)    (planning/)
 //     apply    blinker bits + speed to SUMO (re-sent every step, spec SUMO §4)
 //     step     SUMO advances one step
 //     record   the row: observation, decision, and the mask SUMO showed while executing it
@@ -17,6 +19,6 @@
 namespace signalsim {
 
 /// Runs one scenario on its planned route. Throws sumo::SumoError when SUMO fails.
-RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan);
+RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, const sumo::NetIndex& net);
 
 }  // namespace signalsim

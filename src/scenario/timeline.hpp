@@ -1,8 +1,12 @@
 // What one run recorded: a row per step and an event per change.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
+
+#include "planning/stop/jerk_limited_stop.hpp"
+#include "traffic_light/traffic_light_judge.hpp"
 
 #include "scenario/scenario.hpp"
 #include "turn_signal/turn_signal_info.hpp"
@@ -22,12 +26,38 @@ struct TimelineRow {
   int sumo_signals = -1;         ///< mask SUMO showed while executing this decision; -1 = gone
   std::string tl_id;             ///< next light ahead on the route, empty when none
   char tl_state = 0;             ///< its true link state for the ego's connection, 0 when none
+  std::string tl_observed;       ///< what perception delivered to the judge this step ("" = nothing)
+  JudgeDecision tl_decision = JudgeDecision::None;
+  JudgeZone zone = JudgeZone::None;
+  std::optional<double> stop_distance;  ///< d: front bumper to the stop point [m] while judged
+  double judge_distance = 0.0;   ///< jerk-limited stopping distance [m] (spec TLJ §2.2) while judged
+  double yellow_lamp_line = 0.0; ///< v * yellow_lamp_period [m] while judged
+  std::optional<double> stop_s;  ///< route s of the stop point while a stop is requested
+  std::optional<StopLevel> stop_level;  ///< constraint set used while braking for a stop
+};
+
+/// One stop at a light: where the front came to rest against where it should have.
+struct LightStop {
+  std::string tl_id;
+  double time = 0.0;
+  double stop_s = 0.0;           ///< the stop point (stop line - stop_margin)
+  double rest_s = 0.0;           ///< front bumper at rest
+  double error = 0.0;            ///< rest_s - stop_s [m]; > 0 beyond the stop point
+  JudgeDecision decision = JudgeDecision::Stop;
+  StopLevel worst_level = StopLevel::Normal;
+};
+
+/// The front crossed a stop line while the ego's link showed red.
+struct RedLightViolation {
+  std::string tl_id;
+  double time = 0.0;
+  double s_front = 0.0;
 };
 
 struct TimelineEvent {
   double time = 0.0;
   double s_front = 0.0;
-  std::string kind;              ///< "blinker"
+  std::string kind;              ///< "blinker" or "light"
   std::string from, to;
   std::string source;
 };
@@ -41,6 +71,8 @@ struct ExpectationResult {
 struct RunRecord {
   std::vector<TimelineRow> rows;
   std::vector<TimelineEvent> events;
+  std::vector<LightStop> stops;
+  std::vector<RedLightViolation> red_violations;
   bool arrived = false;          ///< the ego reached the end of its route
   int collisions = 0;
   double base_link_to_front = 0.0;

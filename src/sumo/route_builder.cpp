@@ -95,6 +95,29 @@ std::pair<RoundaboutRole, std::optional<std::size_t>> junction_role(const NetInd
   return {RoundaboutRole::None, std::nullopt};
 }
 
+/// Whether a connection leaves roundabout `ring` towards a lane a passenger car may use (an exit).
+bool leaves_ring(const NetIndex& net, const NetConnection& c, std::size_t ring) {
+  if (net.roundabout_of_edge(c.to_edge) == std::optional<std::size_t>(ring)) return false;
+  const NetEdge* to = net.edge(c.to_edge);
+  if (to == nullptr || c.to_lane < 0 || static_cast<std::size_t>(c.to_lane) >= to->lanes.size()) return false;
+  return to->lanes[static_cast<std::size_t>(c.to_lane)].allows_passenger;
+}
+
+/// Lanelet::leaves_ring_at_end for a ring lanelet of roundabout `ring`: an exit branches off the ring
+/// at its end. For a normal ring lane the connections of every lane of its edge count: on a multi-lane
+/// ring the exit may leave from another lane than the planned one, but it branches at the same place.
+/// For an internal ring -> ring lane, its own connections count (netconvert gives those no exits).
+bool ring_lanelet_leaves_ring(const NetIndex& net, const NetEdge& edge, const std::string& lane_id,
+                              std::size_t ring) {
+  const auto any_exit = [&](const std::string& from_lane) {
+    const auto& connections = net.connections_from_lane(from_lane);
+    return std::any_of(connections.begin(), connections.end(),
+                       [&](const NetConnection& c) { return leaves_ring(net, c, ring); });
+  };
+  if (edge.is_internal) return any_exit(lane_id);
+  return std::any_of(edge.lanes.begin(), edge.lanes.end(), [&](const NetLane& l) { return any_exit(l.id); });
+}
+
 Lanelet lanelet_of(const NetEdge& edge, const NetLane& lane) {
   Lanelet l;
   l.lane_id = lane.id;
@@ -171,6 +194,7 @@ RoutePlan build_route(const NetIndex& net, const std::vector<std::string>& edges
     if (edge_ring) {
       normal.roundabout_role = RoundaboutRole::Internal;
       normal.roundabout_id = std::to_string(*edge_ring);
+      normal.leaves_ring_at_end = ring_lanelet_leaves_ring(net, edge, lane.id, *edge_ring);
     }
     const NetConnection* link = i + 1 < route.size() ? plan.links[i] : nullptr;
     // The stop line is this lane's end: the light of the connection taken leaves it.
@@ -213,6 +237,7 @@ RoutePlan build_route(const NetIndex& net, const std::vector<std::string>& edges
       l.turn_signal_distance = approach_params.turn_signal_distance;
       l.roundabout_role = role;
       if (ring) l.roundabout_id = std::to_string(*ring);
+      if (role == RoundaboutRole::Internal) l.leaves_ring_at_end = ring_lanelet_leaves_ring(net, *internal_edge, via, *ring);
       push(std::move(l));
 
       // The connection from this internal lane towards the planned lane of the next edge.

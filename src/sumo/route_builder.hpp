@@ -26,7 +26,8 @@ struct RoutePlan {
 /// Plans one lane per route edge so that each lane has a connection to the next edge's lane,
 /// minimising lane changes (backward dynamic programme; ties: the rightmost lane). Between two edges
 /// the connection's via lane and any further internal lanes chained from it become lanelets.
-/// Turn directions, roundabout roles, params, lights and stop offsets per spec SUMO §3.
+/// Turn directions, roundabout roles (with Lanelet::leaves_ring_at_end on ring lanelets), params,
+/// lights and stop offsets per spec SUMO §3.
 /// Throws RouteError.
 RoutePlan build_route(const NetIndex& net, const std::vector<std::string>& edges);
 

@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iomanip>
@@ -174,13 +175,60 @@ void SumoSession::command(int signal_mask, double speed) {
   }
 }
 
-char SumoSession::link_state(const std::string& tls_id, int link_index) const {
+std::string SumoSession::light_state(const std::string& tls_id) const {
   try {
-    const std::string state = libsumo::TrafficLight::getRedYellowGreenState(tls_id);
-    if (link_index < 0 || static_cast<std::size_t>(link_index) >= state.size()) return '?';
-    return state[static_cast<std::size_t>(link_index)];
+    return libsumo::TrafficLight::getRedYellowGreenState(tls_id);
   } catch (const libsumo::TraCIException& e) {
     throw SumoError("SUMO does not know traffic light '" + tls_id + "': " + e.what());
+  }
+}
+
+std::vector<std::string> SumoSession::program_states(const std::string& tls_id) const {
+  try {
+    std::vector<std::string> states;
+    for (const auto& logic : libsumo::TrafficLight::getAllProgramLogics(tls_id))
+      for (const auto& phase : logic.phases) states.push_back(phase->state);
+    return states;
+  } catch (const libsumo::TraCIException& e) {
+    throw SumoError("SUMO does not know traffic light '" + tls_id + "': " + e.what());
+  }
+}
+
+void SumoSession::shift_light_program(const std::string& tls_id, double offset) {
+  try {
+    const std::string program = libsumo::TrafficLight::getProgram(tls_id);
+    for (const auto& logic : libsumo::TrafficLight::getAllProgramLogics(tls_id)) {
+      if (logic.programID != program) continue;
+      double cycle = 0.0;
+      for (const auto& phase : logic.phases) cycle += phase->duration;
+      if (cycle <= 0.0) return;
+      // Where the cycle stands now, plus the offset: that phase, with the rest of its duration.
+      const double now = libsumo::Simulation::getTime();
+      double into = std::fmod(now + offset, cycle);
+      if (into < 0) into += cycle;
+      for (std::size_t i = 0; i < logic.phases.size(); ++i) {
+        const double duration = logic.phases[i]->duration;
+        if (into < duration) {
+          libsumo::TrafficLight::setPhase(tls_id, static_cast<int>(i));
+          libsumo::TrafficLight::setPhaseDuration(tls_id, duration - into);
+          return;
+        }
+        into -= duration;
+      }
+      return;
+    }
+  } catch (const libsumo::TraCIException& e) {
+    throw SumoError("cannot shift the program of traffic light '" + tls_id + "': " + e.what());
+  }
+}
+
+void SumoSession::set_emergency_braking(bool on) {
+  if (on == emergency_braking_) return;
+  try {
+    libsumo::Vehicle::setSpeedMode(kEgo, on ? 11 : 15);  // 11 = 15 without bit 2 (max decel)
+    emergency_braking_ = on;
+  } catch (const libsumo::TraCIException& e) {
+    throw SumoError(std::string("SUMO refused the ego's speed mode: ") + e.what());
   }
 }
 

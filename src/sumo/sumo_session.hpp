@@ -70,14 +70,26 @@ class SumoSession {
   /// speed (held until changed).
   void command(int signal_mask, double speed);
 
-  /// Live state character of one link of a light (spec SUMO §2), '?' when out of range.
-  char link_state(const std::string& tls_id, int link_index) const;
+  /// Live state of a light: one character per link index (spec SUMO §2).
+  std::string light_state(const std::string& tls_id) const;
+
+  /// The phase states of every program SUMO loaded for a light (net and additional files).
+  std::vector<std::string> program_states(const std::string& tls_id) const;
+
+  /// Shifts a light's running program as if it had started `offset` seconds earlier (modulo its
+  /// cycle), from the current simulation time. Throws SumoError for an unknown light.
+  void shift_light_program(const std::string& tls_id, double offset);
+
+  /// Emergency braking: lets the ego brake beyond its vehicle type's `decel` (speed-mode bit 2
+  /// cleared, spec SUMO §4) while on.
+  void set_emergency_braking(bool on);
 
   /// Collisions involving the ego so far.
   int ego_collisions() const { return ego_collisions_; }
 
  private:
   int ego_collisions_ = 0;
+  bool emergency_braking_ = false;
 };
 
 }  // namespace signalsim::sumo

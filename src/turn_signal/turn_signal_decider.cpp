@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "turn_signal/roundabout_backward_length.hpp"
+
 namespace signalsim {
 
 TurnSignalDecision TurnSignalDecider::decide(const RouteMap& route, const EgoOnRoute& ego,
@@ -21,11 +23,17 @@ TurnSignalDecision TurnSignalDecider::decide(const RouteMap& route, const EgoOnR
     decision.source = behavior.turn == TurnIndicator::NoCommand ? RequestSource::None : behavior.source;
     return decision;
   }
-  const double back = std::max(0.0, ego.s_base - params_.turn_signal_path_backward_length);
+  // spec TSD §3.2 / §5.4: the back length of P, extended in roundabouts. The closest lanelet is the
+  // one containing base_link (on a route it always exists).
+  decision.path_backward_length = roundabout_backward_length(
+      route, route.index_at(ego.s_base), params_.turn_signal_path_backward_length,
+      params_.turn_signal_roundabout_backward_depth, roundabouts_.desired_starts());
+  const double back = std::max(0.0, ego.s_base - decision.path_backward_length);
   const RouteMap::Window window = route.window(back, ego.s_base + params_.forward_path_length);
-  decision.intersection = intersections_.update(route, window, ego, behavior.turn, params_);
+  decision.intersection = intersections_.update(route, window, ego, behavior.turn, params_);  // §4
+  decision.roundabout = roundabouts_.update(route, window, ego, params_);                     // §5
   const ResolvedTurnSignal resolved =
-      resolve_turn_signal(ego, decision.intersection, decision.roundabout, behavior);
+      resolve_turn_signal(ego, decision.intersection, decision.roundabout, behavior);        // §6
   decision.turn = resolved.command;
   decision.source = resolved.source;
   return decision;

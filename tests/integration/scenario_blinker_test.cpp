@@ -55,7 +55,7 @@ TEST_P(ScenarioBlinker, TurnsOnAndOffWhereTheSpecSays) {
     EXPECT_TRUE(plan.map.at(i).is_internal);
   }
 
-  const RunRecord record = run_scenario(scenario, plan);
+  const RunRecord record = run_scenario(scenario, plan, net);
   ASSERT_TRUE(record.arrived) << "the ego must drive the whole route";
   ASSERT_GT(record.rows.size(), 100u);
   const double b2f = scenario.ego.base_link_to_front;

@@ -1,0 +1,343 @@
+#include "scenario/metrics.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <tuple>
+
+namespace signalsim {
+namespace {
+
+double round3(double v) {
+  const double r = std::round(v * 1000.0) / 1000.0;
+  return r == 0.0 ? 0.0 : r;  // no "-0"
+}
+
+Blinker blinker_of(TurnDirection d) {
+  return d == TurnDirection::Left ? Blinker::Left : d == TurnDirection::Right ? Blinker::Right : Blinker::None;
+}
+
+Blinker blinker_of_parameter(const std::string& value) {  // "None" / "Left" / "Right"
+  return value == "Left" ? Blinker::Left : value == "Right" ? Blinker::Right : Blinker::None;
+}
+
+// True when a lanelet param (e.g. exit_turn_signal_left="[a, b]") lists `lane_id`; brackets,
+// commas and spaces all separate (spec TSD §5.2).
+bool param_lists(const Lanelet& lanelet, const std::string& key, const std::string& lane_id) {
+  const auto it = lanelet.params.find(key);
+  if (it == lanelet.params.end()) return false;
+  std::string token;
+  for (const char c : it->second + ' ') {
+    if (c == ',' || c == ' ' || c == '[' || c == ']') {
+      if (token == lane_id) return true;
+      token.clear();
+    } else {
+      token += c;
+    }
+  }
+  return false;
+}
+
+std::string id_of(const Lanelet& l) { return l.junction_id.empty() ? l.lane_id : l.junction_id; }
+
+// A run of consecutive rows with the same blinker: rows [first, last].
+struct Stretch {
+  Blinker blinker = Blinker::None;
+  std::size_t first = 0;
+  std::size_t last = 0;
+};
+
+std::vector<Stretch> stretches_of(const std::vector<TimelineRow>& rows) {
+  std::vector<Stretch> out;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    if (out.empty() || rows[i].blinker != out.back().blinker) out.push_back({rows[i].blinker, i, i});
+    else out.back().last = i;
+  }
+  return out;
+}
+
+// How long a stretch lasted: until the next row's time, or one step past its last row.
+double duration_of(const std::vector<TimelineRow>& rows, std::size_t first, std::size_t last, double step) {
+  const double end = last + 1 < rows.size() ? rows[last + 1].time : rows[last].time + step;
+  return end - rows[first].time;
+}
+
+// Flickers: stretches with a change on both sides shorter than kFlickerSeconds.
+bool is_flicker(const std::vector<TimelineRow>& rows, const std::vector<Stretch>& stretches, std::size_t i,
+                double step) {
+  if (i == 0 || i + 1 >= stretches.size()) return false;
+  return duration_of(rows, stretches[i].first, stretches[i].last, step) < kFlickerSeconds - 1e-9;
+}
+
+SectionMetrics measure(const SignalSection& section, const RunRecord& record, const std::vector<Stretch>& stretches,
+                       double step, double window_from, double window_to) {
+  const auto& rows = record.rows;
+  SectionMetrics m;
+  m.section = section;
+  for (std::size_t i = 0; i < stretches.size(); ++i) {
+    const double s = rows[stretches[i].first].s_front;
+    if (s > window_from && s <= window_to && is_flicker(rows, stretches, i, step)) ++m.flickers;
+  }
+  const auto enter = std::find_if(rows.begin(), rows.end(),
+                                  [&](const TimelineRow& r) { return r.s_front >= section.s_start; });
+  if (enter == rows.end()) return m;
+  m.reached = true;
+  if (section.blinker == Blinker::None) return m;
+  const std::size_t k = static_cast<std::size_t>(enter - rows.begin());
+  const std::size_t before = k > 0 ? k - 1 : 0;
+  if (rows[before].blinker == section.blinker) {
+    std::size_t first = before;
+    while (first > 0 && rows[first - 1].blinker == section.blinker) --first;
+    std::size_t last = before;
+    while (last + 1 < rows.size() && rows[last + 1].blinker == section.blinker) ++last;
+    double t_enter = rows[k].time;  // the front reached s_start: interpolate between the two rows
+    if (k > 0 && rows[k].s_front > rows[k - 1].s_front)
+      t_enter = rows[k - 1].time + (section.s_start - rows[k - 1].s_front) /
+                                       (rows[k].s_front - rows[k - 1].s_front) * (rows[k].time - rows[k - 1].time);
+    m.missed = false;
+    m.lead_distance = round3(section.s_start - rows[first].s_front);
+    m.lead_time = round3(std::max(0.0, t_enter - rows[first].time));
+    m.time_on = round3(duration_of(rows, first, last, step));
+    return m;
+  }
+  m.missed = true;
+  m.time_on = 0.0;
+  const double end_front = section.s_end + record.base_link_to_front;
+  for (std::size_t i = k; i < rows.size() && rows[i].s_front <= end_front; ++i) {
+    if (rows[i].blinker != section.blinker) continue;
+    std::size_t last = i;
+    while (last + 1 < rows.size() && rows[last + 1].blinker == section.blinker) ++last;
+    m.time_on = round3(duration_of(rows, i, last, step));
+    break;
+  }
+  return m;
+}
+
+std::vector<LightMetrics> measure_lights(const RouteMap& route, const RunRecord& record, double stop_margin) {
+  const auto& rows = record.rows;
+  std::vector<LightMetrics> out;
+  std::size_t from_row = 0;  // rows after the previous light's stop line
+  for (const Lanelet& l : route.lanelets()) {
+    if (l.is_internal || !l.traffic_light) continue;
+    LightMetrics m;
+    m.id = l.traffic_light->tls_id;
+    m.link_index = l.traffic_light->link_index;
+    m.stop_line_s = round3(l.s_end() - l.stop_offset);
+    std::size_t k = from_row;
+    while (k < rows.size() && rows[k].s_front < m.stop_line_s) ++k;
+    m.reached = k < rows.size() && k > 0;
+    if (m.reached && rows[k - 1].tl_id == m.id && rows[k - 1].tl_state != 0) {
+      m.state_at_line = std::string(1, rows[k - 1].tl_state);
+      m.red_light_violation = rows[k - 1].tl_state == 'r' || rows[k - 1].tl_state == 'u';
+    }
+    for (std::size_t i = from_row; i < k && i < rows.size(); ++i) {
+      if (rows[i].speed < 0.05 && rows[i].s_front >= m.stop_line_s - 30.0) {
+        m.stop_position_error = round3(rows[i].s_front - (m.stop_line_s - stop_margin));
+        break;
+      }
+    }
+    from_row = std::min(k, rows.size());
+    out.push_back(std::move(m));
+  }
+  return out;
+}
+
+template <typename T>
+nlohmann::ordered_json optional_json(const std::optional<T>& v) {
+  return v ? nlohmann::ordered_json(*v) : nlohmann::ordered_json(nullptr);
+}
+
+// Column order (see metric_column_less).
+int rank_in(const std::vector<std::string>& list, const std::string& name) {
+  const auto it = std::find(list.begin(), list.end(), name);
+  return it == list.end() ? static_cast<int>(list.size()) : static_cast<int>(it - list.begin());
+}
+
+const std::vector<std::string>& run_level_order() {
+  static const std::vector<std::string> order = {"max_decel",      "max_jerk",       "collisions",
+                                                 "blinker_events", "flickers",       "missed_signals",
+                                                 "red_light_violations"};
+  return order;
+}
+const std::vector<std::string>& group_order() {
+  static const std::vector<std::string> order = {"turn",     "roundabout_entry", "roundabout_exit", "lane_change",
+                                                 "avoidance", "pull_out",        "pull_over",       "light"};
+  return order;
+}
+const std::vector<std::string>& field_order() {
+  static const std::vector<std::string> order = {
+      "id",       "blinker", "lead_distance", "lead_time",           "time_on",
+      "flickers", "missed",  "state_at_line", "red_light_violation", "stop_position_error",
+      "decision", "zone",    "emergency_stop"};
+  return order;
+}
+
+using ColumnKey = std::tuple<int, int, std::string, long, int, std::string>;
+
+ColumnKey column_key(const std::string& column) {
+  const auto dot = column.find('.');
+  if (dot == std::string::npos) return {0, rank_in(run_level_order(), column), column, 0, 0, ""};
+  const std::string item = column.substr(0, dot), field = column.substr(dot + 1);
+  std::size_t digits = item.size();
+  while (digits > 0 && std::isdigit(static_cast<unsigned char>(item[digits - 1]))) --digits;
+  const std::string group = item.substr(0, digits);
+  const long number = digits < item.size() ? std::stol(item.substr(digits)) : 0;
+  return {1, rank_in(group_order(), group), group, number, rank_in(field_order(), field), field};
+}
+
+std::string cell_text(const nlohmann::ordered_json& v) {
+  if (v.is_string()) return v.get<std::string>();
+  if (v.is_boolean()) return v.get<bool>() ? "true" : "false";
+  return v.dump();
+}
+
+bool skipped_field(const std::string& key) {
+  static const char* const skip[] = {"kind", "s_start", "s_end", "lanelets", "reached", "link_index", "stop_line_s"};
+  return std::any_of(std::begin(skip), std::end(skip), [&](const char* s) { return key == s; });
+}
+
+}  // namespace
+
+std::vector<SignalSection> signal_sections(const RouteMap& route, const ParameterSet& params) {
+  std::vector<SignalSection> out;
+  const Blinker on_entry = blinker_of_parameter(params.text("turn_signal_roundabout_on_entry"));
+  const Blinker on_exit = blinker_of_parameter(params.text("turn_signal_roundabout_on_exit"));
+  for (std::size_t i = 0; i < route.size(); ++i) {
+    const Lanelet& l = route.at(i);
+    if (l.roundabout_role == RoundaboutRole::Entry || l.roundabout_role == RoundaboutRole::Exit) {
+      SignalSection s{l.roundabout_role == RoundaboutRole::Entry ? "roundabout_entry" : "roundabout_exit", id_of(l),
+                      on_exit, l.s_start, l.s_end(), {l.lane_id}};
+      if (l.roundabout_role == RoundaboutRole::Entry) {
+        s.blinker = on_entry;
+        // The exit the route takes: the last lanelet of this roundabout after the entry.
+        const Lanelet* exit = nullptr;
+        for (std::size_t j = i + 1; j < route.size() && route.at(j).roundabout_role != RoundaboutRole::None &&
+                                    route.at(j).roundabout_id == l.roundabout_id;
+             ++j)
+          exit = &route.at(j);
+        if (exit && param_lists(l, "exit_turn_signal_left", exit->lane_id)) s.blinker = Blinker::Left;
+        else if (exit && param_lists(l, "exit_turn_signal_right", exit->lane_id)) s.blinker = Blinker::Right;
+      }
+      out.push_back(std::move(s));
+      continue;
+    }
+    if (l.roundabout_role != RoundaboutRole::None) continue;
+    const Blinker b = blinker_of(l.turn_direction);
+    if (b == Blinker::None) continue;
+    SignalSection s{"turn", id_of(l), b, l.s_start, l.s_end(), {l.lane_id}};
+    while (i + 1 < route.size() && route.at(i + 1).roundabout_role == RoundaboutRole::None &&
+           route.at(i + 1).turn_direction == l.turn_direction) {
+      ++i;
+      s.s_end = route.at(i).s_end();
+      s.lanelets.push_back(route.at(i).lane_id);
+    }
+    out.push_back(std::move(s));
+  }
+  return out;
+}
+
+RunMetrics compute_metrics(const Scenario& scenario, const RouteMap& route, const RunRecord& record) {
+  RunMetrics m;
+  const auto& rows = record.rows;
+  double min_accel = 0.0, max_jerk = 0.0;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    min_accel = std::min(min_accel, rows[i].accel);
+    if (i > 0 && rows[i].time > rows[i - 1].time)
+      max_jerk = std::max(max_jerk, std::abs(rows[i].accel - rows[i - 1].accel) / (rows[i].time - rows[i - 1].time));
+  }
+  m.max_decel = round3(-min_accel);
+  m.max_jerk = round3(max_jerk);
+  m.collisions = record.collisions;
+  m.blinker_events = static_cast<int>(std::count_if(record.events.begin(), record.events.end(),
+                                                    [](const TimelineEvent& e) { return e.kind == "blinker"; }));
+  const std::vector<Stretch> stretches = stretches_of(rows);
+  for (std::size_t i = 0; i < stretches.size(); ++i) m.flickers += is_flicker(rows, stretches, i, scenario.step_length);
+
+  double window_from = -std::numeric_limits<double>::infinity();
+  for (const SignalSection& section : signal_sections(route, scenario.params)) {
+    const double window_to = section.s_end + record.base_link_to_front;
+    m.sections.push_back(measure(section, record, stretches, scenario.step_length, window_from, window_to));
+    window_from = window_to;
+    m.missed_signals += m.sections.back().missed.value_or(false);
+  }
+  m.lights = measure_lights(route, record, scenario.params.number("stop_margin"));
+  for (const LightMetrics& l : m.lights) m.red_light_violations += l.red_light_violation.value_or(false);
+  return m;
+}
+
+nlohmann::ordered_json to_json(const RunMetrics& m) {
+  nlohmann::ordered_json out;
+  out["max_decel"] = m.max_decel;
+  out["max_jerk"] = m.max_jerk;
+  out["collisions"] = m.collisions;
+  out["blinker_events"] = m.blinker_events;
+  out["flickers"] = m.flickers;
+  out["missed_signals"] = m.missed_signals;
+  out["red_light_violations"] = m.red_light_violations;
+  nlohmann::ordered_json sections = nlohmann::ordered_json::array();
+  for (const SectionMetrics& s : m.sections) {
+    nlohmann::ordered_json j;
+    j["kind"] = s.section.kind;
+    j["id"] = s.section.id;
+    j["blinker"] = to_string(s.section.blinker);
+    j["s_start"] = round3(s.section.s_start);
+    j["s_end"] = round3(s.section.s_end);
+    j["lanelets"] = s.section.lanelets;
+    j["reached"] = s.reached;
+    j["lead_distance"] = optional_json(s.lead_distance);
+    j["lead_time"] = optional_json(s.lead_time);
+    j["time_on"] = optional_json(s.time_on);
+    j["flickers"] = s.flickers;
+    j["missed"] = optional_json(s.missed);
+    sections.push_back(std::move(j));
+  }
+  out["sections"] = std::move(sections);
+  nlohmann::ordered_json lights = nlohmann::ordered_json::array();
+  for (const LightMetrics& l : m.lights) {
+    nlohmann::ordered_json j;
+    j["id"] = l.id;
+    j["link_index"] = l.link_index;
+    j["stop_line_s"] = l.stop_line_s;
+    j["reached"] = l.reached;
+    j["state_at_line"] = l.state_at_line;
+    j["red_light_violation"] = optional_json(l.red_light_violation);
+    j["stop_position_error"] = optional_json(l.stop_position_error);
+    j["decision"] = optional_json(l.decision);
+    j["zone"] = optional_json(l.zone);
+    j["emergency_stop"] = optional_json(l.emergency_stop);
+    lights.push_back(std::move(j));
+  }
+  out["lights"] = std::move(lights);
+  return out;
+}
+
+nlohmann::ordered_json metrics_json(const Scenario& scenario, const RouteMap& route, const RunRecord& record) {
+  return to_json(compute_metrics(scenario, route, record));
+}
+
+std::vector<std::pair<std::string, std::string>> flatten_metrics(const nlohmann::ordered_json& metrics) {
+  std::vector<std::pair<std::string, std::string>> out;
+  if (!metrics.is_object()) return out;
+  std::map<std::string, int> counters;  // kind -> sections seen
+  for (const auto& [key, value] : metrics.items()) {
+    if (value.is_primitive()) {
+      if (!value.is_null()) out.emplace_back(key, cell_text(value));
+      continue;
+    }
+    if (!value.is_array()) continue;
+    for (const auto& item : value) {
+      if (!item.is_object()) continue;
+      std::string prefix = key == "lights" ? "light" : key;
+      if (item.contains("kind") && item["kind"].is_string()) prefix = item["kind"].get<std::string>();
+      const std::string name = prefix + std::to_string(++counters[prefix]);
+      for (const auto& [field, v] : item.items())
+        if (v.is_primitive() && !v.is_null() && !skipped_field(field)) out.emplace_back(name + "." + field, cell_text(v));
+    }
+  }
+  return out;
+}
+
+bool metric_column_less(const std::string& a, const std::string& b) { return column_key(a) < column_key(b); }
+
+}  // namespace signalsim

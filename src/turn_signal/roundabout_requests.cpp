@@ -1,0 +1,226 @@
+#include "turn_signal/roundabout_requests.hpp"
+
+#include <algorithm>
+#include <deque>
+
+#include "turn_signal/intersection_requests.hpp"
+#include "turn_signal/required_end.hpp"
+
+namespace signalsim {
+namespace {
+
+bool is_entry_or_exit(const Lanelet& l) {
+  return l.roundabout_role == RoundaboutRole::Entry || l.roundabout_role == RoundaboutRole::Exit;
+}
+
+bool same_connection(const Lanelet& a, const Lanelet& b) {
+  return a.roundabout_role == b.roundabout_role && a.roundabout_id == b.roundabout_id;
+}
+
+// A lanelet of the roundabout `roundabout_id` (any role): spec TSD §5 isRoundaboutLanelet.
+bool in_roundabout(const Lanelet& l, const std::string& roundabout_id) {
+  return l.roundabout_role != RoundaboutRole::None && l.roundabout_id == roundabout_id;
+}
+
+// spec TSD §4.3 FIRST_ACTIVE: the head while its required end (base_link-referenced) is not passed;
+// the last element is returned without an end check (§12.1.6).
+TurnSignalInfo first_active(std::deque<TurnSignalInfo> queue, const EgoOnRoute& ego) {
+  while (!queue.empty()) {
+    if (queue.size() == 1) return queue.front();
+    if (queue.front().required_end - ego.s_base >= 0.0) return queue.front();
+    queue.pop_front();
+  }
+  return {};
+}
+
+}  // namespace
+
+TurnIndicator roundabout_command(std::string_view setting) {
+  if (setting == "Left") return TurnIndicator::EnableLeft;
+  if (setting == "Right") return TurnIndicator::EnableRight;
+  return TurnIndicator::Disable;
+}
+
+RoundaboutConnection roundabout_connection_at(const RouteMap& route, std::size_t index) {
+  RoundaboutConnection c{index, index, route.at(index).roundabout_role};
+  const Lanelet& seed = route.at(index);
+  while (c.front_index > 0 && same_connection(route.at(c.front_index - 1), seed)) --c.front_index;
+  while (c.back_index + 1 < route.size() && same_connection(route.at(c.back_index + 1), seed)) ++c.back_index;
+  return c;
+}
+
+std::vector<RoundaboutConnection> roundabout_connections(const RouteMap& route, RouteMap::Window window) {
+  std::vector<RoundaboutConnection> out;
+  const std::size_t last = std::min(window.last, route.size());
+  for (std::size_t i = window.first; i < last; ++i) {
+    if (!is_entry_or_exit(route.at(i))) continue;
+    if (!out.empty() && i <= out.back().back_index) continue;  // each lanelet once (§5.1)
+    out.push_back(roundabout_connection_at(route, i));
+  }
+  return out;
+}
+
+std::optional<std::size_t> roundabout_exit_used(const RouteMap& route, const RoundaboutConnection& entry) {
+  const std::string& ring = route.at(entry.front_index).roundabout_id;
+  if (ring.empty()) return std::nullopt;  // "E has >= 1 roundabout"
+  std::optional<std::size_t> exit;
+  for (std::size_t n = entry.back_index + 1; n < route.size(); ++n) {
+    if (!in_roundabout(route.at(n), ring)) break;  // left E's (first) roundabout
+    exit = n;
+  }
+  return exit;
+}
+
+std::vector<std::string> split_exit_tag(std::string_view value) {
+  std::vector<std::string> items;
+  std::string current;
+  for (char ch : value) {
+    if (ch == ',' || ch == ' ' || ch == '[' || ch == ']') {
+      if (!current.empty()) items.push_back(std::move(current));
+      current.clear();
+    } else {
+      current.push_back(ch);
+    }
+  }
+  if (!current.empty()) items.push_back(std::move(current));
+  return items;
+}
+
+std::vector<std::string> exit_names(const RouteMap& route, std::size_t exit) {
+  const Lanelet& x = route.at(exit);
+  if (x.roundabout_role != RoundaboutRole::Exit) return {x.lane_id};
+  std::vector<std::string> names;
+  const RoundaboutConnection connection = roundabout_connection_at(route, exit);
+  for (std::size_t i = connection.front_index; i <= exit; ++i) names.push_back(route.at(i).lane_id);
+  // signalsim's SUMO-friendly addition: the normal edge the exit leads onto.
+  for (std::size_t i = exit + 1; i < route.size(); ++i) {
+    if (!route.at(i).is_internal) {
+      names.push_back(route.at(i).edge_id);
+      break;
+    }
+  }
+  return names;
+}
+
+bool exit_tag_lists(const Lanelet& entry, const std::string& tag_key, const std::vector<std::string>& names) {
+  const auto it = entry.params.find(tag_key);
+  if (it == entry.params.end()) return false;
+  for (const std::string& item : split_exit_tag(it->second))
+    if (std::find(names.begin(), names.end(), item) != names.end()) return true;
+  return false;
+}
+
+std::optional<std::size_t> exit_signal_chain_start(const RouteMap& route, std::size_t exit_front_index) {
+  // The route is a line: the only route predecessor of lanelet i is i - 1.
+  std::optional<std::size_t> start;
+  std::size_t z = exit_front_index;
+  while (z > 0) {
+    const auto& params = route.at(z - 1).params;
+    const auto it = params.find("enable_exit_turn_signal");
+    if (it == params.end() || it->second != "true") break;
+    start = --z;
+  }
+  return start;
+}
+
+const RoundaboutRequests::ConnectionGeometry& RoundaboutRequests::geometry(const RouteMap& route,
+                                                                           const RoundaboutConnection& connection,
+                                                                           double angle_threshold_deg) {
+  auto cached = geometry_cache_.find(connection.front_index);
+  if (cached != geometry_cache_.end()) return cached->second;
+  const Polyline centerline =
+      merged_centerline(route, TurnLaneGroup{connection.front_index, connection.back_index, TurnDirection::None});
+  const double s_front = route.at(connection.front_index).s_start;
+  const double s_back = route.at(connection.back_index).s_end();
+  // As in IntersectionRequests::geometry: scale the shape length onto SUMO's lane length.
+  const double scale = centerline.length() > 0.0 ? (s_back - s_front) / centerline.length() : 1.0;
+  ConnectionGeometry computed{centerline.size() >= 2,
+                              s_front + required_end_arc_length(centerline, angle_threshold_deg) * scale};
+  return geometry_cache_.emplace(connection.front_index, computed).first->second;
+}
+
+TurnSignalInfo RoundaboutRequests::update(const RouteMap& route, RouteMap::Window window, const EgoOnRoute& ego,
+                                          const TurnSignalParameters& params) {
+  if (route.empty() || window.first >= window.last) return {};
+  // spec TSD §5.1: collect ENTRIES and EXITS in path order.
+  std::vector<RoundaboutConnection> entries;
+  std::vector<RoundaboutConnection> exits;
+  for (const RoundaboutConnection& c : roundabout_connections(route, window))
+    (c.role == RoundaboutRole::Entry ? entries : exits).push_back(c);
+  if (entries.empty() && exits.empty()) return {};
+
+  const double base_search =
+      params.turn_signal_search_time * ego.speed + params.turn_signal_roundabout_search_distance;
+  const TurnIndicator on_entry = roundabout_command(params.turn_signal_roundabout_on_entry);
+  const TurnIndicator on_exit = roundabout_command(params.turn_signal_roundabout_on_exit);
+  const double threshold = params.turn_signal_roundabout_angle_threshold_deg;
+  std::deque<TurnSignalInfo> queue;
+
+  // spec TSD §5.2: entry requests, queued first.
+  for (const RoundaboutConnection& entry : entries) {
+    const ConnectionGeometry& shape = geometry(route, entry, threshold);
+    if (!shape.has_centerline) continue;
+    const Lanelet& e = route.at(entry.front_index);
+    const double d_front = e.s_start - ego.s_front;  // vehicle front to the entry start
+    const double search = e.turn_signal_distance.value_or(base_search);
+    // Once a start is stored, the entry is never filtered by distance again.
+    if (search <= d_front && !desired_starts_.contains(entry.front_index)) continue;
+    const double desired_start = desired_starts_.try_emplace(entry.front_index, ego.s_base).first->second;
+    TurnSignalInfo info;
+    info.turn = on_entry;
+    info.source = RequestSource::RoundaboutEntry;
+    info.desired_start = desired_start;
+    info.required_start = e.s_start;
+    info.required_end = shape.required_end_s;
+    info.desired_end = route.at(entry.back_index).s_end();
+
+    // The exit this route uses, and the per-exit override tags on the entry lanelet.
+    const std::optional<std::size_t> exit = roundabout_exit_used(route, entry);
+    const std::vector<std::string> names = exit ? exit_names(route, *exit) : std::vector<std::string>{};
+    if (exit && exit_tag_lists(e, "exit_turn_signal_left", names)) {
+      info.turn = TurnIndicator::EnableLeft;
+    } else if (exit && exit_tag_lists(e, "exit_turn_signal_right", names)) {
+      info.turn = TurnIndicator::EnableRight;
+    } else if (on_entry == TurnIndicator::Disable) {
+      desired_starts_.erase(entry.front_index);  // no entry signal at all
+      continue;
+    }
+    // Persistence: keep the entry blinker until the end of the exit lanelet.
+    if (params.turn_signal_roundabout_entry_indicator_persistence && exit) info.desired_end = route.at(*exit).s_end();
+    if (info.desired_end - ego.s_base < 0.0) {
+      desired_starts_.erase(entry.front_index);  // already passed
+      continue;
+    }
+    queue.push_back(info);
+  }
+
+  // spec TSD §5.3: exit requests, queued after all entries. No search distance (§12.1.8).
+  for (const RoundaboutConnection& exit : exits) {
+    const ConnectionGeometry& shape = geometry(route, exit, threshold);
+    if (!shape.has_centerline) continue;
+    const double s_exit_end = route.at(exit.back_index).s_end();
+    if (s_exit_end - ego.s_base < 0.0) {
+      desired_starts_.erase(exit.front_index);  // already passed
+      continue;
+    }
+    const double required_start = route.at(exit.front_index).s_start;
+    const std::optional<std::size_t> chain = exit_signal_chain_start(route, exit.front_index);
+    const double start = chain ? route.at(*chain).s_start : required_start;
+    if (start - ego.s_front >= 0.0) continue;  // the front has not reached it yet
+    // The stored start is that position, not the ego's.
+    const double desired_start = desired_starts_.try_emplace(exit.front_index, start).first->second;
+    TurnSignalInfo info;
+    info.turn = on_exit;  // may be DISABLE ("None"): it still occupies the queue
+    info.source = RequestSource::RoundaboutExit;
+    info.desired_start = desired_start;
+    info.required_start = required_start;
+    info.required_end = shape.required_end_s;
+    info.desired_end = s_exit_end;
+    queue.push_back(info);
+  }
+
+  // spec TSD §12.1.7: the queue is "all entries, then all exits", not path order.
+  return first_active(std::move(queue), ego);
+}
+
+}  // namespace signalsim

@@ -1,0 +1,120 @@
+// Roundabout turn-signal requests (spec TSD §5.1-§5.3): entries and exits of `<roundabout>`s on the
+// route window, on the route coordinate s.
+//
+// Per cycle, for the window P (route indices around the ego) and the ego at (s_front, s_base, v):
+//
+//   ENTRIES, EXITS := the entry / exit connections in P, in path order                       (§5.1)
+//   if both are empty:  return EMPTY
+//   search := turn_signal_search_time * v + turn_signal_roundabout_search_distance
+//   for E in ENTRIES:                                                                         (§5.2)
+//     skip E while its start is not strictly within E.turn_signal_distance (or search) of the
+//       front, unless a desired start is already stored for E (then it is never re-filtered)
+//     desired start := stored s_base of the first cycle E came within reach
+//     X := the exit the route actually uses (last lanelet of E's roundabout before leaving it)
+//     cmd := ENABLE_LEFT if E's param exit_turn_signal_left lists X, else ENABLE_RIGHT if
+//            exit_turn_signal_right lists X, else turn_signal_roundabout_on_entry;
+//            a DISABLE entry (on_entry "None", no tag) forgets its start and is skipped
+//     desired end := end of E; with ..._entry_indicator_persistence the end of X instead
+//     desired end passed by base_link: forget the start, skip;  otherwise queue it
+//   for X in EXITS:                                                                           (§5.3)
+//     X's end passed by base_link: forget the start, skip
+//     Z := the earliest lanelet of the chain of route predecessors with
+//          enable_exit_turn_signal == "true" (none: X itself)
+//     skip until the front is strictly past the start of Z (no search distance, §12.1.8)
+//     desired start := start of Z (stored once); cmd := turn_signal_roundabout_on_exit
+//   return FIRST_ACTIVE(entries then exits)                                            (§4.3, §12.1.7)
+//
+// SUMO mapping (spec SUMO §3): a lanelet's roundabout is `roundabout_id`; "E's first roundabout" is
+// E's `roundabout_id`. An entry or exit is a *connection*: the run of consecutive route lanelets with
+// the same role (Entry / Exit) and roundabout, normally one internal lane. netconvert may split a
+// connection into two internal lanes (an internal junction); the run is then one entry or exit, as one
+// lanelet is in Autoware (its key is the run's first route index; centerlines joined as in §4.2).
+#pragma once
+
+#include <cstddef>
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "map/route_map.hpp"
+#include "turn_signal/turn_signal_info.hpp"
+#include "turn_signal/turn_signal_parameters.hpp"
+
+namespace signalsim {
+
+/// One roundabout entry or exit on the route: consecutive lanelets [front_index, back_index] with the
+/// same role and roundabout (normally a single internal lane).
+struct RoundaboutConnection {
+  std::size_t front_index = 0;  ///< route index of the first lanelet (the stored-start key)
+  std::size_t back_index = 0;   ///< route index of the last lanelet
+  RoundaboutRole role = RoundaboutRole::None;
+};
+
+/// Owns the remembered roundabout desired starts (spec TSD §1.5 item 2), for entries and exits alike.
+/// Keys are route lanelet indices (the connection's first lanelet), not lane ids, as in
+/// IntersectionRequests (README: "Remembered desired starts are keyed by route position").
+class RoundaboutRequests {
+ public:
+  /// One planning cycle (spec TSD §5.1-§5.3). `window` is the path P. Returns the first active
+  /// request of the queue "all entries, then all exits" (§4.3 FIRST_ACTIVE) or EMPTY. Never throws.
+  TurnSignalInfo update(const RouteMap& route, RouteMap::Window window, const EgoOnRoute& ego,
+                        const TurnSignalParameters& params);
+
+  /// Geometry of a connection, computed once (it depends on the map only).
+  struct ConnectionGeometry {
+    bool has_centerline = false;  ///< the joined centerline has >= 2 points
+    double required_end_s = 0.0;  ///< route s of the required end (§7, roundabout angle threshold)
+  };
+  const ConnectionGeometry& geometry(const RouteMap& route, const RoundaboutConnection& connection,
+                                     double angle_threshold_deg);
+
+  /// Stored desired starts: connection front index -> route s. An entry stores s_base of the cycle
+  /// it came within reach; an exit stores the start of its enable_exit_turn_signal chain (or its own).
+  const std::map<std::size_t, double>& desired_starts() const { return desired_starts_; }
+
+ private:
+  std::map<std::size_t, double> desired_starts_;
+  std::map<std::size_t, ConnectionGeometry> geometry_cache_;
+};
+
+/// The entry or exit connection containing route index `index` (whose role must be Entry or Exit):
+/// extended backward and forward over neighbours with the same role and roundabout_id, beyond the
+/// window if need be.
+RoundaboutConnection roundabout_connection_at(const RouteMap& route, std::size_t index);
+
+/// spec TSD §5.1: the entries and exits in the window, each once, in path order.
+std::vector<RoundaboutConnection> roundabout_connections(const RouteMap& route, RouteMap::Window window);
+
+/// spec TSD §5.2 "the exit this route uses": from the entry's last lanelet, walk route successors
+/// while they belong to the entry's roundabout (same roundabout_id); the last one walked. nullopt when
+/// the entry has no roundabout or the next route lanelet already leaves it (or the route ends).
+/// Normally an Exit lanelet; an Internal one when the route ends on the ring.
+std::optional<std::size_t> roundabout_exit_used(const RouteMap& route, const RoundaboutConnection& entry);
+
+/// spec TSD §5.2 tag format: the items of a list such as "[301599, 301600]" (separators ',', ' ',
+/// '[' and ']'; empty items dropped).
+std::vector<std::string> split_exit_tag(std::string_view value);
+
+/// The ids an exit_turn_signal_left/right item may use to name the exit ending at route index `exit`:
+///   - the lane id of every lanelet of the exit connection (normally one SUMO internal lane such as
+///     ":R1_1_0"), which is Autoware's form (the exit lanelet's id), and
+///   - signalsim's SUMO-friendly addition: the id of the normal edge the exit leads onto ("out1"),
+///     since internal lane ids are generated by netconvert and change when the net is rebuilt.
+/// For an Internal `exit` (the route ends on the ring) only its own lane id.
+std::vector<std::string> exit_names(const RouteMap& route, std::size_t exit);
+
+/// Whether the entry lanelet's param `tag_key` (exit_turn_signal_left / _right) lists one of `names`.
+bool exit_tag_lists(const Lanelet& entry, const std::string& tag_key, const std::vector<std::string>& names);
+
+/// spec TSD §5.3: the earliest lanelet of the contiguous chain of route predecessors of
+/// `exit_front_index` whose param enable_exit_turn_signal is exactly "true"; nullopt when the
+/// lanelet right before the exit does not carry it. Walks the route, not only the window.
+std::optional<std::size_t> exit_signal_chain_start(const RouteMap& route, std::size_t exit_front_index);
+
+/// spec TSD §1.4: "Left" -> ENABLE_LEFT, "Right" -> ENABLE_RIGHT, anything else (case-sensitive,
+/// "None" included) -> DISABLE.
+TurnIndicator roundabout_command(std::string_view setting);
+
+}  // namespace signalsim

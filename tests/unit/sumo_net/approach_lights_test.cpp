@@ -1,0 +1,86 @@
+// SUMO link states -> the signal elements the judge reads (spec SUMO §3).
+#include <gtest/gtest.h>
+
+#include "sumo/approach_lights.hpp"
+
+namespace signalsim::sumo {
+namespace {
+
+// The cross net's south approach: links 8 right, 9 straight, 10 straight, 11 left.
+ApproachLight south_approach(TurnDirection ego, int ego_link) {
+  ApproachLight light;
+  light.tls_id = "C";
+  light.link_index = ego_link;
+  light.direction = ego;
+  light.links = {{TurnDirection::Right, 8}, {TurnDirection::Straight, 9}, {TurnDirection::Straight, 10},
+                 {TurnDirection::Left, 11}};
+  return light;
+}
+
+std::string elements(const std::string& state, const ApproachLight& light) {
+  const auto e = signal_elements(state, light);
+  return e ? describe_elements(*e) : "off";
+}
+
+TEST(SignalElements, CircleFollowsTheStraightLinks) {
+  const ApproachLight straight = south_approach(TurnDirection::Straight, 9);
+  EXPECT_EQ(elements("rrrrrrrrGGGgrrrr", straight), "green");
+  EXPECT_EQ(elements("rrrrrrrryyyyrrrr", straight), "amber");
+  EXPECT_EQ(elements("rrrrrrrrrrrrrrrr", straight), "red");
+  EXPECT_EQ(elements("rrrrrrrruuuurrrr", straight), "red") << "red-yellow is still red";
+}
+
+TEST(SignalElements, AGreenTurnUnderARedCircleIsAnArrow) {
+  const ApproachLight left = south_approach(TurnDirection::Left, 11);
+  EXPECT_EQ(elements("rrrrrrrrrrrGrrrr", left), "red+green_left_arrow");
+  EXPECT_EQ(elements("rrrrrrrrGrrrrrrr", left), "red+green_right_arrow");
+  EXPECT_EQ(elements("rrrrrrrrsrrrrrrr", left), "red+green_right_arrow") << "'s' is a green arrow, stop first";
+  EXPECT_EQ(elements("rrrrrrrrrrrygrrr", left), "red+amber_left_arrow") << "an ending protected left";
+  EXPECT_EQ(elements("rrrrrrrrGGGgrrrr", left), "green") << "no arrow when the circle is green too";
+}
+
+TEST(SignalElements, ArrowsMatchTheJudgesTurnDirection) {
+  const auto arrow = signal_elements("rrrrrrrrrrrGrrrr", south_approach(TurnDirection::Left, 11));
+  ASSERT_TRUE(arrow);
+  EXPECT_FALSE(is_traffic_signal_stop(LaneTurnDirection::Left, *arrow)) << "left ego goes on its arrow";
+  EXPECT_TRUE(is_traffic_signal_stop(LaneTurnDirection::Straight, *arrow)) << "straight ego stops";
+  EXPECT_TRUE(is_traffic_signal_stop(LaneTurnDirection::Right, *arrow));
+}
+
+TEST(SignalElements, AnOffLinkTakesTheJudgeOut) {
+  EXPECT_EQ(elements("ooooooooooooOOOO", south_approach(TurnDirection::Straight, 9)), "off");
+  EXPECT_EQ(elements("rrrrrrrrrOrrrrrr", south_approach(TurnDirection::Straight, 9)), "off");
+}
+
+TEST(SignalElements, WithoutAStraightLinkTheEgosLinkIsTheCircle) {
+  ApproachLight turn_only;
+  turn_only.link_index = 0;
+  turn_only.direction = TurnDirection::Left;
+  turn_only.links = {{TurnDirection::Left, 0}};
+  EXPECT_EQ(elements("G", turn_only), "green");
+  EXPECT_EQ(elements("r", turn_only), "red");
+}
+
+TEST(JudgeTurnDirection, MapsEveryDirection) {
+  EXPECT_EQ(judge_turn_direction(TurnDirection::Left), LaneTurnDirection::Left);
+  EXPECT_EQ(judge_turn_direction(TurnDirection::Right), LaneTurnDirection::Right);
+  EXPECT_EQ(judge_turn_direction(TurnDirection::Straight), LaneTurnDirection::Straight);
+  EXPECT_EQ(judge_turn_direction(TurnDirection::None), LaneTurnDirection::Else);
+}
+
+}  // namespace
+}  // namespace signalsim::sumo
+
+namespace signalsim::sumo {
+namespace {
+
+TEST(ShowsArrow, OnlyATurnLitUnderANonGreenCircleIsAnArrowBulb) {
+  const ApproachLight left = south_approach(TurnDirection::Left, 11);
+  EXPECT_FALSE(shows_arrow({"GGGgrrrrGGGgrrrr", "yyyyrrrryyyyrrrr", "rrrrrrrrrrrrrrrr"}, left))
+      << "a permissive left (g under a green circle) is no arrow";
+  EXPECT_TRUE(shows_arrow({"rrrrrrrrGGGgrrrr", "rrrrrrrrrrrGrrrr"}, left));
+  EXPECT_TRUE(shows_arrow({"rrrrrrrrsrrrrrrr"}, left));
+}
+
+}  // namespace
+}  // namespace signalsim::sumo
