@@ -16,9 +16,11 @@ def main(out_dir: str, times_file: str) -> None:
         counts = summary.get("counts", {})
         expectations = summary.get("expectations", [])
         held = sum(1 for e in expectations if e.get("passed"))
+        stops = summary.get("lights", {}).get("stops", [])
+        stop_text = ",".join(f"{s['error']:+.2f}" for s in stops) or "-"
         rows.append((name, status, f"{held}/{len(expectations)}", str(counts.get("blinker_events", "-")),
-                     f"{float(end) - float(start):.2f}"))
-    header = ("scenario", "result", "expectations", "blinker events", "wall [s]")
+                     str(counts.get("light_events", "-")), stop_text, f"{float(end) - float(start):.2f}"))
+    header = ("scenario", "result", "expectations", "blinker events", "light events", "stop error [m]", "wall [s]")
     widths = [max(len(r[i]) for r in rows + [header]) for i in range(len(header))]
     fmt = "  ".join("{:<%d}" % w for w in widths)
     print(fmt.format(*header))

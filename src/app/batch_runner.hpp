@@ -32,6 +32,7 @@ struct BatchSettings {
 
 struct BatchResult {
   ResultRows rows;                  ///< every finished row (kept and new), by run index
+  std::size_t total = 0;            ///< runs in the batch
   std::size_t passed = 0, failed = 0, errors = 0;  ///< over all rows
   std::size_t skipped = 0;          ///< rows kept from an earlier results.csv
   bool interrupted = false;

@@ -106,7 +106,10 @@ void write_run_outputs(const std::string& dir, const Scenario& scenario, const s
   counts["simulated_time"] = record.rows.empty() ? 0.0 : std::stod(fixed(record.rows.back().time, 3));
   counts["arrived"] = record.arrived;
   counts["collisions"] = record.collisions;
-  counts["blinker_events"] = record.events.size();
+  std::size_t blinker_events = 0;
+  for (const TimelineEvent& e : record.events) blinker_events += e.kind == "blinker";
+  counts["blinker_events"] = blinker_events;
+  counts["light_events"] = record.events.size() - blinker_events;
   std::size_t left = 0, right = 0, hazard = 0, mismatches = 0;
   for (const TimelineRow& r : record.rows) {
     left += r.blinker == Blinker::Left;

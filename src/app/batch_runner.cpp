@@ -1,0 +1,290 @@
+#include "app/batch_runner.hpp"
+
+#include <unistd.h>
+
+#include <cctype>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <thread>
+
+#include "app/process_pool.hpp"
+#include "app/run_outputs.hpp"
+#include "scenario/input_error.hpp"
+#include "scenario/metrics.hpp"
+
+namespace signalsim::app {
+namespace fs = std::filesystem;
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+std::string format(const char* fmt, auto... args) {
+  char buf[256];
+  std::snprintf(buf, sizeof buf, fmt, args...);
+  return buf;
+}
+
+std::string duration_text(double seconds) {
+  const long s = static_cast<long>(seconds + 0.5);
+  if (s >= 3600) return format("%ld:%02ld:%02ld", s / 3600, (s / 60) % 60, s % 60);
+  return format("%ld:%02ld", s / 60, s % 60);
+}
+
+// "runs/0007-close_turns": by index, so names never collide.
+std::string run_dir_name(const RunSpec& run, std::size_t total) {
+  int width = 4;
+  for (std::size_t n = total; n >= 10000; n /= 10) ++width;
+  std::string name;
+  for (const char c : run.name) name += (std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-') ? c : '_';
+  return format("runs/%0*zu-", width, run.index) + name;
+}
+
+// The worker's stderr as one line: "signalsim: " prefixes dropped, lines joined with " / ".
+std::string one_line(const std::string& text) {
+  std::string out, line;
+  auto flush = [&] {
+    while (!line.empty() && std::isspace(static_cast<unsigned char>(line.back()))) line.pop_back();
+    std::size_t start = 0;
+    while (start < line.size() && std::isspace(static_cast<unsigned char>(line[start]))) ++start;
+    line.erase(0, start);
+    if (line.rfind("signalsim: ", 0) == 0) line.erase(0, 11);
+    if (!line.empty()) out += (out.empty() ? "" : " / ") + line;
+    line.clear();
+  };
+  for (const char c : text) {
+    if (c == '\n') flush();
+    else line += c;
+  }
+  flush();
+  if (out.size() > 600) out = out.substr(0, 600) + "...";
+  return out;
+}
+
+std::string describe_run(const RunSpec& run) {
+  std::string out = "run " + std::to_string(run.index) + " " + run.name;
+  for (const auto& [key, value] : run.values) out += " " + key + "=" + value;
+  return out;
+}
+
+// Status, expectations and metrics from a finished worker's summary.json.
+void read_summary(ResultRow& row, const RunSpec& run, const std::string& dir) {
+  const auto summary = read_json_file((fs::path(dir) / "summary.json").string());
+  const std::string status = summary.value("status", "");
+  if (status != "passed" && status != "failed") {
+    row.cells["status"] = "error";
+    row.cells["error"] = summary.value("error", "summary.json status '" + status + "'");
+    return;
+  }
+  row.cells["status"] = status;
+  int passed = 0, total = 0;
+  std::string failed;
+  if (summary.contains("expectations"))
+    for (const auto& e : summary["expectations"]) {
+      ++total;
+      if (e.value("passed", false)) ++passed;
+      else failed += (failed.empty() ? "" : "; ") + e.value("expectation", std::string("?"));
+    }
+  row.cells["expectations_passed"] = std::to_string(passed);
+  row.cells["expectations_total"] = std::to_string(total);
+  if (!failed.empty()) row.cells["failed_expectations"] = failed;
+  nlohmann::ordered_json metrics;
+  if (summary.contains("metrics")) {
+    metrics = summary["metrics"];
+  } else {
+    // summary.json without "metrics" (written before outputs carried them): compute them here and
+    // leave them beside it as metrics.json, where tools/plot looks too.
+    try {
+      metrics = metrics_from_run_dir(dir, run.scenario, run.set);
+      std::ofstream((fs::path(dir) / "metrics.json").string()) << metrics.dump(2) << "\n";
+    } catch (const std::exception&) {
+      metrics = nullptr;
+    }
+  }
+  for (const auto& [column, text] : flatten_metrics(metrics))
+    if (!text.empty()) row.cells.emplace(column, text);
+}
+
+ResultRow make_row(const RunSpec& run, const std::string& out_dir, const std::string& run_dir,
+                   const ProcessResult& result) {
+  ResultRow row;
+  row.run = run.index;
+  row.cells["scenario"] = run.name;
+  row.cells["file"] = run.scenario;
+  for (const auto& [key, value] : run.values) row.cells[key] = value;
+  row.cells["run_dir"] = run_dir;
+  row.cells["wall_time"] = format("%.2f", result.wall);
+  const std::string dir = (fs::path(out_dir) / run_dir).string();
+  const std::string message = one_line(result.stderr_text);
+  auto error = [&](const std::string& what) {
+    row.cells["status"] = "error";
+    row.cells["error"] = what;
+  };
+  if (result.timed_out) {
+    error(format("timed out after %.0f s (worker killed)", result.wall));
+  } else if (!result.exited) {
+    error(result.signal ? "worker killed by " + signal_name(result.signal) + (message.empty() ? "" : ": " + message)
+                        : "worker failed: " + message);
+  } else if (result.exit_code == 0 || result.exit_code == 1) {
+    try {
+      read_summary(row, run, dir);
+    } catch (const std::exception& e) {
+      error(std::string("exit code ") + std::to_string(result.exit_code) + " but " + e.what());
+    }
+  } else {
+    error(message.empty() ? "exit code " + std::to_string(result.exit_code) : message);
+  }
+  return row;
+}
+
+class Progress {
+ public:
+  Progress(std::size_t total, bool quiet) : total_(total), quiet_(quiet), tty_(isatty(STDOUT_FILENO) == 1) {}
+
+  void finished(const RunSpec& run, const ResultRow& row) {
+    ++done_;
+    const std::string status = row.cells.at("status");
+    failed_ += status == "failed";
+    errors_ += status == "error";
+    if (quiet_) return;
+    std::string line = format("[%zu/%zu] ", done_, total_) + describe_run(run) + ": " + status;
+    if (status == "error") line += ": " + row.cells.at("error");
+    else line += " (" + row.cells.at("wall_time") + " s)";
+    if (!tty_) {
+      std::printf("%s\n", line.c_str());
+      std::fflush(stdout);
+      return;
+    }
+    if (status != "passed") std::printf("\r\033[K%s\n", line.c_str());  // keep failures on screen
+    draw();
+  }
+
+  void tick() {
+    if (!quiet_ && tty_ && Clock::now() - last_draw_ > std::chrono::milliseconds(500)) draw();
+  }
+
+  void end() {
+    if (!quiet_ && tty_ && drawn_) {
+      draw();
+      std::printf("\n");
+      std::fflush(stdout);
+    }
+  }
+
+ private:
+  void draw() {
+    const double elapsed = std::chrono::duration<double>(Clock::now() - start_).count();
+    std::string eta = "--:--";
+    if (done_ > 0) eta = duration_text(elapsed / static_cast<double>(done_) * static_cast<double>(total_ - done_));
+    std::printf("\r\033[K[%zu/%zu] %zu failed, %zu error%s, ETA %s", done_, total_, failed_, errors_,
+                errors_ == 1 ? "" : "s", eta.c_str());
+    std::fflush(stdout);
+    drawn_ = true;
+    last_draw_ = Clock::now();
+  }
+
+  std::size_t total_, done_ = 0, failed_ = 0, errors_ = 0;
+  bool quiet_, tty_, drawn_ = false;
+  Clock::time_point start_ = Clock::now();
+  Clock::time_point last_draw_ = Clock::now();
+};
+
+void count(BatchResult& result) {
+  result.passed = result.failed = result.errors = 0;
+  for (const auto& [index, row] : result.rows) {
+    const auto it = row.cells.find("status");
+    const std::string status = it == row.cells.end() ? "" : it->second;
+    if (status == "passed") ++result.passed;
+    else if (status == "failed") ++result.failed;
+    else ++result.errors;
+  }
+}
+
+}  // namespace
+
+int BatchResult::exit_code() const {
+  if (interrupted) return kExitInterrupted;
+  return failed + errors > 0 ? 1 : 0;
+}
+
+int default_jobs() {
+  const unsigned n = std::thread::hardware_concurrency();
+  return n > 0 ? static_cast<int>(n) : 1;
+}
+
+std::string results_path(const std::string& out_dir) { return (fs::path(out_dir) / "results.csv").string(); }
+
+BatchResult run_batch(const std::vector<RunSpec>& runs, const BatchSettings& settings) {
+  const auto start = Clock::now();
+  BatchResult result;
+  result.total = runs.size();
+  fs::create_directories(fs::path(settings.out_dir) / "runs");
+  const std::string csv = results_path(settings.out_dir);
+
+  if (settings.resume && fs::exists(csv)) {
+    for (auto& [index, row] : read_results_csv(csv)) {
+      if (index >= runs.size() || !row_matches(row, runs[index]))
+        throw InputError(csv, static_cast<int>(index) + 2,
+                         "--resume: run " + std::to_string(index) +
+                             " was not this run of this batch (other scenarios or values); use another --out");
+      const auto status = row.cells.find("status");
+      if (status != row.cells.end() && (status->second == "passed" || status->second == "failed"))
+        result.rows[index] = std::move(row);  // error rows are run again
+    }
+    result.skipped = result.rows.size();
+  }
+  write_file_atomically(csv, results_csv(settings.swept, result.rows));
+
+  std::vector<ProcessJob> jobs;
+  std::vector<std::string> run_dirs(runs.size());
+  const std::string self = self_executable();
+  for (const RunSpec& run : runs) {
+    run_dirs[run.index] = run_dir_name(run, runs.size());
+    if (result.rows.count(run.index)) continue;
+    const fs::path dir = fs::path(settings.out_dir) / run_dirs[run.index];
+    fs::remove_all(dir);  // a stale or half-written run of an earlier batch
+    ProcessJob job;
+    job.id = run.index;
+    job.timeout = settings.timeout;
+    job.argv = {self, "run", run.scenario, "--out", dir.string(), "--quiet"};
+    for (const std::string& item : run.set) {
+      job.argv.push_back("--set");
+      job.argv.push_back(item);
+    }
+    jobs.push_back(std::move(job));
+  }
+  if (!settings.quiet && result.skipped > 0)
+    std::printf("resuming: %zu of %zu runs already done, %zu to run\n", result.skipped, runs.size(), jobs.size());
+
+  Progress progress(jobs.size(), settings.quiet);
+  const bool completed = run_processes(
+      jobs, settings.jobs,
+      [&](const ProcessJob& job, const ProcessResult& process) {
+        const RunSpec& run = runs[job.id];
+        ResultRow row = make_row(run, settings.out_dir, run_dirs[job.id], process);
+        progress.finished(run, row);
+        result.rows[job.id] = std::move(row);
+        write_file_atomically(csv, results_csv(settings.swept, result.rows));
+      },
+      [&] { progress.tick(); });
+  progress.end();
+  result.interrupted = !completed;
+  write_file_atomically(csv, results_csv(settings.swept, result.rows));
+  count(result);
+  result.wall = std::chrono::duration<double>(Clock::now() - start).count();
+  return result;
+}
+
+std::string batch_summary(const BatchResult& result, const std::string& out_dir) {
+  std::string out = std::to_string(result.total) + " run" + (result.total == 1 ? "" : "s") + ": " +
+                    std::to_string(result.passed) + " passed, " + std::to_string(result.failed) + " failed, " +
+                    std::to_string(result.errors) + " error" + (result.errors == 1 ? "" : "s");
+  if (result.rows.size() < result.total) out += ", " + std::to_string(result.total - result.rows.size()) + " not run";
+  if (result.skipped) out += " (" + std::to_string(result.skipped) + " from the earlier results.csv)";
+  out += format(" in %.1f s; results: ", result.wall) + results_path(out_dir);
+  if (result.interrupted) out += "\ninterrupted: finished runs are kept; run again with --resume to complete";
+  return out;
+}
+
+}  // namespace signalsim::app
