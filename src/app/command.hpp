@@ -23,5 +23,8 @@ int report_bad_input(const std::string& message);
 Command add_run_command(CLI::App& app);
 Command add_inspect_command(CLI::App& app);
 Command add_countries_command(CLI::App& app);
+Command add_batch_command(CLI::App& app);
+Command add_sweep_command(CLI::App& app);
+Command add_check_command(CLI::App& app);
 
 }  // namespace signalsim::app

@@ -15,12 +15,13 @@ std::string format(const char* fmt, auto... args) {
 
 }  // namespace
 
-void print_inspection(std::ostream& out, const sumo::NetIndex& net, const std::vector<std::string>& route) {
+void print_net_summary(std::ostream& out, const sumo::NetIndex& net) {
   out << "net " << net.path() << ": " << net.edge_count() << " edges, " << net.tl_logics().size()
       << " traffic lights, " << net.roundabouts().size() << " roundabouts, "
       << (net.lefthand() ? "left-hand" : "right-hand") << " traffic\n";
-  if (route.empty()) return;
-  const sumo::RoutePlan plan = sumo::build_route(net, route);
+}
+
+void print_route(std::ostream& out, const sumo::RoutePlan& plan) {
   out << "route: " << plan.map.size() << " lanelets, " << format("%.2f", plan.map.length()) << " m, "
       << plan.lane_changes << " lane change(s) planned\n";
   out << format("%4s %9s %9s  %-18s %-9s %-10s %-8s %7s %-14s %s\n", "#", "s_start", "s_end", "lane", "turn",

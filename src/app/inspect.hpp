@@ -6,11 +6,15 @@
 #include <vector>
 
 #include "sumo/net_index.hpp"
+#include "sumo/route_builder.hpp"
 
 namespace signalsim {
 
-/// Net summary (edges, lights, roundabouts, driving side); with a route, one line per lanelet.
-/// Throws sumo::RouteError for a bad route.
-void print_inspection(std::ostream& out, const sumo::NetIndex& net, const std::vector<std::string>& route);
+/// Net summary (edges, lights, roundabouts, driving side).
+void print_net_summary(std::ostream& out, const sumo::NetIndex& net);
+
+/// One line per lanelet of a planned route: s range, turn direction, roundabout role, light, params
+/// (including `enable_exit_turn_signal` where the exit-signal marking set it).
+void print_route(std::ostream& out, const sumo::RoutePlan& plan);
 
 }  // namespace signalsim

@@ -5,9 +5,11 @@
 #include <optional>
 
 #include "app/command.hpp"
+#include "app/plot_tool.hpp"
 #include "scenario/expectations.hpp"
 #include "scenario/input_error.hpp"
 #include "scenario/outputs.hpp"
+#include "scenario/route_planning.hpp"
 #include "scenario/scenario.hpp"
 #include "scenario/step_loop.hpp"
 #include "sumo/net_index.hpp"
@@ -22,6 +24,7 @@ struct RunOptions {
   std::string out_dir = "out";
   ScenarioOverrides overrides;
   bool quiet = false;
+  bool plot = false;  ///< draw the run's pictures with tools/plot afterwards
 };
 
 int run(const RunOptions& options) {
@@ -29,12 +32,7 @@ int run(const RunOptions& options) {
   try {
     scenario = load_scenario(options.scenario_path, options.overrides);
     const sumo::NetIndex net = sumo::NetIndex::load(scenario->net);
-    sumo::RoutePlan plan;
-    try {
-      plan = sumo::build_route(net, scenario->ego.route);
-    } catch (const sumo::RouteError& e) {
-      throw InputError(options.scenario_path, 0, std::string("ego.route: ") + e.what());
-    }
+    const sumo::RoutePlan plan = plan_route(*scenario, net);
     check_expectations_apply(*scenario, plan.map);
 
     const auto start = std::chrono::steady_clock::now();
@@ -52,6 +50,7 @@ int run(const RunOptions& options) {
       for (const auto& r : results)
         std::printf("  [%s] %s: %s\n", r.passed ? "ok" : "FAIL", r.description.c_str(), r.detail.c_str());
     }
+    if (options.plot) run_plot_tool({options.out_dir});  // a failed plot is reported, the run's verdict stands
     return all ? 0 : kExitFailed;
   } catch (const InputError& e) {
     return report_bad_input(e.what());
@@ -80,6 +79,7 @@ Command add_run_command(CLI::App& app) {
                   "Override: a scenario key (seed=3, ego.max_speed=10, country=de) or a parameter "
                   "(turn_signal_search_time=2.5); repeatable");
   sub->add_flag("--quiet", options->quiet, "Print nothing on success");
+  sub->add_flag("--plot", options->plot, "Draw PNGs of the run into OUT/plots with tools/plot");
   return {sub, [options] { return run(*options); }};
 }
 

@@ -41,6 +41,7 @@ struct Lanelet {
   std::vector<TurnDirection> successor_turn_directions;  ///< of all map successors, on or off route
   RoundaboutRole roundabout_role = RoundaboutRole::None;
   std::string roundabout_id;           ///< which `<roundabout>` (its position in the net file), if any
+  // For an internal ring -> ring lane (inside a ring junction): the junction has an exit off the ring.
   bool leaves_ring_at_end = false;  ///< a ring lanelet whose end has a connection off the ring (an exit branches there)
   std::optional<double> turn_signal_distance;  ///< per-lanelet search distance (spec TSD §4.3)
   std::map<std::string, std::string> params;   ///< lane params, merged with the approach lane's (spec SUMO §3)

@@ -85,32 +85,33 @@ SectionMetrics measure(const SignalSection& section, const RunRecord& record, co
   m.reached = true;
   if (section.blinker == Blinker::None) return m;
   const std::size_t k = static_cast<std::size_t>(enter - rows.begin());
-  const std::size_t before = k > 0 ? k - 1 : 0;
-  if (rows[before].blinker == section.blinker) {
-    std::size_t first = before;
+  // The stretch of the expected blinker around row i, if row i shows it.
+  const auto stretch_at = [&](std::size_t i) -> std::optional<std::pair<std::size_t, std::size_t>> {
+    if (rows[i].blinker != section.blinker) return std::nullopt;
+    std::size_t first = i, last = i;
     while (first > 0 && rows[first - 1].blinker == section.blinker) --first;
-    std::size_t last = before;
     while (last + 1 < rows.size() && rows[last + 1].blinker == section.blinker) ++last;
-    double t_enter = rows[k].time;  // the front reached s_start: interpolate between the two rows
-    if (k > 0 && rows[k].s_front > rows[k - 1].s_front)
-      t_enter = rows[k - 1].time + (section.s_start - rows[k - 1].s_front) /
-                                       (rows[k].s_front - rows[k - 1].s_front) * (rows[k].time - rows[k - 1].time);
-    m.missed = false;
-    m.lead_distance = round3(section.s_start - rows[first].s_front);
-    m.lead_time = round3(std::max(0.0, t_enter - rows[first].time));
-    m.time_on = round3(duration_of(rows, first, last, step));
+    return std::make_pair(first, last);
+  };
+  // Serving stretch: on just before the front reached the start, or at that step; else the first
+  // one that began later while base_link was still in the section (a late blinker).
+  auto serving = k > 0 ? stretch_at(k - 1) : std::nullopt;
+  if (!serving) serving = stretch_at(k);
+  m.missed = !serving;
+  const double end_front = section.s_end + record.base_link_to_front;
+  for (std::size_t i = k + 1; !serving && i < rows.size() && rows[i].s_front <= end_front; ++i) serving = stretch_at(i);
+  if (!serving) {
+    m.time_on = 0.0;
     return m;
   }
-  m.missed = true;
-  m.time_on = 0.0;
-  const double end_front = section.s_end + record.base_link_to_front;
-  for (std::size_t i = k; i < rows.size() && rows[i].s_front <= end_front; ++i) {
-    if (rows[i].blinker != section.blinker) continue;
-    std::size_t last = i;
-    while (last + 1 < rows.size() && rows[last + 1].blinker == section.blinker) ++last;
-    m.time_on = round3(duration_of(rows, i, last, step));
-    break;
-  }
+  const auto [first, last] = *serving;
+  double t_enter = rows[k].time;  // the front reached s_start: interpolate between the two rows
+  if (k > 0 && rows[k].s_front > rows[k - 1].s_front)
+    t_enter = rows[k - 1].time + (section.s_start - rows[k - 1].s_front) /
+                                     (rows[k].s_front - rows[k - 1].s_front) * (rows[k].time - rows[k - 1].time);
+  m.lead_distance = round3(section.s_start - rows[first].s_front);
+  m.lead_time = round3(t_enter - rows[first].time);
+  m.time_on = round3(duration_of(rows, first, last, step));
   return m;
 }
 

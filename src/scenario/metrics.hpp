@@ -13,13 +13,13 @@
 //               roundabout_exit   an exit lanelet; expected blinker turn_signal_roundabout_on_exit
 //               (maneuver sections - lane change, avoidance, pull out/over - will come with the
 //               lateral maneuvers; they fit the same SectionMetrics)
-//   for each  enter = the first step whose front is at or beyond the section start
-//             if the step before shows the expected blinker: the continuous stretch of that blinker
-//               around it gives   lead_distance = s_start - s_front where the stretch began
-//                                 lead_time     = time the front reached s_start - time it began
-//                                 time_on       = how long the stretch lasted
-//             else missed (no lead), time_on = the first stretch of the expected blinker that
-//               began inside the section (a late blinker), 0 if none
+//   for each  the serving stretch of the expected blinker: the one on at the last step before the
+//               front reached s_start, else at the step it reached it, else the first one that began
+//               later while base_link was still in the section (a late blinker)
+//                 lead_distance = s_start - s_front where the stretch began (< 0: late)
+//                 lead_time     = time the front reached s_start - time it began (< 0: late)
+//                 time_on       = how long the stretch lasted (0 when there is none)
+//               missed = the blinker was not on when the front reached s_start (within that step)
 //             flickers = blinker states shorter than 1 s (changes on both sides) that began between
 //               the previous section's end and this one's end (front bumper, plus base_link_to_front)
 //   lights    every signalised approach on the route (stop line = approach lane end - stopOffset):
@@ -31,7 +31,7 @@
 //             flickers, missed signals, red-light violations.
 //
 // Values are rounded to 1 mm / 1 ms so the JSON is byte-stable. A metric that does not apply
-// (a section never reached, no lead on a missed signal) is null.
+// (a section never reached, no lead when no blinker served the section) is null.
 #pragma once
 
 #include <optional>
@@ -63,11 +63,11 @@ std::vector<SignalSection> signal_sections(const RouteMap& route, const Paramete
 struct SectionMetrics {
   SignalSection section;
   bool reached = false;                  ///< the front got to the section start
-  std::optional<double> lead_distance;   ///< [m] blinker on before the start (front bumper)
-  std::optional<double> lead_time;       ///< [s]
+  std::optional<double> lead_distance;   ///< [m] blinker on before the start (front bumper); < 0 late
+  std::optional<double> lead_time;       ///< [s]; < 0 late
   std::optional<double> time_on;         ///< [s] length of the blinker stretch serving the section
   int flickers = 0;                      ///< blinker states shorter than 1 s near the section
-  std::optional<bool> missed;            ///< no matching blinker just before the start
+  std::optional<bool> missed;            ///< the blinker was not on when the front reached the start
 };
 
 struct LightMetrics {

@@ -103,19 +103,15 @@ bool leaves_ring(const NetIndex& net, const NetConnection& c, std::size_t ring) 
   return to->lanes[static_cast<std::size_t>(c.to_lane)].allows_passenger;
 }
 
-/// Lanelet::leaves_ring_at_end for a ring lanelet of roundabout `ring`: an exit branches off the ring
-/// at its end. For a normal ring lane the connections of every lane of its edge count: on a multi-lane
-/// ring the exit may leave from another lane than the planned one, but it branches at the same place.
-/// For an internal ring -> ring lane, its own connections count (netconvert gives those no exits).
-bool ring_lanelet_leaves_ring(const NetIndex& net, const NetEdge& edge, const std::string& lane_id,
-                              std::size_t ring) {
-  const auto any_exit = [&](const std::string& from_lane) {
-    const auto& connections = net.connections_from_lane(from_lane);
+/// Whether an exit branches off roundabout `ring` at the end of the ring edge `edge`: a lane of the
+/// edge has a connection off the ring. Every lane counts: on a multi-lane ring the exit may leave from
+/// another lane than the planned one, but it branches at the same place.
+bool ring_edge_has_exit(const NetIndex& net, const NetEdge& edge, std::size_t ring) {
+  return std::any_of(edge.lanes.begin(), edge.lanes.end(), [&](const NetLane& lane) {
+    const auto& connections = net.connections_from_lane(lane.id);
     return std::any_of(connections.begin(), connections.end(),
                        [&](const NetConnection& c) { return leaves_ring(net, c, ring); });
-  };
-  if (edge.is_internal) return any_exit(lane_id);
-  return std::any_of(edge.lanes.begin(), edge.lanes.end(), [&](const NetLane& l) { return any_exit(l.id); });
+  });
 }
 
 Lanelet lanelet_of(const NetEdge& edge, const NetLane& lane) {
@@ -194,7 +190,8 @@ RoutePlan build_route(const NetIndex& net, const std::vector<std::string>& edges
     if (edge_ring) {
       normal.roundabout_role = RoundaboutRole::Internal;
       normal.roundabout_id = std::to_string(*edge_ring);
-      normal.leaves_ring_at_end = ring_lanelet_leaves_ring(net, edge, lane.id, *edge_ring);
+      // Lanelet::leaves_ring_at_end: an exit branches off at the end of this ring lane.
+      normal.leaves_ring_at_end = ring_edge_has_exit(net, edge, *edge_ring);
     }
     const NetConnection* link = i + 1 < route.size() ? plan.links[i] : nullptr;
     // The stop line is this lane's end: the light of the connection taken leaves it.
@@ -237,7 +234,9 @@ RoutePlan build_route(const NetIndex& net, const std::vector<std::string>& edges
       l.turn_signal_distance = approach_params.turn_signal_distance;
       l.roundabout_role = role;
       if (ring) l.roundabout_id = std::to_string(*ring);
-      if (role == RoundaboutRole::Internal) l.leaves_ring_at_end = ring_lanelet_leaves_ring(net, *internal_edge, via, *ring);
+      // An internal ring -> ring lane lies in the junction where the exits of the ring edge before it
+      // branch off: it carries leaves_ring_at_end when that junction has such an exit.
+      if (role == RoundaboutRole::Internal) l.leaves_ring_at_end = ring_edge_has_exit(net, edge, *ring);
       push(std::move(l));
 
       // The connection from this internal lane towards the planned lane of the next edge.

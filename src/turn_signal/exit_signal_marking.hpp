@@ -13,9 +13,12 @@ namespace signalsim {
 
 /// For each roundabout passage on the route, i.e. a maximal run of consecutive lanelets of the same
 /// roundabout (`roundabout_id`) that ends with the Exit connection the ego takes:
-///   - the branching point is the last Internal (ring) lanelet of the passage with
-///     `leaves_ring_at_end` that lies before the ring lanelet the ego's own exit branches from (that
-///     one always has it): the previous exit;
+///   - the branching point is the last Internal (ring) lanelet with `leaves_ring_at_end` before the ring
+///     lanelet the ego's own exit branches from (that one always has it): the previous exit. In a SUMO
+///     net (sumo/route_builder) both the ring lane ending at the previous exit's junction and the
+///     internal ring -> ring lane inside that junction have the flag, so the branching point is that
+///     internal lane: the junction itself is not marked, marking starts at the ring lane leaving it
+///     (the ego has passed beside the previous exit);
 ///   - params["enable_exit_turn_signal"] = "true" is set on every Internal lanelet strictly after the
 ///     branching point up to the exit (the ring lanelets only; the exit lanelet itself is not marked);
 ///   - when no exit branches off before the ego's exit (it takes the first exit), every Internal
@@ -26,8 +29,8 @@ namespace signalsim {
 /// net's explicit "false" still breaks the chain. Everything else is copied unchanged. Pure; never throws.
 ///
 /// Result on the exit request (spec TSD §5.3, on_exit "Left" in Japan): the exit blinker comes on when
-/// the front passes the junction of the previous exit (or right after entering, for the first exit) and
-/// stays on to the end of the exit lanelet.
+/// the front leaves the junction of the previous exit (or the entry, for the first exit) and stays on to
+/// the end of the exit lanelet.
 RouteMap mark_exit_signal_lanes(RouteMap route);
 
 }  // namespace signalsim

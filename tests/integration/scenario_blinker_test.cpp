@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "scenario/scenario.hpp"
+#include "scenario/route_planning.hpp"
 #include "scenario/step_loop.hpp"
 #include "sumo/net_index.hpp"
 #include "sumo/route_builder.hpp"
@@ -48,7 +49,7 @@ TEST_P(ScenarioBlinker, TurnsOnAndOffWhereTheSpecSays) {
   const Case& c = GetParam();
   const Scenario scenario = load_scenario(path_of(c.scenario));
   const sumo::NetIndex net = sumo::NetIndex::load(scenario.net);
-  const sumo::RoutePlan plan = sumo::build_route(net, scenario.ego.route);
+  const sumo::RoutePlan plan = plan_route(scenario, net);
   for (const Stretch& st : c.stretches) {  // the route builder agrees with the independent numbers
     const std::size_t i = plan.map.index_at(st.s_lane_start + 1e-3);
     EXPECT_NEAR(plan.map.at(i).s_start, st.s_lane_start, 0.01) << "turn lanelet start on the route";

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "scenario/scenario.hpp"
+#include "scenario/route_planning.hpp"
 #include "scenario/step_loop.hpp"
 #include "sumo/net_index.hpp"
 #include "sumo/route_builder.hpp"
@@ -20,7 +21,7 @@ namespace {
 RunRecord run(const std::string& path, const ScenarioOverrides& overrides = {}) {
   const Scenario scenario = load_scenario(path, overrides);
   const sumo::NetIndex net = sumo::NetIndex::load(scenario.net);
-  const sumo::RoutePlan plan = sumo::build_route(net, scenario.ego.route);
+  const sumo::RoutePlan plan = plan_route(scenario, net);
   return run_scenario(scenario, plan, net);
 }
 

@@ -93,8 +93,8 @@ struct RoundaboutIndices {
 
 /// Appends: entry ":N0_0_0" -> ring lane "r01_0" [-> ":N1_2_0" -> "r12_0" ...] -> exit ":N<k>_1_0" ->
 /// "out<k>_0" (`out_length` m), for the k-th exit (1-based). With another junction prefix P the ids are
-/// ":P0_0_0", "Pr01_0", ..., "Pout<k>_0". Ring lanes have
-/// leaves_ring_at_end (an exit branches at every ring junction), ring internal lanes do not.
+/// ":P0_0_0", "Pr01_0", ..., "Pout<k>_0". An exit branches at every ring junction: ring lanes and ring
+/// internal lanes have leaves_ring_at_end, as sumo/route_builder sets it.
 /// The entry takes `approach_params` (the params of the approach lane, spec SUMO §3).
 inline RoundaboutIndices add_roundabout(RouteSketch& sketch, int exit_number, const std::string& ring_id = "0",
                                         const std::string& prefix = "N",
@@ -114,9 +114,10 @@ inline RoundaboutIndices add_roundabout(RouteSketch& sketch, int exit_number, co
   for (int k = 1; k <= exit_number; ++k) {
     if (k > 1) {
       ix.ring.push_back(sketch.size());
-      ring(sketch.arc(":" + prefix + std::to_string(k - 1) + "_2_0", kRingRadius, kRingInternalDeg),
-           RoundaboutRole::Internal)
-          ->turn_direction = TurnDirection::Straight;
+      Lanelet* node = ring(sketch.arc(":" + prefix + std::to_string(k - 1) + "_2_0", kRingRadius, kRingInternalDeg),
+                           RoundaboutRole::Internal);
+      node->turn_direction = TurnDirection::Straight;
+      node->leaves_ring_at_end = true;  // its junction has an exit (as sumo/route_builder marks it)
     }
     ix.ring.push_back(sketch.size());
     ix.ring_lanes.push_back(sketch.size());

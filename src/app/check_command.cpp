@@ -1,0 +1,162 @@
+// `signalsim check PATH... --golden DIR`: CI regression. Runs each scenario (worker processes, like
+// `batch`) and compares its events.csv with DIR/<scenario file stem>.events.csv: the same events in
+// the same order (kind, from, to, source), each within --tolerance metres of s_front and one step
+// (or --time-tolerance) of time. A run error or a differing event is a regression (exit 1); with
+// --expectations a failed expectation is one too (else it is noted). --update rewrites the golden
+// files from the runs; --junit writes JUnit XML.
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+#include <memory>
+
+#include "app/batch_cli.hpp"
+#include "app/command.hpp"
+#include "app/golden.hpp"
+#include "app/run_outputs.hpp"
+#include "scenario/input_error.hpp"
+
+namespace signalsim::app {
+namespace fs = std::filesystem;
+namespace {
+
+struct CheckOptions {
+  std::vector<std::string> paths;
+  std::string golden_dir;
+  double tol_s = 0.5;
+  double tol_t = 0.0;  // 0: the scenario's step_length
+  bool update = false;
+  bool expectations = false;  // a failed expectation fails the check too
+  std::string junit;
+  BatchCliOptions batch;
+};
+
+std::string cell(const ResultRow& row, const std::string& column) {
+  const auto it = row.cells.find(column);
+  return it == row.cells.end() ? std::string() : it->second;
+}
+
+std::string format(const char* fmt, auto... args) {
+  char buf[512];
+  std::snprintf(buf, sizeof buf, fmt, args...);
+  return buf;
+}
+
+// Compares (or updates) one run; prints its verdict and returns its JUnit case.
+JUnitCase check_one(const RunSpec& run, const ResultRow* row, const CheckOptions& o, const std::string& out_dir) {
+  JUnitCase c;
+  c.name = fs::path(run.scenario).stem().string();
+  c.file = run.scenario;
+  const std::string golden = (fs::path(o.golden_dir) / (c.name + ".events.csv")).string();
+  auto verdict = [&](JUnitCase::Result result, const std::string& message, const std::string& details = "") {
+    c.result = result;
+    c.message = message;
+    c.details = details;
+    const char* tag = result == JUnitCase::Result::Passed ? "ok   " : result == JUnitCase::Result::Failed ? "FAIL " : "ERROR";
+    std::printf("%s %s: %s\n%s", tag, c.name.c_str(), message.c_str(), details.c_str());
+    return c;
+  };
+  if (!row) return verdict(JUnitCase::Result::Error, "the run did not finish");
+  c.time = std::atof(cell(*row, "wall_time").c_str());
+  if (cell(*row, "status") == "error") return verdict(JUnitCase::Result::Error, "run error: " + cell(*row, "error"));
+
+  const fs::path run_dir = fs::path(out_dir) / cell(*row, "run_dir");
+  const std::string events_path = (run_dir / "events.csv").string();
+  std::vector<TimelineEvent> events;
+  double step = 0.1;
+  try {
+    events = read_events_csv(events_path);
+    step = read_json_file((run_dir / "summary.json").string()).value("step_length", 0.1);
+  } catch (const std::exception& e) {
+    return verdict(JUnitCase::Result::Error, e.what());
+  }
+  const std::string failed_expectations =
+      cell(*row, "status") == "failed" ? "expectations failed: " + cell(*row, "failed_expectations") : "";
+  const std::string note = failed_expectations.empty() ? "" : " (note: " + failed_expectations + ")";
+  const auto expectations_verdict = o.expectations && !failed_expectations.empty() ? JUnitCase::Result::Failed
+                                                                                   : JUnitCase::Result::Passed;
+
+  if (o.update) {
+    fs::create_directories(o.golden_dir);
+    write_file_atomically(golden, read_text_file(events_path));
+    return verdict(expectations_verdict, format("updated %s (%zu events)", golden.c_str(), events.size()) + note);
+  }
+  if (!fs::is_regular_file(golden))
+    return verdict(JUnitCase::Result::Failed, "no golden file " + golden + " (create it with --update)");
+  std::vector<TimelineEvent> expected;
+  try {
+    expected = read_events_csv(golden);
+  } catch (const std::exception& e) {
+    return verdict(JUnitCase::Result::Error, e.what());
+  }
+  const double tol_t = o.tol_t > 0 ? o.tol_t : step;
+  const auto diff = compare_events(expected, events, o.tol_s, tol_t);
+  const std::size_t differences = count_differences(diff);
+  if (differences > 0) {
+    const std::string header = format("         %9s   %9s    event    (= same, ~ moved, - missing, + extra; tolerance %.3g m, %.3g s)\n",
+                                      "time", "s_front", o.tol_s, tol_t);
+    return verdict(JUnitCase::Result::Failed,
+                   format("%zu event difference%s against %s", differences, differences == 1 ? "" : "s",
+                          golden.c_str()) + note,
+                   header + format_diff(diff, "      "));
+  }
+  return verdict(expectations_verdict, format("%zu events match %s", events.size(), golden.c_str()) + note);
+}
+
+}  // namespace
+
+Command add_check_command(CLI::App& app) {
+  auto o = std::make_shared<CheckOptions>();
+  CLI::App* sub = app.add_subcommand("check", "CI regression: run scenarios and compare their events with golden files");
+  sub->add_option("paths", o->paths, "Scenario files or directories of them (*.yaml)")->required();
+  sub->add_option("--golden", o->golden_dir, "Directory of golden files <scenario file stem>.events.csv")->required();
+  sub->add_option("--tolerance", o->tol_s, "Largest |ds| of an event's s_front, metres")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
+  sub->add_option("--time-tolerance", o->tol_t, "Largest |dt| of an event's time, seconds (default: one step)")
+      ->check(CLI::NonNegativeNumber);
+  sub->add_flag("--update", o->update, "Rewrite the golden files from this run");
+  sub->add_flag("--expectations", o->expectations, "A failed expectation fails the check too (else it is a note)");
+  sub->add_option("--junit", o->junit, "Also write the results as JUnit XML to this file");
+  add_batch_options(sub, o->batch, "out/check", false);
+  return {sub, [o]() -> int {
+            try {
+              const std::vector<std::string> files = scenario_files(o->paths);
+              std::map<std::string, std::string> stems;
+              for (const std::string& f : files) {
+                const auto [it, fresh] = stems.emplace(fs::path(f).stem().string(), f);
+                if (!fresh)
+                  throw InputError(f, 0, "same golden name '" + it->first + "' as " + it->second + " (file names must differ)");
+              }
+              const std::vector<RunSpec> runs = suite_runs(files, {});
+              BatchSettings settings = to_settings(o->batch, "out/check", 300.0);
+              settings.quiet = settings.quiet || isatty(STDOUT_FILENO) != 1;  // the verdicts below say it all
+              const BatchResult result = run_batch(runs, settings);
+              if (result.interrupted) {
+                std::printf("%s\n", batch_summary(result, settings.out_dir).c_str());
+                return kExitInterrupted;
+              }
+              std::vector<JUnitCase> cases;
+              std::size_t failed = 0;
+              for (const RunSpec& run : runs) {
+                const auto row = result.rows.find(run.index);
+                cases.push_back(check_one(run, row == result.rows.end() ? nullptr : &row->second, *o, settings.out_dir));
+                failed += cases.back().result != JUnitCase::Result::Passed;
+              }
+              std::printf("check: %zu scenario%s, %zu passed, %zu failed%s\n", cases.size(), cases.size() == 1 ? "" : "s",
+                          cases.size() - failed, failed, o->update ? " (golden files updated)" : "");
+              if (!o->junit.empty()) {
+                if (const fs::path parent = fs::path(o->junit).parent_path(); !parent.empty())
+                  fs::create_directories(parent);
+                write_file_atomically(o->junit, junit_xml("signalsim check", cases, result.wall));
+              }
+              return failed > 0 ? kExitFailed : 0;
+            } catch (const std::exception& e) {
+              return report_bad_input(e.what());
+            }
+          }};
+}
+
+}  // namespace signalsim::app

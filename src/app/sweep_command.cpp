@@ -1,0 +1,58 @@
+// `signalsim sweep FILE`: a grid (and zipped lists) of runs over scenarios and `--set` values.
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+#include "app/batch_cli.hpp"
+#include "app/command.hpp"
+#include "app/plot_tool.hpp"
+#include "scenario/input_error.hpp"
+
+namespace signalsim::app {
+
+Command add_sweep_command(CLI::App& app) {
+  struct Options {
+    std::string file;
+    BatchCliOptions batch;
+    bool plot = false;
+    bool list = false;
+  };
+  auto o = std::make_shared<Options>();
+  CLI::App* sub = app.add_subcommand("sweep", "Run a sweep file: scenarios x grid x zipped values; results.csv");
+  sub->add_option("file", o->file, "Sweep file (YAML, see README 'Batch runs and sweeps')")->required();
+  add_batch_options(sub, o->batch, "the file's out:, else out/<sweep name>", true);
+  sub->add_flag("--plot", o->plot, "Draw the file's plot: (a heat map of a metric over two swept keys) with tools/plot");
+  sub->add_flag("--list", o->list, "Print the runs and exit without running them");
+  return {sub, [o]() -> int {
+            try {
+              const Sweep sweep = load_sweep(o->file);
+              std::vector<RunSpec> runs = expand_sweep(sweep);
+              check_sweep_runs(sweep, runs);
+              const std::string default_out = sweep.out.empty() ? "out/" + sweep.name : sweep.out;
+              BatchSettings settings = to_settings(o->batch, default_out, sweep.timeout.value_or(300.0));
+              settings.swept = swept_keys(sweep);
+              if (o->list) {
+                for (const RunSpec& run : runs) {
+                  std::printf("%4zu  %s", run.index, run.scenario.c_str());
+                  for (const auto& [key, value] : run.values) std::printf("  %s=%s", key.c_str(), value.c_str());
+                  std::printf("\n");
+                }
+                return 0;
+              }
+              const BatchResult result = run_batch(runs, settings);
+              if (!settings.quiet || result.interrupted) std::printf("%s\n", batch_summary(result, settings.out_dir).c_str());
+              if (o->plot && !result.interrupted) {
+                std::vector<std::string> args = {settings.out_dir};
+                if (!sweep.plot.metric.empty()) args.insert(args.end(), {"--metric", sweep.plot.metric});
+                if (!sweep.plot.x.empty()) args.insert(args.end(), {"--x", sweep.plot.x});
+                if (!sweep.plot.y.empty()) args.insert(args.end(), {"--y", sweep.plot.y});
+                run_plot_tool(args);
+              }
+              return result.exit_code();
+            } catch (const std::exception& e) {
+              return report_bad_input(e.what());
+            }
+          }};
+}
+
+}  // namespace signalsim::app

@@ -1,0 +1,1 @@
+"""Plotting helpers for tools/plot (run pictures and sweep heat maps)."""

@@ -1,0 +1,44 @@
+"""Command line of tools/plot: decides between a run directory and a sweep's results.csv."""
+import argparse
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+
+
+class InputError(Exception):
+    """Bad input: printed as 'tools/plot: <message>', exit code 2."""
+
+
+def main(argv):
+    parser = argparse.ArgumentParser(prog="tools/plot", description=(__doc__ or "").strip())
+    parser.add_argument("path", help="a run directory (timeline.csv ...) or a sweep directory / results.csv")
+    parser.add_argument("--out", help="where the PNGs go (default: PATH/plots)")
+    parser.add_argument("--metric", help="sweep: results.csv column to show (default: the first *.lead_distance)")
+    parser.add_argument("--x", help="sweep: swept column along x")
+    parser.add_argument("--y", help="sweep: swept column along y")
+    args = parser.parse_args(argv)
+    try:
+        path = args.path
+        if os.path.isfile(path) and path.endswith(".csv"):
+            from plotting import sweep_plots
+            out = args.out or os.path.join(os.path.dirname(path) or ".", "plots")
+            written = sweep_plots.plot_results(path, out, args.metric, args.x, args.y)
+        elif os.path.isfile(os.path.join(path, "results.csv")):
+            from plotting import sweep_plots
+            out = args.out or os.path.join(path, "plots")
+            written = sweep_plots.plot_results(os.path.join(path, "results.csv"), out, args.metric, args.x, args.y)
+        elif os.path.isfile(os.path.join(path, "summary.json")):
+            from plotting import run_plots
+            out = args.out or os.path.join(path, "plots")
+            written = run_plots.plot_run(path, out)
+        else:
+            raise InputError(f"{path}: neither a run directory (summary.json) nor a sweep (results.csv)")
+    except InputError as e:
+        print(f"tools/plot: {e}", file=sys.stderr)
+        return 2
+    for f in written:
+        print(f)
+    return 0
