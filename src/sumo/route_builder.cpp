@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "sumo/lane_plan.hpp"
+#include "sumo/turn_direction.hpp"
 #include "sumo/number_parsing.hpp"
 
 namespace signalsim::sumo {
@@ -18,22 +19,6 @@ constexpr int kMaxInternalChain = 16;
 
 std::string quoted(const std::string& id) { return "'" + id + "'"; }
 
-/// Connection `dir` -> Autoware turn_direction (spec SUMO §3).
-TurnDirection turn_direction_of(char dir, bool lefthand) {
-  switch (dir) {
-    case 'l':
-    case 'L': return TurnDirection::Left;
-    case 'r':
-    case 'R': return TurnDirection::Right;
-    case 's': return TurnDirection::Straight;
-    // A U-turn goes round to the driver's side: left in right-hand traffic, right in left-hand traffic.
-    case 't': return lefthand ? TurnDirection::Right : TurnDirection::Left;
-    // SUMO 1.15's netconvert writes U-turns of left-hand nets as 'T' (LinkDirection::TURN_LEFTHAND),
-    // a clockwise turn: right.
-    case 'T': return TurnDirection::Right;
-    default: return TurnDirection::None;  // 'i' (invalid) and anything unknown
-  }
-}
 
 /// Turn directions of the connections leaving `lane_id` that have an internal lane (spec SUMO §3),
 /// in file order, without repeats. For an internal lane, that is the next internal lane of its chain.

@@ -5,6 +5,7 @@
 #include <optional>
 #include <set>
 
+#include "turn_signal/first_active.hpp"
 #include "turn_signal/required_end.hpp"
 
 namespace signalsim {
@@ -146,13 +147,7 @@ TurnSignalInfo IntersectionRequests::update(const RouteMap& route, RouteMap::Win
     queue.push_back(info);
   }
 
-  // spec TSD §4.3 FIRST_ACTIVE: the last element is returned without an end check (§12.1.6).
-  while (!queue.empty()) {
-    if (queue.size() == 1) return queue.front();
-    if (queue.front().required_end - ego.s_base >= 0.0) return queue.front();
-    queue.pop_front();
-  }
-  return {};
+  return first_active(std::move(queue), ego);  // spec TSD §4.3
 }
 
 }  // namespace signalsim

@@ -1,5 +1,7 @@
 #include "turn_signal/roundabout_requests.hpp"
 
+#include "turn_signal/first_active.hpp"
+
 #include <algorithm>
 #include <deque>
 
@@ -22,16 +24,6 @@ bool in_roundabout(const Lanelet& l, const std::string& roundabout_id) {
   return l.roundabout_role != RoundaboutRole::None && l.roundabout_id == roundabout_id;
 }
 
-// spec TSD §4.3 FIRST_ACTIVE: the head while its required end (base_link-referenced) is not passed;
-// the last element is returned without an end check (§12.1.6).
-TurnSignalInfo first_active(std::deque<TurnSignalInfo> queue, const EgoOnRoute& ego) {
-  while (!queue.empty()) {
-    if (queue.size() == 1) return queue.front();
-    if (queue.front().required_end - ego.s_base >= 0.0) return queue.front();
-    queue.pop_front();
-  }
-  return {};
-}
 
 }  // namespace
 
