@@ -37,8 +37,8 @@ std::optional<double> ShiftLine::s_at_offset(double offset) const {
   const double lo = std::min(shift_start, shift_end);
   const double hi = std::max(shift_start, shift_end);
   if (offset < lo || offset > hi) return std::nullopt;
-  if (offset == shift_start) return s_start;
-  if (length() <= 0.0) return s_start;
+  if (offset == shift_start || length() <= 0.0) return s_start;
+  if (offset == shift_end) return s_end;  // the profile is flat there: invert the endpoint exactly
   // Solve B(u) = target by bisection: B is monotone, 60 halvings reach double precision.
   const double target = (offset - shift_start) / relative_shift();
   double a = 0.0;

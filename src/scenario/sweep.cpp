@@ -239,6 +239,11 @@ std::vector<RunSpec> expand_sweep(const Sweep& sweep) {
       for (const SweepAxis& a : group) options[i].emplace_back(a.key, a.values[i]);
     factors.push_back(std::move(options));
   }
+  double count = static_cast<double>(sweep.scenarios.size());
+  for (const auto& options : factors) count *= static_cast<double>(options.size());
+  if (count > 1e6)
+    throw InputError(sweep.path, sweep.grid_line, "the sweep has " + std::to_string(static_cast<long long>(count)) +
+                                                      " runs, more than 1000000");
   std::vector<RunSpec> runs;
   for (const std::string& scenario : sweep.scenarios) {
     std::vector<std::size_t> at(factors.size(), 0);
@@ -253,15 +258,18 @@ std::vector<RunSpec> expand_sweep(const Sweep& sweep) {
           run.set.push_back(set_item(key, value));
         }
       runs.push_back(std::move(run));
-      // Odometer: the last factor turns fastest.
+      // Odometer: the last factor turns fastest; done when the first one wraps around.
       std::size_t f = factors.size();
+      bool wrapped = true;
       while (f > 0) {
         --f;
-        if (++at[f] < factors[f].size()) break;
+        if (++at[f] < factors[f].size()) {
+          wrapped = false;
+          break;
+        }
         at[f] = 0;
-        if (f == 0) f = factors.size() + 1;  // wrapped around: done
       }
-      if (factors.empty() || f == factors.size() + 1) break;
+      if (wrapped) break;
     }
   }
   return runs;

@@ -80,7 +80,8 @@ std::vector<std::string> scenario_files(const std::vector<std::string>& paths, c
 /// The swept keys, grid first then zip, in file order.
 std::vector<std::string> swept_keys(const Sweep& sweep);
 
-/// Every run of the sweep (names left empty); see the file comment for the order.
+/// Every run of the sweep (names left empty); see the file comment for the order. Throws InputError
+/// above 1000000 runs.
 std::vector<RunSpec> expand_sweep(const Sweep& sweep);
 
 /// Loads every run's scenario with its overrides (no SUMO) and fills in its name. Throws InputError
