@@ -106,7 +106,7 @@ void read_summary(ResultRow& row, const RunSpec& run, const std::string& dir) {
     if (!text.empty()) row.cells.emplace(column, text);
 }
 
-ResultRow make_row(const RunSpec& run, const std::string& out_dir, const std::string& run_dir,
+ResultRow make_row(const RunSpec& run, const std::string& out_dir, const std::string& run_dir, double timeout,
                    const ProcessResult& result) {
   ResultRow row;
   row.run = run.index;
@@ -122,7 +122,7 @@ ResultRow make_row(const RunSpec& run, const std::string& out_dir, const std::st
     row.cells["error"] = what;
   };
   if (result.timed_out) {
-    error(format("timed out after %.0f s (worker killed)", result.wall));
+    error(format("timed out: still running after the %g s limit (worker killed)", timeout));
   } else if (!result.exited) {
     error(result.signal ? "worker killed by " + signal_name(result.signal) + (message.empty() ? "" : ": " + message)
                         : "worker failed: " + message);
@@ -262,7 +262,7 @@ BatchResult run_batch(const std::vector<RunSpec>& runs, const BatchSettings& set
       jobs, settings.jobs,
       [&](const ProcessJob& job, const ProcessResult& process) {
         const RunSpec& run = runs[job.id];
-        ResultRow row = make_row(run, settings.out_dir, run_dirs[job.id], process);
+        ResultRow row = make_row(run, settings.out_dir, run_dirs[job.id], settings.timeout, process);
         progress.finished(run, row);
         result.rows[job.id] = std::move(row);
         write_file_atomically(csv, results_csv(settings.swept, result.rows));

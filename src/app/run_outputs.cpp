@@ -34,6 +34,13 @@ Blinker parse_blinker(const std::string& text) {
   return Blinker::None;
 }
 
+template <typename Enum>
+Enum parse_enum(const std::string& text, Enum last, Enum fallback) {
+  for (int i = 0; i <= static_cast<int>(last); ++i)
+    if (to_string(static_cast<Enum>(i)) == text) return static_cast<Enum>(i);
+  return fallback;
+}
+
 RequestSource parse_source(const std::string& text) {
   for (int i = 0; i <= static_cast<int>(RequestSource::PullOver); ++i)
     if (to_string(static_cast<RequestSource>(i)) == text) return static_cast<RequestSource>(i);
@@ -97,7 +104,7 @@ std::vector<TimelineRow> read_timeline_csv(const std::string& path) {
   const auto col = [&](const char* name) { return header.count(name) ? header.at(name) : -1; };
   const int c_x = col("x"), c_y = col("y"), c_edge = col("edge"), c_lane = col("lane"), c_lat = col("lateral_offset"),
             c_source = col("blinker_source"), c_signals = col("sumo_signals"), c_tl = col("tl_id"),
-            c_state = col("tl_state");
+            c_state = col("tl_state"), c_decision = col("tl_decision"), c_zone = col("zone");
   std::vector<TimelineRow> rows;
   for (std::size_t r = 1; r < table.size(); ++r) {
     const auto& f = table[r];
@@ -119,6 +126,9 @@ std::vector<TimelineRow> read_timeline_csv(const std::string& path) {
     if (c_signals >= 0) row.sumo_signals = f[c_signals].empty() ? -1 : static_cast<int>(number(f[c_signals], path, r + 1));
     if (c_tl >= 0) row.tl_id = f[c_tl];
     if (c_state >= 0 && !f[c_state].empty()) row.tl_state = f[c_state][0];
+    if (c_decision >= 0)
+      row.tl_decision = parse_enum(f[c_decision], JudgeDecision::EmergencyStop, JudgeDecision::None);
+    if (c_zone >= 0) row.zone = parse_enum(f[c_zone], JudgeZone::Slow, JudgeZone::None);
     rows.push_back(std::move(row));
   }
   return rows;
@@ -145,6 +155,24 @@ nlohmann::ordered_json metrics_from_run_dir(const std::string& run_dir, const st
   if (summary.contains("counts")) {
     record.collisions = summary["counts"].value("collisions", 0);
     record.arrived = summary["counts"].value("arrived", false);
+  }
+  if (summary.contains("lights") && summary["lights"].is_object()) {
+    const auto& lights = summary["lights"];
+    if (lights.contains("stops"))
+      for (const auto& s : lights["stops"]) {
+        LightStop stop;
+        stop.tl_id = s.value("light", "");
+        stop.time = s.value("time", 0.0);
+        stop.stop_s = s.value("stop_s", 0.0);
+        stop.rest_s = s.value("rest_s", 0.0);
+        stop.error = s.value("error", 0.0);
+        stop.decision = parse_enum(s.value("decision", ""), JudgeDecision::EmergencyStop, JudgeDecision::Stop);
+        stop.worst_level = parse_enum(s.value("level", ""), StopLevel::Emergency, StopLevel::Normal);
+        record.stops.push_back(stop);
+      }
+    if (lights.contains("red_light_violations"))
+      for (const auto& v : lights["red_light_violations"])
+        record.red_violations.push_back({v.value("light", ""), v.value("time", 0.0), v.value("s_front", 0.0)});
   }
   return metrics_json(scenario, *route, record);
 }

@@ -1,6 +1,7 @@
 #include "scenario/metrics.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -115,7 +116,7 @@ SectionMetrics measure(const SignalSection& section, const RunRecord& record, co
   return m;
 }
 
-std::vector<LightMetrics> measure_lights(const RouteMap& route, const RunRecord& record, double stop_margin) {
+std::vector<LightMetrics> measure_lights(const RouteMap& route, const RunRecord& record) {
   const auto& rows = record.rows;
   std::vector<LightMetrics> out;
   std::size_t from_row = 0;  // rows after the previous light's stop line
@@ -125,19 +126,42 @@ std::vector<LightMetrics> measure_lights(const RouteMap& route, const RunRecord&
     m.id = l.traffic_light->tls_id;
     m.link_index = l.traffic_light->link_index;
     m.stop_line_s = round3(l.s_end() - l.stop_offset);
-    std::size_t k = from_row;
+    std::size_t k = from_row;  // the first row at or beyond the stop line
     while (k < rows.size() && rows[k].s_front < m.stop_line_s) ++k;
     m.reached = k < rows.size() && k > 0;
     if (m.reached && rows[k - 1].tl_id == m.id && rows[k - 1].tl_state != 0) {
       m.state_at_line = std::string(1, rows[k - 1].tl_state);
       m.red_light_violation = rows[k - 1].tl_state == 'r' || rows[k - 1].tl_state == 'u';
     }
+    // The judge on this approach: its most restrictive decision, the zone it was taken in (else the
+    // last zone the pass judge gave), whether it ordered an emergency stop.
+    const double t_from = from_row < rows.size() ? rows[from_row].time : 0.0;
+    const double t_to = k < rows.size() ? rows[k].time : std::numeric_limits<double>::infinity();
+    JudgeDecision worst = JudgeDecision::None;
+    JudgeZone decisive_zone = JudgeZone::None, last_zone = JudgeZone::None;
+    bool judged = false;
     for (std::size_t i = from_row; i < k && i < rows.size(); ++i) {
-      if (rows[i].speed < 0.05 && rows[i].s_front >= m.stop_line_s - 30.0) {
-        m.stop_position_error = round3(rows[i].s_front - (m.stop_line_s - stop_margin));
-        break;
+      if (rows[i].tl_id != m.id) continue;
+      judged = true;
+      if (rows[i].zone != JudgeZone::None) last_zone = rows[i].zone;
+      if (rows[i].tl_decision > worst) {
+        worst = rows[i].tl_decision;
+        decisive_zone = rows[i].zone;
       }
     }
+    if (judged && worst != JudgeDecision::None) {
+      m.decision = std::string(to_string(worst));
+      const JudgeZone zone = decisive_zone != JudgeZone::None ? decisive_zone : last_zone;
+      if (zone != JudgeZone::None) m.zone = std::string(to_string(zone));
+      m.emergency_stop = worst == JudgeDecision::EmergencyStop;
+    }
+    for (const LightStop& stop : record.stops)
+      if (stop.tl_id == m.id && stop.time >= t_from && stop.time <= t_to) {
+        m.stop_position_error = round3(stop.error);
+        break;
+      }
+    for (const RedLightViolation& v : record.red_violations)
+      if (v.tl_id == m.id && v.time >= t_from && v.time <= t_to) m.red_light_violation = true;
     from_row = std::min(k, rows.size());
     out.push_back(std::move(m));
   }
@@ -262,7 +286,7 @@ RunMetrics compute_metrics(const Scenario& scenario, const RouteMap& route, cons
     window_from = window_to;
     m.missed_signals += m.sections.back().missed.value_or(false);
   }
-  m.lights = measure_lights(route, record, scenario.params.number("stop_margin"));
+  m.lights = measure_lights(route, record);
   for (const LightMetrics& l : m.lights) m.red_light_violations += l.red_light_violation.value_or(false);
   return m;
 }

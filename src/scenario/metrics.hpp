@@ -22,11 +22,16 @@
 //               missed = the blinker was not on when the front reached s_start (within that step)
 //             flickers = blinker states shorter than 1 s (changes on both sides) that began between
 //               the previous section's end and this one's end (front bumper, plus base_link_to_front)
-//   lights    every signalised approach on the route (stop line = approach lane end - stopOffset):
-//             the ego link's state when the front crossed the stop line, red-light violation
-//             (crossed at r/u), stop position error (front at rest within 30 m before the line,
-//             minus the stop point). decision, zone and emergency_stop stay null until the
-//             traffic-light judge records them.
+//   lights    every signalised approach on the route (stop line = approach lane end - stopOffset),
+//             from the rows between the previous light's stop line and this one's:
+//               state_at_line        the ego link's state as the front crossed the stop line
+//               red_light_violation  crossed at r/u (or the run recorded a violation there)
+//               decision             the judge's most restrictive decision on the approach
+//                                    (emergency_stop > stop > pass); null when it never engaged
+//               zone                 the pass judge's zone when that decision was first taken, else the
+//                                    last zone it gave (e.g. pass_through_yellow)
+//               emergency_stop       the decision was emergency_stop
+//               stop_position_error  the recorded stop at this light: rest position - stop point
 //   run       max deceleration, max jerk (from the timeline's accel), collisions, blinker events,
 //             flickers, missed signals, red-light violations.
 //
@@ -78,9 +83,9 @@ struct LightMetrics {
   std::string state_at_line;               ///< link state (r, y, g, G, ...) as the front crossed; "" unknown
   std::optional<bool> red_light_violation; ///< crossed while the link showed r or u
   std::optional<double> stop_position_error;  ///< [m] rest position minus stop point; > 0 beyond it
-  std::optional<std::string> decision;     ///< the judge's decision (not recorded yet)
-  std::optional<std::string> zone;         ///< dilemma/optional zone (not recorded yet)
-  std::optional<bool> emergency_stop;      ///< (not recorded yet)
+  std::optional<std::string> decision;     ///< most restrictive judge decision: pass, stop, emergency_stop
+  std::optional<std::string> zone;         ///< stoppable, optional_zone, dilemma_zone, pass_through_yellow, slow
+  std::optional<bool> emergency_stop;      ///< the judge ordered an emergency stop here
 };
 
 struct RunMetrics {

@@ -7,6 +7,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "scenario/metrics.hpp"
+
 namespace signalsim {
 namespace fs = std::filesystem;
 namespace {
@@ -142,6 +144,7 @@ void write_run_outputs(const std::string& dir, const Scenario& scenario, const s
   for (const TimelineEvent& e : record.events) emergency += e.kind == "light" && e.to == "emergency_stop";
   lights["emergency_stops"] = emergency;
   summary["lights"] = lights;
+  summary["metrics"] = metrics_json(scenario, plan.map, record);
   nlohmann::ordered_json expectations = nlohmann::ordered_json::array();
   for (const ExpectationResult& r : results)
     expectations.push_back({{"expectation", r.description}, {"passed", r.passed}, {"detail", r.detail}});

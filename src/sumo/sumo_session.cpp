@@ -67,6 +67,33 @@ bool contains(const std::vector<std::string>& ids, const std::string& id) {
   return std::find(ids.begin(), ids.end(), id) != ids.end();
 }
 
+// The index of `lane_id` among the lanes of `edge_id` (SUMO names them <edge>_<index>), or -1.
+int lane_index_on(const std::string& edge_id, const std::string& lane_id) {
+  const int lanes = libsumo::Edge::getLaneNumber(edge_id);
+  for (int k = 0; k < lanes; ++k)
+    if (edge_id + "_" + std::to_string(k) == lane_id) return k;
+  return -1;
+}
+
+// Signed lateral distance [m, left positive] from the centre of lane `from` to the centre of lane
+// `to` on one edge (index 0 is the rightmost lane): half of both widths plus the lanes between.
+double centre_distance(const std::string& edge_id, int from, int to) {
+  if (from == to) return 0.0;
+  const int lo = std::min(from, to), hi = std::max(from, to);
+  const auto width = [&](int k) { return libsumo::Lane::getWidth(edge_id + "_" + std::to_string(k)); };
+  double d = 0.5 * (width(lo) + width(hi));
+  for (int k = lo + 1; k < hi; ++k) d += width(k);
+  return to > from ? d : -d;
+}
+
+// Whether vehicles of class `vclass` may use `lane_id` (SUMO keeps a vehicle off lanes it may not use,
+// also sideways in the sublane model: a sidewalk is a road border).
+bool permits(const std::string& lane_id, const std::string& vclass) {
+  if (contains(libsumo::Lane::getDisallowed(lane_id), vclass)) return false;
+  const auto allowed = libsumo::Lane::getAllowed(lane_id);  // empty: every class
+  return allowed.empty() || contains(allowed, vclass);
+}
+
 }  // namespace
 
 SumoSession::SumoSession(const SessionConfig& config) {
@@ -79,6 +106,8 @@ SumoSession::SumoSession(const SessionConfig& config) {
     for (const auto& a : config.additional) joined += (joined.empty() ? "" : ",") + a;
     args.insert(args.end(), {"-a", joined});
   }
+  lateral_resolution_ = config.lateral_resolution;
+  if (lateral_resolution_ > 0.0) args.insert(args.end(), {"--lateral-resolution", number(lateral_resolution_)});
   {
     StderrCapture capture;
     try {
@@ -98,8 +127,12 @@ SumoSession::SumoSession(const SessionConfig& config) {
     libsumo::VehicleType::setDecel(kEgoType, config.decel);
     libsumo::VehicleType::setEmergencyDecel(kEgoType, config.emergency_decel);
     libsumo::VehicleType::setImperfection(kEgoType, 0.0);  // deterministic driving: no dawdling
+    // Sublane model: lateral speed and acceleration high enough that one changeSublane per step
+    // lands exactly on the commanded offset (spec SUMO §4); the plan itself keeps them realistic.
+    if (lateral_resolution_ > 0.0) libsumo::VehicleType::setMaxSpeedLat(kEgoType, 10.0);
     libsumo::Vehicle::add(kEgo, kEgoRoute, kEgoType, "0", std::to_string(config.depart_lane),
                           number(config.depart_pos), number(config.depart_speed));
+    if (lateral_resolution_ > 0.0) libsumo::Vehicle::setParameter(kEgo, "laneChangeModel.lcAccelLat", "20");
     // Wait for the insertion (the lane may be blocked for a while).
     for (int i = 0; i < 600; ++i) {
       libsumo::Simulation::step();
@@ -172,6 +205,53 @@ void SumoSession::command(int signal_mask, double speed) {
     libsumo::Vehicle::setSpeed(kEgo, speed);
   } catch (const libsumo::TraCIException& e) {
     throw SumoError(std::string("SUMO refused a command for the ego: ") + e.what());
+  }
+}
+
+double SumoSession::lateral_offset_from(const std::string& reference_lane_id) const {
+  try {
+    const std::string reference_edge = libsumo::Lane::getEdgeID(reference_lane_id);
+    const double in_lane = libsumo::Vehicle::getLateralLanePosition(kEgo);
+    if (libsumo::Vehicle::getRoadID(kEgo) != reference_edge) return in_lane;  // documented fallback
+    const int reference_index = lane_index_on(reference_edge, reference_lane_id);
+    const int ego_index = libsumo::Vehicle::getLaneIndex(kEgo);
+    if (reference_index < 0 || ego_index < 0) return in_lane;
+    return in_lane + centre_distance(reference_edge, reference_index, ego_index);
+  } catch (const libsumo::TraCIException& e) {
+    throw SumoError("cannot measure the ego's offset from lane '" + reference_lane_id + "': " + e.what());
+  }
+}
+
+void SumoSession::command_lateral_offset(double target_offset_next_step, const std::string& reference_lane_id) {
+  if (lateral_resolution_ <= 0.0)
+    throw SumoError("lateral offsets can only be commanded with SUMO's sublane model: set the session's "
+                    "lateral_resolution > 0 (--lateral-resolution)");
+  try {
+    const std::string reference_edge = libsumo::Lane::getEdgeID(reference_lane_id);
+    const std::string ego_edge = libsumo::Vehicle::getRoadID(kEgo);
+    if (ego_edge != reference_edge)
+      throw SumoError("cannot command a lateral offset from lane '" + reference_lane_id + "': the ego is on '" +
+                      ego_edge + "', not on that lane's edge '" + reference_edge + "'");
+    // Keep the target on the lanes the ego may use around its own (the road border): SUMO refuses a
+    // move past it and leaves the ego where it was, short of the border, instead of clamping.
+    const int reference_index = lane_index_on(reference_edge, reference_lane_id);
+    const int ego_index = libsumo::Vehicle::getLaneIndex(kEgo);
+    const int lanes = libsumo::Edge::getLaneNumber(reference_edge);
+    const std::string vclass = libsumo::Vehicle::getVehicleClass(kEgo);
+    const auto lane = [&](int k) { return reference_edge + "_" + std::to_string(k); };
+    int lo = ego_index, hi = ego_index;
+    while (lo > 0 && permits(lane(lo - 1), vclass)) --lo;
+    while (hi + 1 < lanes && permits(lane(hi + 1), vclass)) ++hi;
+    const double half_width = 0.5 * libsumo::Vehicle::getWidth(kEgo);
+    const double lowest =
+        centre_distance(reference_edge, reference_index, lo) - 0.5 * libsumo::Lane::getWidth(lane(lo)) + half_width;
+    const double highest =
+        centre_distance(reference_edge, reference_index, hi) + 0.5 * libsumo::Lane::getWidth(lane(hi)) - half_width;
+    double target = target_offset_next_step;
+    if (lowest <= highest) target = std::clamp(target, lowest, highest);
+    libsumo::Vehicle::changeSublane(kEgo, target - lateral_offset_from(reference_lane_id));
+  } catch (const libsumo::TraCIException& e) {
+    throw SumoError("SUMO refused a lateral offset from lane '" + reference_lane_id + "': " + e.what());
   }
 }
 

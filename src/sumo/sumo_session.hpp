@@ -35,6 +35,11 @@ struct SessionConfig {
   double decel = 4.5;              ///< vehicle type decel: the most SUMO brakes with speed-mode bit 2
   double emergency_decel = 9.0;
   bool keep_planned_lanes = true;  ///< switch SUMO's own lane changes off for the ego
+  /// Sublane width [m] for SUMO's sublane model (`--lateral-resolution`). 0 = SUMO's default lane
+  /// model (lane changes jump, no lateral motion inside a lane). > 0 also makes the ego's lateral
+  /// dynamics fast enough to follow command_lateral_offset() exactly: vehicle-type maxSpeedLat
+  /// 10 m/s and the vehicle parameter laneChangeModel.lcAccelLat 20 m/s^2 (spec SUMO §4).
+  double lateral_resolution = 0.0;
 };
 
 /// The ego as SUMO reports it after a step.
@@ -70,6 +75,33 @@ class SumoSession {
   /// speed (held until changed).
   void command(int signal_mask, double speed);
 
+  /// The ego's lateral offset [m, left positive] from the centre line of `reference_lane_id`, a
+  /// lane of the edge the ego is on: its offset inside its own lane (getLateralLanePosition) plus
+  /// the distance between the two lane centres (half widths of both lanes plus the full widths of
+  /// the lanes between; lanes of an edge may differ in width). Continuous while the ego crosses a
+  /// lane boundary, although SUMO switches the ego's lane when its centre crosses the boundary.
+  /// When the ego is on another edge than the reference lane's (the next edge, or an internal
+  /// junction lane while the reference is a normal lane), the reference lane says nothing about it:
+  /// this returns the plain getLateralLanePosition (offset from the centre of whatever lane the ego
+  /// is on). A reference lane of an internal edge works like any other while the ego is on that
+  /// internal edge. Throws SumoError for an unknown lane.
+  double lateral_offset_from(const std::string& reference_lane_id) const;
+
+  /// Moves the ego sideways (SUMO changeSublane) so that after the next step its offset from the
+  /// centre of `reference_lane_id` is `target_offset_next_step` [m, left positive]. Call it every
+  /// step while a lateral plan is driven (the plan's offset at the s the ego will have after the
+  /// step). It moves the ego across lane boundaries too (a lane change). The ego follows exactly as
+  /// long as the plan stays within maxSpeedLat 10 m/s and lcAccelLat 20 m/s^2 (SessionConfig::
+  /// lateral_resolution). When the calls stop, the ego kept its offset in our SUMO 1.15 runs (alone
+  /// on the road, even through a junction onto the next edge), while spec SUMO §4 reports a drift
+  /// back to the lane centre: rely on neither, command the offset you want. Needs the sublane model
+  /// (SessionConfig::lateral_resolution > 0) and the ego on the reference lane's edge; throws
+  /// SumoError otherwise. The target is clamped to the road border: the ego's whole width stays on
+  /// the run of lanes around its own that its vehicle class may use (a sidewalk or any lane that
+  /// disallows it is a border, like the outside of the edge). Unclamped, SUMO would refuse a move past
+  /// the border and leave the ego short of it.
+  void command_lateral_offset(double target_offset_next_step, const std::string& reference_lane_id);
+
   /// Live state of a light: one character per link index (spec SUMO §2).
   std::string light_state(const std::string& tls_id) const;
 
@@ -90,6 +122,7 @@ class SumoSession {
  private:
   int ego_collisions_ = 0;
   bool emergency_braking_ = false;
+  double lateral_resolution_ = 0.0;
 };
 
 }  // namespace signalsim::sumo

@@ -3,7 +3,11 @@ import argparse
 import os
 import sys
 
-import matplotlib
+try:
+    import matplotlib
+except ImportError:  # tools/plot runs /usr/bin/python3: Debian's python3-matplotlib
+    print("tools/plot: matplotlib is missing (Debian 12: apt-get install python3-matplotlib)", file=sys.stderr)
+    sys.exit(2)
 
 matplotlib.use("Agg")
 

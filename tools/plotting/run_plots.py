@@ -114,10 +114,9 @@ def blinker_plot(timeline, summary, metrics, path):
         x0, x1 = s[i], span_end(s, j)
         ax.barh(1.0, x1 - x0, left=x0, height=track_h, color=BLINKER_COLORS.get(blinker, "#777777"), edgecolor="black",
                 lw=0.5)
-        ax.text(x0 + 1, 1.0, f"{blinker} ({source})", va="center", ha="left", fontsize=7.5, color="white",
-                clip_on=True)
         ax.plot([x0], [1.0 + track_h / 2 + 0.05], marker="v", color="black", ms=4)
-        ax.text(x0, 1.0 + track_h / 2 + 0.1, f"{s[i]:.1f}", fontsize=6.5, ha="center", va="bottom")
+        ax.text(x0, 1.0 + track_h / 2 + 0.1, f"{s[i]:.1f} m: {blinker} ({source})", fontsize=7, ha="left",
+                va="bottom")
         if j + 1 < len(pairs) and pairs[j + 1][0] == "none":
             ax.text(x1, 1.0 - track_h / 2 - 0.05, f"off {x1:.1f}", fontsize=6.5, ha="center", va="top")
 

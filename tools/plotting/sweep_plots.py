@@ -61,6 +61,11 @@ def plot_results(csv_path, out, metric, x, y):
 
     scenarios = ordered_values([r["scenario"] for r in rows])
     panels = scenarios if "scenario" not in (x, y) and len(scenarios) > 1 else [None]
+    if panels != [None]:  # only the scenarios that have the metric (e.g. a roundabout exit)
+        having = [p for p in panels if any(r["scenario"] == p and number(r.get(metric)) is not None for r in rows)]
+        panels = having or panels
+        if len(panels) == 1:
+            rows = [r for r in rows if r["scenario"] == panels[0]]
     xs = ordered_values([r[x] for r in rows])
     ys = ordered_values([r[y] for r in rows]) if y else [""]
     averaged = [c for c in swept if c not in (x, y)]
@@ -72,17 +77,9 @@ def plot_results(csv_path, out, metric, x, y):
     fig_h = min(20, max(3.2, prow * (len(ys) * cell_h + 1.9) + 0.8))
     fig, axes = plt.subplots(prow, cols, figsize=(fig_w, fig_h), squeeze=False)
 
-    all_values = [number(r.get(metric)) for r in rows]
-    finite = [v for v in all_values if v is not None]
-    vmin, vmax = (min(finite), max(finite)) if finite else (0.0, 1.0)
-    if vmin == vmax:
-        vmin, vmax = vmin - 1, vmax + 1
-    cmap = plt.get_cmap("viridis").copy()
-    cmap.set_bad("#e0e0e0")
-    image = None
-    for k, panel in enumerate(panels):
-        ax = axes[k // cols][k % cols]
-        grid = np.full((len(ys), len(xs)), np.nan)
+    # Cell means per panel first: the colour scale spans what is shown.
+    grids = []
+    for panel in panels:
         counts = np.zeros((len(ys), len(xs)), dtype=int)
         errors = np.zeros((len(ys), len(xs)), dtype=int)
         sums = np.zeros((len(ys), len(xs)))
@@ -96,8 +93,19 @@ def plot_results(csv_path, out, metric, x, y):
             if v is not None:
                 sums[i, j] += v
                 counts[i, j] += 1
+        grid = np.full((len(ys), len(xs)), np.nan)
         mask = counts > 0
         grid[mask] = sums[mask] / counts[mask]
+        grids.append((grid, counts, errors))
+    finite = [v for grid, _, _ in grids for v in grid[~np.isnan(grid)]]
+    vmin, vmax = (float(min(finite)), float(max(finite))) if finite else (0.0, 1.0)
+    if vmin == vmax:
+        vmin, vmax = vmin - 1, vmax + 1
+    cmap = plt.get_cmap("viridis").copy()
+    cmap.set_bad("#e0e0e0")
+    image = None
+    for k, (panel, (grid, counts, errors)) in enumerate(zip(panels, grids)):
+        ax = axes[k // cols][k % cols]
         image = ax.imshow(np.ma.masked_invalid(grid), cmap=cmap, vmin=vmin, vmax=vmax, aspect="auto")
         for i in range(len(ys)):
             for j in range(len(xs)):
@@ -112,9 +120,9 @@ def plot_results(csv_path, out, metric, x, y):
                 else:
                     ax.text(j, i, "error" if errors[i, j] else "–", ha="center", va="center", fontsize=8,
                             color="#b00000" if errors[i, j] else "#555555")
+        wide = max(len(v) for v in xs) > 6
         ax.set_xticks(range(len(xs)))
-        ax.set_xticklabels(xs, rotation=30 if max(len(v) for v in xs) > 6 else 0, ha="right" if max(
-            len(v) for v in xs) > 6 else "center", fontsize=8)
+        ax.set_xticklabels(xs, rotation=30 if wide else 0, ha="right" if wide else "center", fontsize=8)
         ax.set_yticks(range(len(ys)))
         ax.set_yticklabels(ys, fontsize=8)
         ax.set_xlabel(x)
@@ -124,11 +132,12 @@ def plot_results(csv_path, out, metric, x, y):
             ax.set_title(panel, fontsize=9)
     for k in range(len(panels), prow * cols):
         axes[k // cols][k % cols].axis("off")
-    fig.colorbar(image, ax=axes.ravel().tolist(), shrink=0.9, label=metric)
     title = f"{metric} by {y} and {x}" if y else f"{metric} by {x}"
     sub = os.path.basename(os.path.dirname(os.path.abspath(csv_path)))
-    note = f"; mean over {', '.join(averaged)}" if averaged else ""
-    fig.suptitle(f"{title}  ({sub}{note}; grey: no value)", fontsize=10)
+    note = f"\nmean over {', '.join(averaged)}; " if averaged else "  ("
+    fig.suptitle(f"{title}{note}{sub}; grey: no value" + ("" if averaged else ")"), fontsize=10)
+    fig.subplots_adjust(top=1 - (0.75 if averaged else 0.55) / fig_h, hspace=0.45)
+    fig.colorbar(image, ax=axes.ravel().tolist(), shrink=0.9, label=metric)
     os.makedirs(out, exist_ok=True)
     name = re.sub(r"[^A-Za-z0-9_.-]+", "_", f"{metric}_by_{y}_{x}" if y else f"{metric}_by_{x}") + ".png"
     path = os.path.join(out, name)

@@ -1,0 +1,73 @@
+// signalsim check's event comparison: tolerance, moved/missing/extra events, JUnit XML.
+#include <gtest/gtest.h>
+
+#include "app/golden.hpp"
+
+namespace signalsim::app {
+namespace {
+
+TimelineEvent ev(double t, double s, const std::string& from, const std::string& to,
+                 const std::string& source = "intersection") {
+  return {t, s, "blinker", from, to, source};
+}
+
+std::vector<EventDiff::Op> ops(const std::vector<EventDiff>& diff) {
+  std::vector<EventDiff::Op> out;
+  for (const auto& d : diff) out.push_back(d.op);
+  return out;
+}
+
+using Op = EventDiff::Op;
+
+const std::vector<TimelineEvent> golden = {ev(10.0, 122.331, "none", "left"), ev(17.9, 205.716, "left", "right"),
+                                           ev(24.9, 260.867, "right", "none", "none")};
+
+TEST(GoldenCompare, WithinToleranceIsTheSame) {
+  auto run = golden;
+  run[0].s_front += 0.5;  // exactly the tolerance
+  run[1].time += 0.1;     // one step
+  const auto diff = compare_events(golden, run, 0.5, 0.1);
+  EXPECT_EQ(ops(diff), (std::vector<Op>{Op::Same, Op::Same, Op::Same}));
+  EXPECT_EQ(count_differences(diff), 0u);
+}
+
+TEST(GoldenCompare, ShiftedMissingAndExtraEvents) {
+  auto run = golden;
+  run[1].s_front += 2.0;
+  EXPECT_EQ(ops(compare_events(golden, run, 0.5, 0.1)), (std::vector<Op>{Op::Same, Op::Moved, Op::Same}));
+  run = golden;
+  run[0].time += 0.2;
+  EXPECT_EQ(ops(compare_events(golden, run, 0.5, 0.1)), (std::vector<Op>{Op::Moved, Op::Same, Op::Same}));
+
+  run = {golden[0], golden[2]};
+  EXPECT_EQ(ops(compare_events(golden, run, 0.5, 0.1)), (std::vector<Op>{Op::Same, Op::Missing, Op::Same}));
+  run = {golden[0], ev(15.0, 180.0, "left", "hazard"), golden[1], golden[2]};
+  const auto diff = compare_events(golden, run, 0.5, 0.1);
+  EXPECT_EQ(ops(diff), (std::vector<Op>{Op::Same, Op::Extra, Op::Same, Op::Same}));
+  const std::string text = format_diff(diff, "");
+  EXPECT_NE(text.find("+     15.000 s   180.000 m  blinker left -> hazard (intersection)   not in the golden file"),
+            std::string::npos);
+  // Another source is another event.
+  run = golden;
+  run[0].source = "lane_change";
+  EXPECT_EQ(count_differences(compare_events(golden, run, 0.5, 0.1)), 2u);
+}
+
+TEST(GoldenCompare, JUnitXmlCountsAndEscapes) {
+  std::vector<JUnitCase> cases(3);
+  cases[0].name = "a";
+  cases[1].name = "b<&>";
+  cases[1].result = JUnitCase::Result::Failed;
+  cases[1].message = "1 event \"differs\"";
+  cases[1].details = "left -> right";
+  cases[2].name = "c";
+  cases[2].result = JUnitCase::Result::Error;
+  const std::string xml = junit_xml("signalsim check", cases, 1.5);
+  EXPECT_NE(xml.find(R"(tests="3" failures="1" errors="1" time="1.500")"), std::string::npos);
+  EXPECT_NE(xml.find(R"(name="b&lt;&amp;&gt;")"), std::string::npos);
+  EXPECT_NE(xml.find(R"(<failure message="1 event &quot;differs&quot;">left -&gt; right</failure>)"), std::string::npos);
+  EXPECT_NE(xml.find("<error"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace signalsim::app
