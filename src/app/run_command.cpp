@@ -27,6 +27,16 @@ struct RunOptions {
   bool plot = false;  ///< draw the run's pictures with tools/plot afterwards
 };
 
+// Every exit-2 path: the output directory must not keep a previous run's files that could pass for
+// this run's, so they are replaced by a summary with status "error" and the message.
+int fail(const RunOptions& options, const std::optional<Scenario>& scenario, const std::string& message) {
+  try {
+    write_error_summary(options.out_dir, scenario ? &*scenario : nullptr, message);
+  } catch (const std::exception&) {  // an unwritable directory: the message below is what matters
+  }
+  return report_bad_input(message);
+}
+
 int run(const RunOptions& options) {
   std::optional<Scenario> scenario;
   try {
@@ -53,18 +63,13 @@ int run(const RunOptions& options) {
     if (options.plot) run_plot_tool({options.out_dir});  // a failed plot is reported, the run's verdict stands
     return all ? 0 : kExitFailed;
   } catch (const InputError& e) {
-    return report_bad_input(e.what());
+    return fail(options, scenario, e.what());
   } catch (const sumo::NetError& e) {
-    return report_bad_input(e.what());
+    return fail(options, scenario, e.what());
   } catch (const sumo::SumoError& e) {
-    const std::string message = options.scenario_path + ": " + e.what();
-    try {
-      write_error_summary(options.out_dir, scenario ? &*scenario : nullptr, message);
-    } catch (const std::exception&) {  // the message below is what matters
-    }
-    return report_bad_input(message);
+    return fail(options, scenario, options.scenario_path + ": " + e.what());
   } catch (const std::exception& e) {
-    return report_bad_input(options.scenario_path + ": " + e.what());
+    return fail(options, scenario, options.scenario_path + ": " + e.what());
   }
 }
 

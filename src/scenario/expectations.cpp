@@ -82,6 +82,7 @@ ExpectationResult check(const ExpectBlinkerNever& e, const RouteMap&, const RunR
   for (const TimelineRow& row : record.rows)
     if (row.blinker == e.blinker) return {"", false, "blinker " + std::string(to_string(row.blinker)) + " at " + at(row)};
   if (record.rows.empty()) return {"", false, "the run recorded no step"};
+  if (!record.arrived) return {"", false, "the run ended before the ego arrived: the rest of the route is unchecked"};
   return {"", true, std::to_string(record.rows.size()) + " steps checked"};
 }
 
@@ -132,6 +133,8 @@ ExpectationResult check(const ExpectEmergencyStopAtLight& e, const RouteMap&, co
 }
 
 ExpectationResult check(const ExpectNeverRunsRed&, const RouteMap&, const RunRecord& record) {
+  if (record.red_violations.empty() && !record.arrived)
+    return {"", false, "the run ended before the ego arrived: later stop lines are unchecked"};
   if (record.red_violations.empty()) return {"", true, "no stop line crossed on red"};
   const RedLightViolation& v = record.red_violations.front();
   std::ostringstream out;

@@ -1,46 +1,73 @@
 #include "scenario/light_stage.hpp"
 
 namespace signalsim {
+namespace {
+
+constexpr double kDeadLine = -2.0;  // [m] spec TLJ §1.2 step 3.1: past this the light is behind
+
+// Each light's perception draws from its own seeded streams, so a capture of one light is never
+// delivered for another and adding a light does not change the draws of the others.
+PerceptionModelParameters perception_for(PerceptionModelParameters p, std::size_t index) {
+  p.seed ^= 0x9E3779B97F4A7C15ULL * (index + 1);
+  return p;
+}
+
+}  // namespace
 
 TrafficLightStage::TrafficLightStage(std::vector<sumo::ApproachLight> lights, const TrafficLightJudgeParameters& judge,
                                      const PerceptionModelParameters& perception, double horizon)
-    : lights_(std::move(lights)), judge_params_(judge), perception_(perception), horizon_(horizon) {}
+    : judge_params_(judge), horizon_(horizon) {
+  for (std::size_t i = 0; i < lights.size(); ++i)
+    lights_.push_back({std::move(lights[i]), PerceptionModel(perception_for(perception, i)), std::nullopt, false});
+}
 
-LightStep TrafficLightStage::step(double now, double s_front, double speed, double accel, const std::string& state) {
-  LightStep out;
-  const sumo::ApproachLight* light = current();
-  if (!light) return out;
-  out.light = light;
-  out.own_state = light->link_index >= 0 && static_cast<std::size_t>(light->link_index) < state.size()
-                      ? state[static_cast<std::size_t>(light->link_index)]
-                      : '?';
-  out.front_to_stop_line = light->s_stop_line - s_front;
-  if (out.front_to_stop_line > horizon_) return out;  // not on the path window yet
+const sumo::ApproachLight* TrafficLightStage::next_light() const {
+  for (std::size_t i = first_; i < lights_.size(); ++i)
+    if (!lights_[i].dropped) return &lights_[i].light;
+  return nullptr;
+}
 
-  // spec SUMO §3: an 'o'/'O' link is not regulating: the judge stays out, SUMO's right of way applies.
-  const auto truth = sumo::signal_elements(state, *light);
-  if (!truth) return out;
-  // Perception: what a camera delivers of the true state (spec TLJ Decisions: perception model).
-  const auto observation = perception_.observe(*truth, out.front_to_stop_line, now);
-  if (observation) out.observed = sumo::describe_elements(observation->elements);
-
-  if (!judge_) judge_.emplace(judge_params_);
-  TrafficLightJudgeInput in;
-  in.now = now;
-  in.distance_to_stop_point = distance_to_stop_point(out.front_to_stop_line, judge_params_.stop_margin);
-  in.velocity = speed;
-  in.acceleration = accel;
-  in.observation = observation;
-  in.is_vehicle_stopped = is_vehicle_stopped(speed);
-  in.turn_direction = sumo::judge_turn_direction(light->direction);
-  in.is_turn_lane = light->direction == TurnDirection::Left || light->direction == TurnDirection::Right;
-  in.has_static_arrow = light->has_arrow;
-  out.result = judge_->step(in);
-  out.judged = true;
-  if (out.result.state == JudgeState::GoOut) {  // past the stop line: on to the next light
-    judge_.reset();
-    ++next_;
+std::vector<LightStep> TrafficLightStage::step(double now, double s_front, double speed, double accel,
+                                               const std::function<std::string(const std::string&)>& state_of) {
+  std::vector<LightStep> out;
+  for (std::size_t i = first_; i < lights_.size(); ++i) {
+    Tracked& t = lights_[i];
+    if (t.dropped) continue;
+    const double front_to_line = t.light.s_stop_line - s_front;
+    if (front_to_line > horizon_) break;  // route order: the rest are further ahead
+    LightStep step;
+    step.light = &t.light;
+    step.front_to_stop_line = front_to_line;
+    const std::string state = state_of(t.light.tls_id);
+    step.own_state = t.light.link_index >= 0 && static_cast<std::size_t>(t.light.link_index) < state.size()
+                         ? state[static_cast<std::size_t>(t.light.link_index)]
+                         : '?';
+    // spec SUMO §3: an 'o'/'O' link is not regulating: no judge, SUMO's right of way applies.
+    if (const auto truth = sumo::signal_elements(state, t.light)) {
+      const auto observation = t.perception.observe(*truth, front_to_line, now);
+      if (observation) step.observed = sumo::describe_elements(observation->elements);
+      if (!t.judge) t.judge.emplace(judge_params_);
+      TrafficLightJudgeInput in;
+      in.now = now;
+      in.distance_to_stop_point = distance_to_stop_point(front_to_line, judge_params_.stop_margin);
+      in.velocity = speed;
+      in.acceleration = accel;
+      in.observation = observation;
+      in.is_vehicle_stopped = is_vehicle_stopped(speed);
+      in.turn_direction = sumo::judge_turn_direction(t.light.direction);
+      in.is_turn_lane = t.light.direction == TurnDirection::Left || t.light.direction == TurnDirection::Right;
+      in.has_static_arrow = t.light.has_arrow;
+      step.result = t.judge->step(in);
+      step.judged = true;
+    }
+    // Behind the dead line (GO_OUT, or an unregulated light) the light is done.
+    if ((step.judged && step.result.state == JudgeState::GoOut) || front_to_line < kDeadLine) {
+      t.dropped = true;
+      t.judge.reset();
+    }
+    out.push_back(std::move(step));
   }
+  while (first_ < lights_.size() && lights_[first_].dropped) ++first_;
   return out;
 }
 

@@ -1,8 +1,10 @@
-// The traffic-light stage of the step loop: which light the ego is approaching, what perception
-// delivers of it, and what the judge decides (spec TLJ §1.1: one judge per light, created when the
-// light comes within the horizon, dropped once the ego is past it, GO_OUT).
+// The traffic-light stage of the step loop. Every light on the route whose stop line lies within
+// the horizon ahead (down to 2 m behind the front) has its own judge and its own perception model
+// (spec TLJ §1.1: one scene module per light on the path); a light is dropped once the front is
+// more than 2 m past its stop line (the judge's GO_OUT dead line, spec TLJ §1.2), whatever its state.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -13,10 +15,11 @@
 
 namespace signalsim {
 
+/// One light in one step.
 struct LightStep {
-  const sumo::ApproachLight* light = nullptr;  ///< the light being approached; null when none is left
+  const sumo::ApproachLight* light = nullptr;
   char own_state = 0;                 ///< true state of the ego's link
-  bool judged = false;                ///< the judge ran (light within the horizon and regulating)
+  bool judged = false;                ///< the judge ran (the light regulates the ego's link)
   std::string observed;               ///< what perception delivered this step ("" = nothing)
   double front_to_stop_line = 0.0;    ///< [m]
   TrafficLightJudgeResult result;
@@ -27,18 +30,24 @@ class TrafficLightStage {
   TrafficLightStage(std::vector<sumo::ApproachLight> lights, const TrafficLightJudgeParameters& judge,
                     const PerceptionModelParameters& perception, double horizon);
 
-  /// The light the ego approaches now (null once every light is behind).
-  const sumo::ApproachLight* current() const { return next_ < lights_.size() ? &lights_[next_] : nullptr; }
+  /// One step for every light in the window, nearest first (empty when none). `state_of(tls)` returns
+  /// a light's live state string.
+  std::vector<LightStep> step(double now, double s_front, double speed, double accel,
+                              const std::function<std::string(const std::string&)>& state_of);
 
-  /// One step: `state` is the current light's live state string (empty when there is none).
-  LightStep step(double now, double s_front, double speed, double accel, const std::string& state);
+  /// The next light ahead that is not yet dropped (for the timeline when none is in the window).
+  const sumo::ApproachLight* next_light() const;
 
  private:
-  std::vector<sumo::ApproachLight> lights_;
-  std::size_t next_ = 0;
+  struct Tracked {
+    sumo::ApproachLight light;
+    PerceptionModel perception;
+    std::optional<TrafficLightJudge> judge;
+    bool dropped = false;
+  };
+  std::vector<Tracked> lights_;
+  std::size_t first_ = 0;  // lights before this one are all dropped
   TrafficLightJudgeParameters judge_params_;
-  PerceptionModel perception_;
-  std::optional<TrafficLightJudge> judge_;
   double horizon_;
 };
 

@@ -108,6 +108,7 @@ void write_run_outputs(const std::string& dir, const Scenario& scenario, const s
   counts["simulated_time"] = record.rows.empty() ? 0.0 : std::stod(fixed(record.rows.back().time, 3));
   counts["arrived"] = record.arrived;
   counts["collisions"] = record.collisions;
+  counts["off_route_steps"] = record.off_route_steps;
   std::size_t blinker_events = 0;
   for (const TimelineEvent& e : record.events) blinker_events += e.kind == "blinker";
   counts["blinker_events"] = blinker_events;

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "scenario/input_error.hpp"
+#include "scenario/yaml_fields.hpp"
 
 namespace signalsim {
 namespace {
@@ -111,6 +112,7 @@ void ParameterSet::check_consistency(const std::string& origin) const {
 }
 
 void ParameterSet::apply_node(const YAML::Node& node, const std::string& prefix, const std::string& origin) {
+  reject_duplicate_keys(node, origin, prefix.empty() ? "" : prefix.substr(0, prefix.size() - 1));
   for (const auto& entry : node) {
     const std::string name = prefix + entry.first.as<std::string>();
     const ParameterSpec* spec = find_spec(name);

@@ -111,7 +111,7 @@ PerceptionModelParameters parse_perception(const YAML::Node& node, const std::st
     for (const auto& pair : blackouts) {
       double a = 0.0, b = 0.0;
       if (!pair.IsSequence() || pair.size() != 2 || !YAML::convert<double>::decode(pair[0], a) ||
-          !YAML::convert<double>::decode(pair[1], b) || !(a <= b))
+          !YAML::convert<double>::decode(pair[1], b) || !std::isfinite(a) || !std::isfinite(b) || !(a <= b))
         throw InputError(file, yaml_line(pair), "key 'perception.blackouts': each entry is [start, end] with start <= end");
       p.blackouts.push_back({a, b});
     }
@@ -233,6 +233,9 @@ Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrid
   s.step_length = top.number("step_length", 0.1, 0.001, 1.0);
   s.duration = top.number("duration", 60.0, 0.001, 86400.0);
   s.seed = top.integer("seed", 1, 0, 2147483647);
+  // The timeline is kept in memory: cap the number of steps (about 0.5 kB each).
+  if (s.duration / s.step_length > 2e6)
+    top.fail("duration", "duration / step_length exceeds 2 000 000 steps; shorten the run or lengthen the step");
   s.country = top.text_or("country", "");
 
   if (!top.has("ego")) throw InputError(path, 0, "missing required key 'ego'");

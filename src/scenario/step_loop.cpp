@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "planning/speed_limit_planner.hpp"
 #include "planning/stop/jerk_limited_stop.hpp"
@@ -13,7 +14,8 @@
 namespace signalsim {
 namespace {
 
-constexpr double kRestSpeed = 0.01;  // [m/s] below this the ego counts as at rest for stop errors
+constexpr double kRestSpeed = 0.01;       // [m/s] below this the ego counts as at rest for stop errors
+constexpr double kSettleDistance = 0.02;  // [m] this close to the stop point the ego is brought to rest
 
 Blinker blinker_of(const TurnSignalDecision& d) {
   if (d.hazard == HazardLights::Enable) return Blinker::Hazard;
@@ -32,7 +34,6 @@ int signal_mask(Blinker b) {
   return 0;
 }
 
-bool is_stop(JudgeDecision d) { return d == JudgeDecision::Stop || d == JudgeDecision::EmergencyStop; }
 bool is_red(char state) { return state == 'r' || state == 'u'; }
 
 sumo::SessionConfig session_config(const Scenario& scenario, const sumo::RoutePlan& plan) {
@@ -56,32 +57,46 @@ sumo::SessionConfig session_config(const Scenario& scenario, const sumo::RoutePl
 // Records stops (rest position against the stop point) and red-light crossings as they happen.
 class LightOutcomes {
  public:
-  void observe(const TimelineRow& row, const LightStep& light, double s_stop_line, RunRecord& record) {
+  explicit LightOutcomes(double stop_margin) : stop_margin_(stop_margin) {}
+
+  /// `stopping`: the light whose stop the ego is braking for this step, if any.
+  void observe(const TimelineRow& row, const std::vector<LightStep>& lights, const LightStep* stopping,
+               RunRecord& record) {
     // A stop: the first step at rest while a stop is requested; a new one only after moving again.
+    // The error is measured against the stop line minus stop_margin, not the judge's stop point,
+    // which restart suppression moves to wherever the ego stands (spec TLJ §1.6).
     const bool at_rest = row.speed < kRestSpeed;
-    if (at_rest && is_stop(row.tl_decision) && row.stop_s && !resting_) {
-      record.stops.push_back({row.tl_id, row.time, *row.stop_s, row.s_front, row.s_front - *row.stop_s,
-                              row.tl_decision, worst_level_});
+    if (at_rest && stopping && !resting_) {
+      const double stop_s = stopping->light->s_stop_line - stop_margin_;
+      record.stops.push_back({stopping->light->tls_id, row.time, stop_s, row.s_front, row.s_front - stop_s,
+                              stopping->result.decision, worst_level_});
       resting_ = true;
     }
     if (!at_rest) resting_ = false;
     if (row.stop_level) worst_level_ = std::max(worst_level_, *row.stop_level);
-    if (!is_stop(row.tl_decision)) worst_level_ = StopLevel::Normal;
-    // A red crossing: the front passes the stop line during a step that began on red.
-    if (light.light && previous_tl_ == row.tl_id && previous_front_ < s_stop_line && row.s_front >= s_stop_line &&
-        is_red(previous_state_))
-      record.red_violations.push_back({row.tl_id, row.time, row.s_front});
-    previous_tl_ = row.tl_id;
-    previous_front_ = row.s_front;
-    previous_state_ = row.tl_state;
+    if (!stopping) worst_level_ = StopLevel::Normal;
+    // A red crossing: the front passes a stop line (beyond a 5 cm stopping tolerance) during a step
+    // that began with the ego's link red. Every light in the window is checked, not only the nearest.
+    for (const LightStep& light : lights) {
+      const double line = light.light->s_stop_line + kCrossingTolerance;
+      auto previous = previous_.find(light.light->route_index);
+      if (previous != previous_.end() && previous->second.front <= line && row.s_front > line &&
+          is_red(previous->second.state))
+        record.red_violations.push_back({light.light->tls_id, row.time, row.s_front});
+      previous_[light.light->route_index] = {row.s_front, light.own_state};
+    }
   }
 
  private:
+  struct Previous {
+    double front = 0.0;
+    char state = 0;
+  };
+  static constexpr double kCrossingTolerance = 0.05;  // [m]
+  double stop_margin_;
   bool resting_ = false;
   StopLevel worst_level_ = StopLevel::Normal;
-  std::string previous_tl_;
-  double previous_front_ = 0.0;
-  char previous_state_ = 0;
+  std::map<std::size_t, Previous> previous_;  // by approach route index
 };
 
 void record_event(RunRecord& record, const TimelineRow& row, std::string kind, std::string from, std::string to,
@@ -105,9 +120,11 @@ RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, co
   // Arrow bulbs from every program SUMO loaded (additional files may replace the net's program).
   std::vector<sumo::ApproachLight> approaches = sumo::approach_lights(net, route);
   for (sumo::ApproachLight& a : approaches) a.has_arrow = sumo::shows_arrow(session.program_states(a.tls_id), a);
-  TrafficLightStage lights(std::move(approaches), traffic_light_parameters(scenario.params), scenario.perception,
+  const TrafficLightJudgeParameters judge_params = traffic_light_parameters(scenario.params);
+  TrafficLightStage lights(std::move(approaches), judge_params, scenario.perception,
                            scenario.params.number("forward_path_length"));
-  LightOutcomes outcomes;
+  LightOutcomes outcomes(judge_params.stop_margin);
+  const auto light_state = [&session](const std::string& tls) { return session.light_state(tls); };
 
   for (const auto& [tls, offset] : scenario.light_offsets) session.shift_light_program(tls, offset);
   const double end_time = session.time() + scenario.duration;
@@ -119,7 +136,9 @@ RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, co
   sumo::EgoState observed = session.ego();
   while (true) {
     // observe: the ego's route position (monotonic: search from the lanelet it was on).
-    const double s_front = route.s_of(observed.lane, observed.edge, observed.lane_pos, hint).value_or(last_s);
+    const auto located = route.s_of(observed.lane, observed.edge, observed.lane_pos, hint);
+    if (!located) ++record.off_route_steps;  // the lane is not on the route: s held (counted)
+    const double s_front = located.value_or(last_s);
     hint = route.index_at(std::max(0.0, s_front - 1e-6));
     last_s = s_front;
     const EgoOnRoute ego{s_front, s_front - b2f, observed.speed};
@@ -127,20 +146,28 @@ RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, co
     // decide: blinker (spec TSD) and light (spec TLJ).
     const TurnSignalDecision decision = decider.decide(route, ego);
     const Blinker blinker = blinker_of(decision);
-    const sumo::ApproachLight* approached = lights.current();
-    const std::string state = approached ? session.light_state(approached->tls_id) : std::string();
-    const double s_stop_line = approached ? approached->s_stop_line : 0.0;
-    const LightStep light = lights.step(observed.time, s_front, observed.speed, observed.accel, state);
+    const std::vector<LightStep> light_steps =
+        lights.step(observed.time, s_front, observed.speed, observed.accel, light_state);
+    // The light the ego brakes for: the nearest stop requested by any judge in the window.
+    const LightStep* stopping = nullptr;
+    for (const LightStep& l : light_steps)
+      if (l.result.stop_point_distance &&
+          (!stopping || *l.result.stop_point_distance < *stopping->result.stop_point_distance))
+        stopping = &l;
+    // The timeline describes that light, else the nearest one.
+    const LightStep* shown = stopping ? stopping : (light_steps.empty() ? nullptr : &light_steps.front());
 
-    // plan: lane limits, and a jerk-limited stop when the judge asks for one.
+    // plan: lane limits, and a jerk-limited stop when a judge asks for one.
     double speed = plan_speed_under_limits(route, s_front, observed.speed, dt, limits);
     std::optional<StopLevel> stop_level;
-    if (light.result.stop_point_distance) {
-      const StopCommand stop = plan_stop({observed.speed, observed.accel, *light.result.stop_point_distance, dt}, stop_params);
+    if (stopping) {
+      const double to_go = *stopping->result.stop_point_distance;
+      const StopCommand stop = plan_stop({observed.speed, observed.accel, to_go, dt}, stop_params);
       if (stop.braking || stop.commanded_velocity < speed) {
         speed = std::min(speed, stop.commanded_velocity);
         stop_level = stop.level;
       }
+      if (to_go < kSettleDistance) speed = 0.0;  // within 2 cm: come to rest (coarse steps never settle)
     }
     session.set_emergency_braking(stop_level == StopLevel::Emergency);
 
@@ -162,18 +189,23 @@ RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, co
     row.blinker = blinker;
     row.blinker_source = blinker == Blinker::None ? RequestSource::None : decision.source;
     row.sumo_signals = alive ? session.ego_signals() : -1;
-    if (light.light) {
-      row.tl_id = light.light->tls_id;
-      row.tl_state = light.own_state;
+    if (shown) {
+      row.tl_id = shown->light->tls_id;
+      row.tl_state = shown->own_state;
+    } else if (const sumo::ApproachLight* next = lights.next_light()) {  // beyond the horizon
+      row.tl_id = next->tls_id;
+      const std::string state = session.light_state(next->tls_id);
+      if (next->link_index >= 0 && static_cast<std::size_t>(next->link_index) < state.size())
+        row.tl_state = state[static_cast<std::size_t>(next->link_index)];
     }
-    if (light.judged) {
-      row.tl_observed = light.observed;
-      row.tl_decision = light.result.decision;
-      row.zone = light.result.zone;
-      row.stop_distance = light.result.distance;
-      row.judge_distance = light.result.judge_dist;
-      row.yellow_lamp_line = light.result.yellow_lamp_line;
-      if (light.result.stop_point_distance) row.stop_s = s_front + *light.result.stop_point_distance;
+    if (shown && shown->judged) {
+      row.tl_observed = shown->observed;
+      row.tl_decision = shown->result.decision;
+      row.zone = shown->result.zone;
+      row.stop_distance = shown->result.distance;
+      row.judge_distance = shown->result.judge_dist;
+      row.yellow_lamp_line = shown->result.yellow_lamp_line;
+      if (shown->result.stop_point_distance) row.stop_s = s_front + *shown->result.stop_point_distance;
       row.stop_level = stop_level;
     }
     if (blinker != previous_blinker) {
@@ -186,7 +218,7 @@ RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, co
                    std::string(to_string(row.tl_decision)), row.tl_id);
       previous_decision = row.tl_decision;
     }
-    outcomes.observe(row, light, s_stop_line, record);
+    outcomes.observe(row, light_steps, stopping, record);
     record.rows.push_back(std::move(row));
 
     if (!alive) {

@@ -74,6 +74,7 @@ struct RunRecord {
   std::vector<LightStop> stops;
   std::vector<RedLightViolation> red_violations;
   bool arrived = false;          ///< the ego reached the end of its route
+  int off_route_steps = 0;       ///< steps on a lane not on the planned route (route position held)
   int collisions = 0;
   double base_link_to_front = 0.0;
 };

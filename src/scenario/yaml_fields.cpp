@@ -14,6 +14,18 @@ YamlFields::YamlFields(const YAML::Node& mapping, std::string file, std::string 
   if (!mapping_.IsMap())
     throw InputError(file_, yaml_line(mapping_),
                      (where_.empty() ? std::string("the file") : "'" + where_ + "'") + " must be a mapping of key: value");
+  reject_duplicate_keys(mapping_, file_, where_);
+}
+
+void reject_duplicate_keys(const YAML::Node& mapping, const std::string& file, const std::string& where) {
+  // yaml-cpp keeps both entries of a repeated key and lookups see only one: reject it.
+  std::set<std::string> seen;
+  for (const auto& entry : mapping) {
+    const std::string key = entry.first.Scalar();
+    if (!seen.insert(key).second)
+      throw InputError(file, yaml_line(entry.first),
+                       "duplicate key '" + (where.empty() ? key : where + "." + key) + "'");
+  }
 }
 
 std::string YamlFields::qualified(const std::string& key) const { return where_.empty() ? key : where_ + "." + key; }

@@ -41,4 +41,7 @@ class YamlFields {
 
 int yaml_line(const YAML::Node& node);
 
+/// Throws InputError at the second occurrence of a key in a mapping (`where` prefixes the key).
+void reject_duplicate_keys(const YAML::Node& mapping, const std::string& file, const std::string& where);
+
 }  // namespace signalsim

@@ -36,11 +36,14 @@ SignalColor color_of(Lamp lamp) {
   }
 }
 
-// The circle: the approach's straight links, else the ego's own link.
+// The circle (see signal_elements in the header): never greener than the ego's own link.
 Lamp circle_of(const std::string& state, const ApproachLight& light) {
+  const Lamp own = lamp_of(state_at(state, light.link_index));
+  if (own != Lamp::Green) return own;
   for (const ApproachLink& link : light.links)
-    if (link.direction == TurnDirection::Straight) return lamp_of(state_at(state, link.link_index));
-  return lamp_of(state_at(state, light.link_index));
+    if (link.direction == TurnDirection::Straight && link.from_lane == light.lane_index)
+      return lamp_of(state_at(state, link.link_index));
+  return own;
 }
 
 bool is_turn(TurnDirection d) { return d == TurnDirection::Left || d == TurnDirection::Right; }
@@ -67,13 +70,14 @@ std::vector<ApproachLight> approach_lights(const NetIndex& net, const RouteMap& 
     light.route_index = i;
     light.tls_id = lanelet.traffic_light->tls_id;
     light.link_index = lanelet.traffic_light->link_index;
+    if (const NetLane* lane = net.lane(lanelet.lane_id)) light.lane_index = lane->index;
     light.direction = i + 1 < route.size() ? route.at(i + 1).turn_direction : TurnDirection::None;
     light.s_stop_line = lanelet.s_end() - lanelet.stop_offset;
     if (const NetEdge* edge = net.edge(lanelet.edge_id)) {
       for (const NetLane& lane : edge->lanes)
         for (const NetConnection& c : net.connections_from_lane(lane.id))
           if (c.tl == light.tls_id && c.link_index >= 0)
-            light.links.push_back({turn_direction_of(c.dir, net.lefthand()), c.link_index});
+            light.links.push_back({turn_direction_of(c.dir, net.lefthand()), c.link_index, c.from_lane});
     }
     std::vector<std::string> states;
     for (const NetTlLogic& logic : net.tl_logics())

@@ -17,6 +17,7 @@ namespace signalsim::sumo {
 struct ApproachLink {
   TurnDirection direction = TurnDirection::None;
   int link_index = -1;
+  int from_lane = -1;  ///< lane index on the approach edge
 };
 
 /// A light the ego meets: its approach lanelet, its stop line, the ego's link and its neighbours.
@@ -24,6 +25,7 @@ struct ApproachLight {
   std::size_t route_index = 0;   ///< the approach lanelet (its end is the stop line)
   std::string tls_id;
   int link_index = -1;           ///< the ego's link
+  int lane_index = -1;           ///< the ego's lane on the approach edge
   TurnDirection direction = TurnDirection::None;  ///< the ego's turn through the junction
   std::vector<ApproachLink> links;  ///< every signalised link leaving the approach edge
   double s_stop_line = 0.0;      ///< route s of the stop line (lane end minus <stopOffset>)
@@ -42,8 +44,10 @@ std::vector<ApproachLight> approach_lights(const NetIndex& net, const RouteMap& 
 
 /// Link states of a light (one character per link index) -> the elements a perfect camera sees on
 /// this approach (spec SUMO §3):
-///  - the circle's colour is the approach's straight links' state (the ego's own link when the
-///    approach has no straight link): G/g green, y/Y amber, r/u/s red;
+///  - the circle: the ego's own link when it is not green (a red or amber link must never show a
+///    green circle); when it is green, the straight link of the ego's lane (a green turn link under
+///    a red straight link is an arrow), or the own link when that lane has no straight link.
+///    G/g green, y/Y amber, r/u/s red;
 ///  - a turn link (left/right) that is green (G, g, s) or amber while the circle is not shows an
 ///    arrow of that colour and direction;
 ///  - nullopt when the ego's own link is off (o, O): the light is not regulating, the judge stays out.

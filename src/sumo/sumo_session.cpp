@@ -25,10 +25,14 @@ std::string number(double v) {
   return out.str();
 }
 
-// SUMO prints its load errors to stderr and throws a bare "Process Error": capture stderr while
-// it starts so the message we report is SUMO's own first error line.
+}  // namespace
+
+// SUMO prints its errors to stderr and throws a bare "Process Error": stderr is captured while the
+// session lives, so the message we report is SUMO's own first error line, and nothing else is printed.
 class StderrCapture {
  public:
+  StderrCapture(const StderrCapture&) = delete;
+  StderrCapture& operator=(const StderrCapture&) = delete;
   StderrCapture() {
     std::fflush(stderr);
     char name[] = "/tmp/signalsim-sumo-XXXXXX";
@@ -62,6 +66,8 @@ class StderrCapture {
   int fd_ = -1;
   int saved_ = -1;
 };
+
+namespace {
 
 bool contains(const std::vector<std::string>& ids, const std::string& id) {
   return std::find(ids.begin(), ids.end(), id) != ids.end();
@@ -108,15 +114,11 @@ SumoSession::SumoSession(const SessionConfig& config) {
   }
   lateral_resolution_ = config.lateral_resolution;
   if (lateral_resolution_ > 0.0) args.insert(args.end(), {"--lateral-resolution", number(lateral_resolution_)});
-  {
-    StderrCapture capture;
-    try {
-      libsumo::Simulation::start(args);
-    } catch (const std::exception& e) {
-      capture.restore();
-      const std::string reason = capture.first_error();
-      throw SumoError("SUMO could not load the simulation: " + (reason.empty() ? std::string(e.what()) : reason));
-    }
+  capture_ = std::make_unique<StderrCapture>();
+  try {
+    libsumo::Simulation::start(args);
+  } catch (const std::exception& e) {
+    throw SumoError("SUMO could not load the simulation: " + sumo_reason(e));
   }
   try {
     libsumo::Route::add(kEgoRoute, config.route);
@@ -144,9 +146,9 @@ SumoSession::SumoSession(const SessionConfig& config) {
         return;
       }
     }
-  } catch (const libsumo::TraCIException& e) {
+  } catch (const std::exception& e) {
     libsumo::Simulation::close();
-    throw SumoError(std::string("SUMO rejected the ego: ") + e.what());
+    throw SumoError("SUMO rejected the ego: " + sumo_reason(e));
   }
   libsumo::Simulation::close();
   throw SumoError("the ego could not be inserted within 600 steps (its departure lane stays blocked)");
@@ -159,14 +161,20 @@ SumoSession::~SumoSession() {
   }
 }
 
+std::string SumoSession::sumo_reason(const std::exception& e) const {
+  // SUMO prints its real error to stderr and throws a bare "Process Error" or the like.
+  std::string reason = capture_ ? capture_->first_error() : std::string();
+  return reason.empty() ? std::string(e.what()) : reason;
+}
+
 bool SumoSession::step() {
   try {
     libsumo::Simulation::step();
     for (const auto& c : libsumo::Simulation::getCollisions())
       if (c.collider == kEgo || c.victim == kEgo) ++ego_collisions_;
     return !contains(libsumo::Simulation::getArrivedIDList(), kEgo);
-  } catch (const libsumo::TraCIException& e) {
-    throw SumoError(std::string("SUMO failed during a step: ") + e.what());
+  } catch (const std::exception& e) {
+    throw SumoError("SUMO failed during a step: " + sumo_reason(e));
   }
 }
 
@@ -186,7 +194,7 @@ EgoState SumoSession::ego() const {
     s.y = p.y;
     s.lateral_offset = libsumo::Vehicle::getLateralLanePosition(kEgo);
     return s;
-  } catch (const libsumo::TraCIException& e) {
+  } catch (const std::exception& e) {
     throw SumoError(std::string("SUMO could not report the ego: ") + e.what());
   }
 }
@@ -194,7 +202,7 @@ EgoState SumoSession::ego() const {
 int SumoSession::ego_signals() const {
   try {
     return libsumo::Vehicle::getSignals(kEgo);
-  } catch (const libsumo::TraCIException& e) {
+  } catch (const std::exception& e) {
     throw SumoError(std::string("SUMO could not report the ego's signals: ") + e.what());
   }
 }
@@ -203,7 +211,7 @@ void SumoSession::command(int signal_mask, double speed) {
   try {
     libsumo::Vehicle::setSignals(kEgo, signal_mask);
     libsumo::Vehicle::setSpeed(kEgo, speed);
-  } catch (const libsumo::TraCIException& e) {
+  } catch (const std::exception& e) {
     throw SumoError(std::string("SUMO refused a command for the ego: ") + e.what());
   }
 }
@@ -217,7 +225,7 @@ double SumoSession::lateral_offset_from(const std::string& reference_lane_id) co
     const int ego_index = libsumo::Vehicle::getLaneIndex(kEgo);
     if (reference_index < 0 || ego_index < 0) return in_lane;
     return in_lane + centre_distance(reference_edge, reference_index, ego_index);
-  } catch (const libsumo::TraCIException& e) {
+  } catch (const std::exception& e) {
     throw SumoError("cannot measure the ego's offset from lane '" + reference_lane_id + "': " + e.what());
   }
 }
@@ -250,7 +258,7 @@ void SumoSession::command_lateral_offset(double target_offset_next_step, const s
     double target = target_offset_next_step;
     if (lowest <= highest) target = std::clamp(target, lowest, highest);
     libsumo::Vehicle::changeSublane(kEgo, target - lateral_offset_from(reference_lane_id));
-  } catch (const libsumo::TraCIException& e) {
+  } catch (const std::exception& e) {
     throw SumoError("SUMO refused a lateral offset from lane '" + reference_lane_id + "': " + e.what());
   }
 }
@@ -258,7 +266,7 @@ void SumoSession::command_lateral_offset(double target_offset_next_step, const s
 std::string SumoSession::light_state(const std::string& tls_id) const {
   try {
     return libsumo::TrafficLight::getRedYellowGreenState(tls_id);
-  } catch (const libsumo::TraCIException& e) {
+  } catch (const std::exception& e) {
     throw SumoError("SUMO does not know traffic light '" + tls_id + "': " + e.what());
   }
 }
@@ -269,7 +277,7 @@ std::vector<std::string> SumoSession::program_states(const std::string& tls_id) 
     for (const auto& logic : libsumo::TrafficLight::getAllProgramLogics(tls_id))
       for (const auto& phase : logic.phases) states.push_back(phase->state);
     return states;
-  } catch (const libsumo::TraCIException& e) {
+  } catch (const std::exception& e) {
     throw SumoError("SUMO does not know traffic light '" + tls_id + "': " + e.what());
   }
 }
@@ -297,7 +305,7 @@ void SumoSession::shift_light_program(const std::string& tls_id, double offset) 
       }
       return;
     }
-  } catch (const libsumo::TraCIException& e) {
+  } catch (const std::exception& e) {
     throw SumoError("cannot shift the program of traffic light '" + tls_id + "': " + e.what());
   }
 }
@@ -307,7 +315,7 @@ void SumoSession::set_emergency_braking(bool on) {
   try {
     libsumo::Vehicle::setSpeedMode(kEgo, on ? 11 : 15);  // 11 = 15 without bit 2 (max decel)
     emergency_braking_ = on;
-  } catch (const libsumo::TraCIException& e) {
+  } catch (const std::exception& e) {
     throw SumoError(std::string("SUMO refused the ego's speed mode: ") + e.what());
   }
 }

@@ -2,11 +2,14 @@
 // observes and commands it. One session per process (libsumo is not re-entrant, spec SUMO §1).
 #pragma once
 
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace signalsim::sumo {
+
+class StderrCapture;
 
 /// A SUMO failure (load error, unknown id, ...). what() carries SUMO's own first error line.
 class SumoError : public std::runtime_error {
@@ -120,6 +123,8 @@ class SumoSession {
   int ego_collisions() const { return ego_collisions_; }
 
  private:
+  std::string sumo_reason(const std::exception& e) const;
+  std::unique_ptr<StderrCapture> capture_;  ///< SUMO's stderr while the session lives
   int ego_collisions_ = 0;
   bool emergency_braking_ = false;
   double lateral_resolution_ = 0.0;

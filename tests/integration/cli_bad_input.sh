@@ -47,6 +47,13 @@ check unknown_edge run "$bad/unknown_edge.yaml" -- "unknown_edge.yaml" "out_Q" "
 check unconnected_route run "$bad/unconnected_route.yaml" -- "unconnected_route.yaml" "in_S" "in_W" "not connected"
 check junction_not_on_route run "$bad/junction_not_on_route.yaml" -- "junction_not_on_route.yaml" "junction 'Z'" "not on the ego's route"
 check no_subcommand -- "signalsim"
+check duplicate_key run "$bad/duplicate_key.yaml" -- "duplicate_key.yaml:7" "duplicate key 'ego.max_speed'"
+check depart_beyond_edge run "$bad/depart_beyond_edge.yaml" -- "depart_beyond_edge.yaml" "ego.depart_pos" "beyond"
+check unknown_light_offset run "$bad/unknown_light_offset.yaml" -- "unknown_light_offset.yaml" "light_offsets" "'ZZ'"
+# A SUMO error mid-run, into a directory that holds a finished run: the old files must not survive.
+"$bin" run "$src/scenarios/intersection_left.yaml" --out "$work/mid_run_sumo_error" --quiet >/dev/null
+check mid_run_sumo_error run "$bad/mid_run_sumo_error.yaml" -- "mid_run_sumo_error.yaml" "Vehicle 'bad' has no valid route"
+[ -f "$work/mid_run_sumo_error/events.csv" ] && { echo "FAIL mid_run_sumo_error: the old events.csv survived"; failures=$((failures + 1)); }
 
-echo "$((12 - failures)) passed, $failures failed"
+echo "$((16 - failures)) passed, $failures failed"
 [ $failures -eq 0 ]

@@ -11,9 +11,10 @@ ApproachLight south_approach(TurnDirection ego, int ego_link) {
   ApproachLight light;
   light.tls_id = "C";
   light.link_index = ego_link;
+  light.lane_index = ego_link <= 9 ? 0 : 1;  // lane 0: right 8, straight 9; lane 1: straight 10, left 11
   light.direction = ego;
-  light.links = {{TurnDirection::Right, 8}, {TurnDirection::Straight, 9}, {TurnDirection::Straight, 10},
-                 {TurnDirection::Left, 11}};
+  light.links = {{TurnDirection::Right, 8, 0}, {TurnDirection::Straight, 9, 0}, {TurnDirection::Straight, 10, 1},
+                 {TurnDirection::Left, 11, 1}};
   return light;
 }
 
@@ -33,10 +34,23 @@ TEST(SignalElements, CircleFollowsTheStraightLinks) {
 TEST(SignalElements, AGreenTurnUnderARedCircleIsAnArrow) {
   const ApproachLight left = south_approach(TurnDirection::Left, 11);
   EXPECT_EQ(elements("rrrrrrrrrrrGrrrr", left), "red+green_left_arrow");
-  EXPECT_EQ(elements("rrrrrrrrGrrrrrrr", left), "red+green_right_arrow");
-  EXPECT_EQ(elements("rrrrrrrrsrrrrrrr", left), "red+green_right_arrow") << "'s' is a green arrow, stop first";
-  EXPECT_EQ(elements("rrrrrrrrrrrygrrr", left), "red+amber_left_arrow") << "an ending protected left";
   EXPECT_EQ(elements("rrrrrrrrGGGgrrrr", left), "green") << "no arrow when the circle is green too";
+  const ApproachLight straight = south_approach(TurnDirection::Straight, 9);
+  EXPECT_EQ(elements("rrrrrrrrGrrrrrrr", straight), "red+green_right_arrow");
+  EXPECT_EQ(elements("rrrrrrrrsrrrrrrr", straight), "red+green_right_arrow") << "'s' is a green arrow, stop first";
+  EXPECT_EQ(elements("rrrrrrrrrrrGrrrr", straight), "red+green_left_arrow") << "the straight ego stops on it";
+}
+
+TEST(SignalElements, TheEgosRedOrAmberLinkIsNeverAGreenCircle) {
+  // Found in review: straight links green, the left link red -> a left turner must see red.
+  const ApproachLight left = south_approach(TurnDirection::Left, 11);
+  EXPECT_EQ(elements("rrrrrrrrGGGrrrrr", left), "red+green_right_arrow");
+  EXPECT_TRUE(is_traffic_signal_stop(LaneTurnDirection::Left, *signal_elements("rrrrrrrrGGGrrrrr", left)));
+  EXPECT_EQ(elements("rrrrrrrrGGGyrrrr", left), "amber+green_right_arrow");
+  // A straight ego on lane 1 follows its own lane's straight link, not lane 0's.
+  const ApproachLight straight_lane1 = south_approach(TurnDirection::Straight, 10);
+  EXPECT_EQ(elements("rrrrrrrrrGrrrrrr", straight_lane1), "red");
+  EXPECT_EQ(elements("rrrrrrrrrrGrrrrr", straight_lane1), "green");
 }
 
 TEST(SignalElements, ArrowsMatchTheJudgesTurnDirection) {
