@@ -23,12 +23,7 @@ std::vector<std::string> known_codes() {
 }
 
 Country read_country(const fs::path& path) {
-  YAML::Node root;
-  try {
-    root = YAML::LoadFile(path.string());
-  } catch (const YAML::Exception& e) {
-    throw InputError(path.string(), e.mark.line + 1, "malformed YAML: " + e.msg);
-  }
+  const YAML::Node root = load_yaml_file(path.string(), "country file");
   YamlFields fields(root, path.string(), "");
   Country c;
   c.path = path.string();

@@ -133,16 +133,7 @@ void ParameterSet::apply_node(const YAML::Node& node, const std::string& prefix,
   }
 }
 
-void ParameterSet::apply_file(const std::string& path) {
-  if (!std::filesystem::is_regular_file(path)) throw InputError(path, 0, "parameter file not found");
-  YAML::Node root;
-  try {
-    root = YAML::LoadFile(path);
-  } catch (const YAML::Exception& e) {
-    throw InputError(path, e.mark.line + 1, "malformed YAML: " + e.msg);
-  }
-  apply(root, path);
-}
+void ParameterSet::apply_file(const std::string& path) { apply(load_yaml_file(path, "parameter file"), path); }
 
 double ParameterSet::number(const std::string& name) const {
   const ParameterValue& v = values_.at(name);

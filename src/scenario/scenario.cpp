@@ -209,13 +209,7 @@ std::string describe(const Expectation& expectation) {
 }
 
 Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrides) {
-  if (!fs::is_regular_file(path)) throw InputError(path, 0, "scenario file not found");
-  YAML::Node root;
-  try {
-    root = YAML::LoadFile(path);
-  } catch (const YAML::Exception& e) {
-    throw InputError(path, e.mark.line + 1, "malformed YAML: " + e.msg);
-  }
+  YAML::Node root = load_yaml_file(path, "scenario file");
   YAML::Node parameter_overrides;
   root = apply_overrides(root, overrides, parameter_overrides);
   Scenario s;

@@ -126,13 +126,7 @@ std::vector<std::string> scenario_files(const std::vector<std::string>& paths, c
 }
 
 Sweep load_sweep(const std::string& path) {
-  if (!fs::is_regular_file(path)) throw InputError(path, 0, "sweep file not found");
-  YAML::Node root;
-  try {
-    root = YAML::LoadFile(path);
-  } catch (const YAML::Exception& e) {
-    throw InputError(path, e.mark.line + 1, "malformed YAML: " + e.msg);
-  }
+  YAML::Node root = load_yaml_file(path, "sweep file");
   if (!root || root.IsNull()) throw InputError(path, 0, "the sweep file is empty");
   YamlFields top(root, path, "");
   Sweep s;

@@ -1,11 +1,21 @@
 #include "scenario/yaml_fields.hpp"
 
 #include <cmath>
+#include <filesystem>
 #include <sstream>
 
 #include "scenario/input_error.hpp"
 
 namespace signalsim {
+
+YAML::Node load_yaml_file(const std::string& path, const std::string& what) {
+  if (!std::filesystem::is_regular_file(path)) throw InputError(path, 0, what + " not found");
+  try {
+    return YAML::LoadFile(path);
+  } catch (const YAML::Exception& e) {
+    throw InputError(path, e.mark.line + 1, "malformed YAML: " + e.msg);
+  }
+}
 
 int yaml_line(const YAML::Node& node) { return node && node.Mark().line >= 0 ? node.Mark().line + 1 : 0; }
 

@@ -41,6 +41,10 @@ class YamlFields {
 
 int yaml_line(const YAML::Node& node);
 
+/// Reads a YAML file. Throws InputError: "<what> not found" for a missing file, "malformed YAML:
+/// <reason>" at the parser's line for a syntax error.
+YAML::Node load_yaml_file(const std::string& path, const std::string& what);
+
 /// Throws InputError at the second occurrence of a key in a mapping (`where` prefixes the key).
 void reject_duplicate_keys(const YAML::Node& mapping, const std::string& file, const std::string& where);
 

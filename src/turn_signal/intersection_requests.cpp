@@ -75,19 +75,22 @@ Polyline merged_centerline(const RouteMap& route, const TurnLaneGroup& group) {
   return Polyline(std::move(taken));
 }
 
-const IntersectionRequests::GroupGeometry& IntersectionRequests::geometry(
-    const RouteMap& route, const TurnLaneGroup& group, double angle_threshold_deg) {
+LaneSpanGeometry lane_span_geometry(const RouteMap& route, std::size_t front_index, std::size_t back_index,
+                                    double angle_threshold_deg) {
+  const Polyline merged = merged_centerline(route, TurnLaneGroup{front_index, back_index, TurnDirection::None});
+  const double s_front = route.at(front_index).s_start;
+  const double s_back = route.at(back_index).s_end();
+  const double scale = merged.length() > 0.0 ? (s_back - s_front) / merged.length() : 1.0;
+  return {merged.size() >= 2, s_front + required_end_arc_length(merged, angle_threshold_deg) * scale};
+}
+
+const LaneSpanGeometry& IntersectionRequests::geometry(const RouteMap& route, const TurnLaneGroup& group,
+                                                       double angle_threshold_deg) {
   auto cached = geometry_cache_.find(group.front_index);
   if (cached != geometry_cache_.end()) return cached->second;
-  const Polyline merged = merged_centerline(route, group);
-  const double s_front = route.at(group.front_index).s_start;
-  const double s_back = route.at(group.back_index).s_end();
-  // The resampling runs along the polyline; SUMO lane positions use the lane `length`, which
-  // netconvert may set slightly differently from the shape length: scale between the two.
-  const double scale = merged.length() > 0.0 ? (s_back - s_front) / merged.length() : 1.0;
-  GroupGeometry computed{merged.size() >= 2,
-                          s_front + required_end_arc_length(merged, angle_threshold_deg) * scale};
-  return geometry_cache_.emplace(group.front_index, computed).first->second;
+  return geometry_cache_
+      .emplace(group.front_index, lane_span_geometry(route, group.front_index, group.back_index, angle_threshold_deg))
+      .first->second;
 }
 
 TurnSignalInfo IntersectionRequests::update(const RouteMap& route, RouteMap::Window window,
@@ -124,7 +127,7 @@ TurnSignalInfo IntersectionRequests::update(const RouteMap& route, RouteMap::Win
     const Lanelet& front = route.at(group.front_index);
     const double s_lane_start = front.s_start;
     const double s_lane_end = route.at(group.back_index).s_end();
-    const GroupGeometry& shape =
+    const LaneSpanGeometry& shape =
         geometry(route, group, params.turn_signal_intersection_angle_threshold_deg);
     if (!shape.has_centerline) continue;
     const double search = front.turn_signal_distance.value_or(base_search);  // per-lanelet override

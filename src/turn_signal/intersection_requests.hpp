@@ -18,6 +18,12 @@ struct TurnLaneGroup {
   TurnDirection direction = TurnDirection::None;
 };
 
+/// Geometry of a run of route lanelets [front_index, back_index] that depends on the map only.
+struct LaneSpanGeometry {
+  bool has_centerline = false;  ///< the merged centerline has >= 2 points
+  double required_end_s = 0.0;  ///< route s of the required end (spec TSD §7)
+};
+
 /// Owns the remembered desired starts (spec TSD §1.5, §4.4). Keys are route lanelet indices, not
 /// lane ids: on a looped route the second pass of a lane is a different key, so a stale start is
 /// never reused (the reference keys by lane id, spec TSD §12.1.5; documented in the README).
@@ -29,19 +35,14 @@ class IntersectionRequests {
   TurnSignalInfo update(const RouteMap& route, RouteMap::Window window, const EgoOnRoute& ego,
                         TurnIndicator behavior_command, const TurnSignalParameters& params);
 
-  /// Geometry of a group, computed once (it depends on the map only).
-  struct GroupGeometry {
-    bool has_centerline = false;  ///< the merged centerline has >= 2 points
-    double required_end_s = 0.0;  ///< route s of the required end (§7)
-  };
-  const GroupGeometry& geometry(const RouteMap& route, const TurnLaneGroup& group,
-                                double angle_threshold_deg);
+  /// The group's geometry, computed once (it depends on the map only).
+  const LaneSpanGeometry& geometry(const RouteMap& route, const TurnLaneGroup& group, double angle_threshold_deg);
 
   const std::map<std::size_t, double>& desired_starts() const { return desired_starts_; }
 
  private:
   std::map<std::size_t, double> desired_starts_;    // group front index -> s_base when stored
-  std::map<std::size_t, GroupGeometry> geometry_cache_;  // group front index -> geometry
+  std::map<std::size_t, LaneSpanGeometry> geometry_cache_;  // group front index -> geometry
 };
 
 /// spec TSD §4.2: the group starting at `index`, walking route successors with the same direction
@@ -51,5 +52,11 @@ TurnLaneGroup group_from(const RouteMap& route, std::size_t index);
 /// spec TSD §4.2 / [LL2U combine_lanelets_shape]: the chain's centerlines joined, skipping any
 /// point within 0.01 m of any point already taken.
 Polyline merged_centerline(const RouteMap& route, const TurnLaneGroup& group);
+
+/// The merged centerline's required end for an angle threshold, on the route coordinate: the
+/// resampling runs along the polyline while SUMO lane positions use the lane `length` (netconvert may
+/// set it slightly differently from the shape length), so the arc length is scaled onto s.
+LaneSpanGeometry lane_span_geometry(const RouteMap& route, std::size_t front_index, std::size_t back_index,
+                                    double angle_threshold_deg);
 
 }  // namespace signalsim

@@ -115,20 +115,14 @@ std::optional<std::size_t> exit_signal_chain_start(const RouteMap& route, std::s
   return start;
 }
 
-const RoundaboutRequests::ConnectionGeometry& RoundaboutRequests::geometry(const RouteMap& route,
-                                                                           const RoundaboutConnection& connection,
-                                                                           double angle_threshold_deg) {
+const LaneSpanGeometry& RoundaboutRequests::geometry(const RouteMap& route, const RoundaboutConnection& connection,
+                                                     double angle_threshold_deg) {
   auto cached = geometry_cache_.find(connection.front_index);
   if (cached != geometry_cache_.end()) return cached->second;
-  const Polyline centerline =
-      merged_centerline(route, TurnLaneGroup{connection.front_index, connection.back_index, TurnDirection::None});
-  const double s_front = route.at(connection.front_index).s_start;
-  const double s_back = route.at(connection.back_index).s_end();
-  // As in IntersectionRequests::geometry: scale the shape length onto SUMO's lane length.
-  const double scale = centerline.length() > 0.0 ? (s_back - s_front) / centerline.length() : 1.0;
-  ConnectionGeometry computed{centerline.size() >= 2,
-                              s_front + required_end_arc_length(centerline, angle_threshold_deg) * scale};
-  return geometry_cache_.emplace(connection.front_index, computed).first->second;
+  return geometry_cache_
+      .emplace(connection.front_index,
+               lane_span_geometry(route, connection.front_index, connection.back_index, angle_threshold_deg))
+      .first->second;
 }
 
 TurnSignalInfo RoundaboutRequests::update(const RouteMap& route, RouteMap::Window window, const EgoOnRoute& ego,
@@ -150,7 +144,7 @@ TurnSignalInfo RoundaboutRequests::update(const RouteMap& route, RouteMap::Windo
 
   // spec TSD §5.2: entry requests, queued first.
   for (const RoundaboutConnection& entry : entries) {
-    const ConnectionGeometry& shape = geometry(route, entry, threshold);
+    const LaneSpanGeometry& shape = geometry(route, entry, threshold);
     if (!shape.has_centerline) continue;
     const Lanelet& e = route.at(entry.front_index);
     const double d_front = e.s_start - ego.s_front;  // vehicle front to the entry start
@@ -188,7 +182,7 @@ TurnSignalInfo RoundaboutRequests::update(const RouteMap& route, RouteMap::Windo
 
   // spec TSD §5.3: exit requests, queued after all entries. No search distance (§12.1.8).
   for (const RoundaboutConnection& exit : exits) {
-    const ConnectionGeometry& shape = geometry(route, exit, threshold);
+    const LaneSpanGeometry& shape = geometry(route, exit, threshold);
     if (!shape.has_centerline) continue;
     const double s_exit_end = route.at(exit.back_index).s_end();
     if (s_exit_end - ego.s_base < 0.0) {

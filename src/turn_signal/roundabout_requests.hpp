@@ -39,6 +39,7 @@
 #include <vector>
 
 #include "map/route_map.hpp"
+#include "turn_signal/intersection_requests.hpp"
 #include "turn_signal/turn_signal_info.hpp"
 #include "turn_signal/turn_signal_parameters.hpp"
 
@@ -62,13 +63,9 @@ class RoundaboutRequests {
   TurnSignalInfo update(const RouteMap& route, RouteMap::Window window, const EgoOnRoute& ego,
                         const TurnSignalParameters& params);
 
-  /// Geometry of a connection, computed once (it depends on the map only).
-  struct ConnectionGeometry {
-    bool has_centerline = false;  ///< the joined centerline has >= 2 points
-    double required_end_s = 0.0;  ///< route s of the required end (§7, roundabout angle threshold)
-  };
-  const ConnectionGeometry& geometry(const RouteMap& route, const RoundaboutConnection& connection,
-                                     double angle_threshold_deg);
+  /// Geometry of a connection (§7 with the roundabout angle threshold), computed once.
+  const LaneSpanGeometry& geometry(const RouteMap& route, const RoundaboutConnection& connection,
+                                   double angle_threshold_deg);
 
   /// Stored desired starts: connection front index -> route s. An entry stores s_base of the cycle
   /// it came within reach; an exit stores the start of its enable_exit_turn_signal chain (or its own).
@@ -76,7 +73,7 @@ class RoundaboutRequests {
 
  private:
   std::map<std::size_t, double> desired_starts_;
-  std::map<std::size_t, ConnectionGeometry> geometry_cache_;
+  std::map<std::size_t, LaneSpanGeometry> geometry_cache_;
 };
 
 /// The entry or exit connection containing route index `index` (whose role must be Entry or Exit):
