@@ -142,6 +142,9 @@ YAML::Node apply_overrides(YAML::Node root, const ScenarioOverrides& overrides, 
     } catch (const YAML::Exception& e) {
       throw InputError("--set", 0, "'" + item + "': malformed value: " + e.msg);
     }
+    // A scalar rebuilt without a parse mark carries no line, so a message about it names no line of
+    // the scenario file (it came from the command line).
+    if (value.IsScalar()) value = YAML::Node(value.Scalar());
     const std::string head = key.substr(0, key.find('.'));
     if (!is_scenario_key(head)) {
       parameters[key] = value;
