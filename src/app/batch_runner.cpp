@@ -1,6 +1,10 @@
 #include "app/batch_runner.hpp"
 
+#include <fcntl.h>
+#include <sys/file.h>
 #include <unistd.h>
+
+#include <csignal>
 
 #include <cctype>
 #include <chrono>
@@ -201,6 +205,47 @@ void count(BatchResult& result) {
   }
 }
 
+// The settings every run was made with: one line per run (index, scenario, the FNV-1a hash of the
+// scenario file's bytes, every --set). --resume keeps earlier rows only when this is unchanged, so
+// rows of another configuration never pass for this batch's.
+std::string manifest_of(const std::vector<RunSpec>& runs) {
+  std::string out = "signalsim batch manifest 1\n";
+  for (const RunSpec& run : runs) {
+    std::ifstream in(run.scenario, std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::uint64_t hash = 1469598103934665603ULL;
+    for (unsigned char c : bytes) hash = (hash ^ c) * 1099511628211ULL;
+    out += std::to_string(run.index) + "\t" + run.scenario + "\t" + format("%016llx", static_cast<unsigned long long>(hash));
+    for (const std::string& item : run.set) out += "\t" + item;
+    out += "\n";
+  }
+  return out;
+}
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+// One batch per output directory at a time: a second one would remove the first one's runs.
+class OutputLock {
+ public:
+  explicit OutputLock(const std::string& out_dir) {
+    const std::string path = (fs::path(out_dir) / ".lock").string();
+    fd_ = open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    if (fd_ < 0 || flock(fd_, LOCK_EX | LOCK_NB) != 0)
+      throw InputError(out_dir, 0, "another signalsim batch is writing to this --out directory");
+  }
+  ~OutputLock() {
+    if (fd_ >= 0) close(fd_);  // releases the lock
+  }
+  OutputLock(const OutputLock&) = delete;
+  OutputLock& operator=(const OutputLock&) = delete;
+
+ private:
+  int fd_ = -1;
+};
+
 }  // namespace
 
 int BatchResult::exit_code() const {
@@ -220,9 +265,17 @@ BatchResult run_batch(const std::vector<RunSpec>& runs, const BatchSettings& set
   BatchResult result;
   result.total = runs.size();
   fs::create_directories(fs::path(settings.out_dir) / "runs");
+  const OutputLock lock(settings.out_dir);
+  std::signal(SIGPIPE, SIG_IGN);  // a closed stdout (| head) must not kill the batch
   const std::string csv = results_path(settings.out_dir);
+  const std::string manifest_path = (fs::path(settings.out_dir) / "batch.manifest").string();
+  const std::string manifest = manifest_of(runs);
 
   if (settings.resume && fs::exists(csv)) {
+    if (!fs::exists(manifest_path) || read_text(manifest_path) != manifest)
+      throw InputError(settings.out_dir, 0,
+                       "--resume: the results there were made with other settings (scenarios, their "
+                       "contents or --set values changed); use another --out");
     for (auto& [index, row] : read_results_csv(csv)) {
       if (index >= runs.size() || !row_matches(row, runs[index]))
         throw InputError(csv, static_cast<int>(index) + 2,
@@ -234,6 +287,7 @@ BatchResult run_batch(const std::vector<RunSpec>& runs, const BatchSettings& set
     }
     result.skipped = result.rows.size();
   }
+  write_file_atomically(manifest_path, manifest);
   write_file_atomically(csv, results_csv(settings.swept, result.rows));
 
   std::vector<ProcessJob> jobs;
@@ -258,6 +312,7 @@ BatchResult run_batch(const std::vector<RunSpec>& runs, const BatchSettings& set
     std::printf("resuming: %zu of %zu runs already done, %zu to run\n", result.skipped, runs.size(), jobs.size());
 
   Progress progress(jobs.size(), settings.quiet);
+  auto last_write = Clock::now();
   const bool completed = run_processes(
       jobs, settings.jobs,
       [&](const ProcessJob& job, const ProcessResult& process) {
@@ -265,7 +320,12 @@ BatchResult run_batch(const std::vector<RunSpec>& runs, const BatchSettings& set
         ResultRow row = make_row(run, settings.out_dir, run_dirs[job.id], settings.timeout, process);
         progress.finished(run, row);
         result.rows[job.id] = std::move(row);
-        write_file_atomically(csv, results_csv(settings.swept, result.rows));
+        // Each run's own summary.json is already on disk; results.csv is rewritten at most once a
+        // second (and at the end), so a batch of many thousands of runs stays linear.
+        if (Clock::now() - last_write >= std::chrono::seconds(1)) {
+          write_file_atomically(csv, results_csv(settings.swept, result.rows));
+          last_write = Clock::now();
+        }
       },
       [&] { progress.tick(); });
   progress.end();

@@ -79,6 +79,9 @@ JUnitCase check_one(const RunSpec& run, const ResultRow* row, const CheckOptions
                                                                                    : JUnitCase::Result::Passed;
 
   if (o.update) {
+    // A golden file records accepted behaviour: never accept a run whose expectations failed.
+    if (!failed_expectations.empty())
+      return verdict(JUnitCase::Result::Failed, "not updated: " + failed_expectations);
     fs::create_directories(o.golden_dir);
     write_file_atomically(golden, read_text_file(events_path));
     return verdict(expectations_verdict, format("updated %s (%zu events)", golden.c_str(), events.size()) + note);

@@ -74,7 +74,7 @@ pid_t spawn(const std::vector<std::string>& argv, int err_fd, bool own_group) {
     setpgid(0, 0);
     prctl(PR_SET_PDEATHSIG, SIGKILL);  // never outlive the batch
     if (getppid() != parent) _exit(127);
-    const int null_fd = open("/dev/null", O_RDWR);
+    const int null_fd = open("/dev/null", O_RDWR | O_CLOEXEC);  // the dup2 copies stay open
     if (null_fd >= 0) {
       dup2(null_fd, STDIN_FILENO);
       dup2(null_fd, STDOUT_FILENO);
@@ -247,8 +247,11 @@ bool run_processes(const std::vector<ProcessJob>& jobs, int parallel,
   }
 
   if (!g_interrupted) return true;
-  // Interrupted: stop every worker, report none of them.
-  for (Worker& w : running) kill(-w.pid, SIGTERM);
+  // Interrupted: stop every worker still running. A worker that had already finished by itself
+  // (it exited, it was not killed) is reported: its run is complete and must not be lost.
+  for (Worker& w : running) reap(w, false);
+  for (Worker& w : running)
+    if (!w.reaped) kill(-w.pid, SIGTERM);
   const auto deadline = Clock::now() + std::chrono::seconds(2);
   for (Worker& w : running) {
     while (!reap(w, false) && Clock::now() < deadline) std::this_thread::sleep_for(std::chrono::milliseconds(10));
@@ -256,7 +259,11 @@ bool run_processes(const std::vector<ProcessJob>& jobs, int parallel,
       kill(-w.pid, SIGKILL);
       reap(w, true);
     }
-    close_worker(w);
+  }
+  std::sort(running.begin(), running.end(), [](const Worker& a, const Worker& b) { return a.job->id < b.job->id; });
+  for (Worker& w : running) {
+    if (WIFEXITED(w.status)) finish(w);
+    else close_worker(w);
   }
   return false;
 }

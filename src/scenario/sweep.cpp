@@ -75,7 +75,9 @@ void check_key(const std::string& key, const YAML::Node& key_node, const std::st
   if (contains(leading_columns(), key) || contains(outcome_columns(), key) || contains(trailing_columns(), key))
     throw InputError(file, yaml_line(key_node),
                      where + "." + key + ": '" + key + "' is a results.csv column, not a key to sweep");
-  if (!seen.insert(key).second)
+  // `params.set.X` and `X` name the same parameter: compare their targets, not their spellings.
+  const std::string target = key.rfind("params.set.", 0) == 0 ? key.substr(11) : key;
+  if (!seen.insert(target).second)
     throw InputError(file, yaml_line(key_node), where + "." + key + ": the key is swept or set twice");
 }
 

@@ -38,21 +38,35 @@ class StderrCapture {
     char name[] = "/tmp/signalsim-sumo-XXXXXX";
     fd_ = mkstemp(name);
     if (fd_ < 0) return;
-    path_ = name;
+    unlink(name);  // nameless from the start: a killed worker leaves nothing behind
     saved_ = dup(STDERR_FILENO);
     dup2(fd_, STDERR_FILENO);
   }
-  ~StderrCapture() { restore(); if (!path_.empty()) std::remove(path_.c_str()); }
+  ~StderrCapture() {
+    restore();
+    if (fd_ >= 0) close(fd_);
+  }
   void restore() {
     if (saved_ < 0) return;
     std::fflush(stderr);
     dup2(saved_, STDERR_FILENO);
     close(saved_);
-    close(fd_);
     saved_ = -1;
   }
+  /// SUMO's first "Error: " line (else the first line) written so far.
   std::string first_error() const {
-    std::ifstream in(path_);
+    if (fd_ < 0) return {};
+    std::fflush(stderr);
+    std::string text;
+    char buf[4096];
+    for (off_t at = 0;;) {
+      const ssize_t n = pread(fd_, buf, sizeof buf, at);
+      if (n <= 0) break;
+      text.append(buf, static_cast<std::size_t>(n));
+      at += n;
+      if (text.size() > (1u << 20)) break;  // SUMO's first lines are enough
+    }
+    std::istringstream in(text);
     std::string line, first_line;
     while (std::getline(in, line)) {
       if (line.rfind("Error: ", 0) == 0) return line.substr(7);
@@ -62,7 +76,6 @@ class StderrCapture {
   }
 
  private:
-  std::string path_;
   int fd_ = -1;
   int saved_ = -1;
 };
