@@ -27,6 +27,10 @@ def column(rows, name, convert=number):
     return [convert(r.get(name, "")) for r in rows]
 
 
+# The columns every picture reads (written by `signalsim run`).
+REQUIRED_TIMELINE_COLUMNS = ("time", "s_front", "speed", "blinker", "blinker_source", "sumo_signals")
+
+
 def read_run(run_dir):
     """timeline rows, events rows, summary dict and metrics dict (possibly empty) of a run."""
     summary_path = os.path.join(run_dir, "summary.json")
@@ -40,6 +44,9 @@ def read_run(run_dir):
     timeline = read_csv(os.path.join(run_dir, "timeline.csv"))
     if not timeline:
         raise InputError(f"{run_dir}/timeline.csv: no rows")
+    missing = [c for c in REQUIRED_TIMELINE_COLUMNS if c not in timeline[0]]
+    if missing:
+        raise InputError(f"{run_dir}/timeline.csv: missing column(s) {', '.join(missing)}")
     events_path = os.path.join(run_dir, "events.csv")
     events = read_csv(events_path) if os.path.exists(events_path) else []
     metrics = summary.get("metrics")
