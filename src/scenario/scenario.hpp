@@ -6,6 +6,7 @@
 #include <vector>
 
 #include <map>
+#include <optional>
 
 #include "scenario/parameters.hpp"
 #include "traffic_light/perception_model.hpp"
@@ -26,6 +27,26 @@ struct EgoSpec {
   double accel = 1.0;               ///< comfortable acceleration [m/s^2] (Autoware normal set)
   double decel = 1.0;               ///< comfortable deceleration [m/s^2] (Autoware normal set)
   double emergency_decel = 9.0;     ///< the most the ego can brake [m/s^2] (SUMO passenger default)
+  /// Lane index the ego departs on; -1 = the planned lane of the first edge. Another lane makes
+  /// signalsim plan a lane change onto the planned lane on the first edge (see LaneChangeManeuver).
+  int depart_lane = -1;
+};
+
+/// `maneuvers: [{lane_change: {at, length}}]`: the timing of the lane change from ego.depart_lane to
+/// the first edge's planned lane (the lane with the connection to the next edge). Without it the
+/// lane change starts kDefaultLaneChangeLead metres after base_link's depart position and is
+/// kDefaultLaneChangeLength long.
+struct LaneChangeManeuver {
+  double at = -1.0;      ///< route s of base_link where the lateral motion starts [m]; < 0: default
+  double length = 50.0;  ///< [m] of route s over which the ego shifts one lane
+};
+inline constexpr double kDefaultLaneChangeLead = 20.0;    ///< [m]
+inline constexpr double kDefaultLaneChangeLength = 50.0;  ///< [m]
+
+/// Every step on a normal lane while a lateral plan is driven, |lateral_offset - planned_offset|
+/// stays within `tolerance`.
+struct ExpectLateralFollowsPlan {
+  double tolerance = 0.2;
 };
 
 /// A blinker direction is on continuously from at least `lead` metres (front bumper) before the
@@ -68,7 +89,7 @@ struct ExpectEmergencyStopAtLight {
 struct ExpectNeverRunsRed {};
 using Expectation = std::variant<ExpectBlinkerThrough, ExpectNoBlinker, ExpectBlinkerNever, ExpectBlinkerOn,
                                  ExpectStopsBeforeLight, ExpectPassesLight, ExpectEmergencyStopAtLight,
-                                 ExpectNeverRunsRed>;
+                                 ExpectNeverRunsRed, ExpectLateralFollowsPlan>;
 
 /// One line describing an expectation, e.g. "blinker_through_junction C left lead 30".
 std::string describe(const Expectation& e);
@@ -94,6 +115,7 @@ struct Scenario {
   PerceptionModelParameters perception;  ///< `perception:`; seeded with `seed`; all faults off by default
   std::map<std::string, double> light_offsets;  ///< `light_offsets: {tls: seconds}` program shifts
   ParameterSet params;                  ///< defaults, params.files, the country, params.set, overrides
+  std::optional<LaneChangeManeuver> lane_change;  ///< from `maneuvers` (at most one lane_change)
   std::vector<Expectation> expect;
 };
 

@@ -7,8 +7,10 @@
 #include "planning/speed_limit_planner.hpp"
 #include "planning/stop/jerk_limited_stop.hpp"
 #include "scenario/light_stage.hpp"
+#include "scenario/route_planning.hpp"
 #include "sumo/approach_lights.hpp"
 #include "sumo/sumo_session.hpp"
+#include "turn_signal/behavior_modules.hpp"
 #include "turn_signal/turn_signal_decider.hpp"
 
 namespace signalsim {
@@ -36,7 +38,7 @@ int signal_mask(Blinker b) {
 
 bool is_red(char state) { return state == 'r' || state == 'u'; }
 
-sumo::SessionConfig session_config(const Scenario& scenario, const sumo::RoutePlan& plan) {
+sumo::SessionConfig session_config(const Scenario& scenario, const sumo::RoutePlan& plan, const LateralPlan& lateral) {
   sumo::SessionConfig config;
   config.net = scenario.net;
   config.additional = scenario.additional;
@@ -44,6 +46,7 @@ sumo::SessionConfig session_config(const Scenario& scenario, const sumo::RoutePl
   config.seed = scenario.seed;
   config.route = scenario.ego.route;
   config.depart_lane = plan.lane_per_edge.empty() ? 0 : plan.lane_per_edge.front();
+  if (scenario.ego.depart_lane >= 0) config.depart_lane = scenario.ego.depart_lane;
   config.depart_pos = scenario.ego.depart_pos;
   config.depart_speed = scenario.ego.depart_speed;
   config.max_speed = scenario.ego.max_speed;
@@ -51,6 +54,11 @@ sumo::SessionConfig session_config(const Scenario& scenario, const sumo::RoutePl
   config.accel = scenario.ego.accel;
   config.emergency_decel = scenario.ego.emergency_decel;
   config.keep_planned_lanes = plan.lane_changes == 0;
+  if (lateral.active()) {
+    // signalsim drives the lane change (sublane offsets re-commanded every step, spec SUMO §4).
+    config.lateral_resolution = 0.1;
+    config.keep_planned_lanes = true;
+  }
   return config;
 }
 
@@ -116,7 +124,10 @@ RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, co
   TurnSignalDecider decider(turn_signal_parameters(scenario.params, b2f));
   RunRecord record;
   record.base_link_to_front = b2f;
-  sumo::SumoSession session(session_config(scenario, plan));
+  const LateralPlan lateral = plan_lateral(scenario, plan, net);
+  const BehaviorSignalParameters behavior_params = behavior_signal_parameters(decider.parameters());
+  BehaviorModules modules;
+  sumo::SumoSession session(session_config(scenario, plan, lateral));
   // Arrow bulbs from every program SUMO loaded (additional files may replace the net's program).
   std::vector<sumo::ApproachLight> approaches = sumo::approach_lights(net, route);
   for (sumo::ApproachLight& a : approaches) a.has_arrow = sumo::shows_arrow(session.program_states(a.tls_id), a);
@@ -143,8 +154,32 @@ RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, co
     last_s = s_front;
     const EgoOnRoute ego{s_front, s_front - b2f, observed.speed};
 
+    // lateral plan: measured against the planned lane while the ego is on the plan's edge.
+    const bool on_plan_edge = lateral.active() && observed.edge == lateral.edge;
+    const double lateral_offset =
+        on_plan_edge ? session.lateral_offset_from(lateral.reference_lane) : observed.lateral_offset;
+    std::optional<double> planned_offset;
+    if (on_plan_edge) planned_offset = lateral.plan.offset_at(ego.s_base);
+
+    // behaviour modules (spec TSD §8): the lane change runs until base_link passes its end.
+    LaneChangeSignal::Input lane_change;
+    BehaviorRequests requests;
+    requests.now = observed.time;
+    if (on_plan_edge) {
+      const ShiftLine& line = lateral.plan.lines().front();
+      if (ego.s_base <= line.s_end) {
+        lane_change.phase = LaneChangeSignal::Phase::Running;
+        lane_change.direction = line.relative_shift() > 0 ? TurnIndicator::EnableLeft : TurnIndicator::EnableRight;
+        lane_change.lane_changing_start = line.s_start;
+        lane_change.lane_changing_end = line.s_end;
+        lane_change.boundary_crossing = line.s_at_offset(lateral.boundary);
+        requests.lane_change = &lane_change;
+      }
+    }
+    const TurnSignalInfo behavior = merge_behavior_requests(modules, requests, ego, behavior_params);
+
     // decide: blinker (spec TSD) and light (spec TLJ).
-    const TurnSignalDecision decision = decider.decide(route, ego);
+    const TurnSignalDecision decision = decider.decide(route, ego, behavior);
     const Blinker blinker = blinker_of(decision);
     const std::vector<LightStep> light_steps =
         lights.step(observed.time, s_front, observed.speed, observed.accel, light_state);
@@ -173,6 +208,8 @@ RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, co
 
     // apply, step.
     session.command(signal_mask(blinker), speed);
+    // The plan's offset where base_link will be after the step (normal lanes of the plan's edge only).
+    if (on_plan_edge) session.command_lateral_offset(lateral.plan.offset_at(ego.s_base + speed * dt), lateral.reference_lane);
     const bool alive = session.step();
 
     // record.
@@ -185,7 +222,8 @@ RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, co
     row.accel = observed.accel;
     row.edge = observed.edge;
     row.lane = observed.lane;
-    row.lateral_offset = observed.lateral_offset;
+    row.lateral_offset = lateral_offset;
+    row.planned_offset = planned_offset;
     row.blinker = blinker;
     row.blinker_source = blinker == Blinker::None ? RequestSource::None : decision.source;
     row.sumo_signals = alive ? session.ego_signals() : -1;
