@@ -1,0 +1,155 @@
+// Lateral maneuvers end to end on the real libsumo (issue 5): the bundled lane-change scenarios run
+// through run_scenario, and each step is checked against spec TSD §8.2 (lane change, signalsim
+// activation: on once the front is within max(v * turn_signal_search_time,
+// turn_signal_minimum_search_distance) of the lane-changing start; off once base_link passes the
+// lane-changing end) and against the lateral plan (measured offset within 0.2 m of the plan).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <string>
+
+#include "scenario/route_planning.hpp"
+#include "scenario/scenario.hpp"
+#include "scenario/step_loop.hpp"
+#include "sumo/net_index.hpp"
+
+namespace signalsim {
+namespace {
+
+constexpr double kSearchTime = 3.0;          // turn_signal_search_time
+constexpr double kMinSearchDistance = 10.0;  // turn_signal_minimum_search_distance
+constexpr double kTolerance = 0.2;           // m, lateral tracking
+constexpr double kLaneWidth = 3.2;           // cross.net.xml lanes
+
+struct ManeuverRun {
+  Scenario scenario;
+  LateralPlan lateral;
+  RunRecord record;
+};
+
+ManeuverRun run(const std::string& name) {
+  ManeuverRun r;
+  r.scenario = load_scenario(std::string(SIGNALSIM_SOURCE_DIR) + "/scenarios/" + name + ".yaml");
+  const sumo::NetIndex net = sumo::NetIndex::load(r.scenario.net);
+  const sumo::RoutePlan plan = plan_route(r.scenario, net);
+  r.lateral = plan_lateral(r.scenario, plan, net);
+  r.record = run_scenario(r.scenario, plan, net);
+  return r;
+}
+
+double s_base(const ManeuverRun& r, const TimelineRow& row) { return row.s_front - r.record.base_link_to_front; }
+
+// Every step with a plan: measured within 0.2 m of it; the plan starts on the depart lane's offset
+// and ends on the planned lane's centre; the lane change is never a jump.
+void expect_tracks_plan(const ManeuverRun& r, double start_offset) {
+  ASSERT_TRUE(r.lateral.active());
+  int steps = 0;
+  std::optional<double> previous;
+  for (const TimelineRow& row : r.record.rows) {
+    if (!row.planned_offset) continue;
+    ++steps;
+    EXPECT_NEAR(row.lateral_offset, *row.planned_offset, kTolerance) << "t=" << row.time;
+    if (previous) {
+      EXPECT_LT(std::abs(row.lateral_offset - *previous), 0.5) << "a jump at t=" << row.time;
+    }
+    previous = row.lateral_offset;
+  }
+  EXPECT_GT(steps, 100);
+  const auto first = std::find_if(r.record.rows.begin(), r.record.rows.end(),
+                                  [](const TimelineRow& row) { return row.planned_offset.has_value(); });
+  EXPECT_NEAR(*first->planned_offset, start_offset, 1e-9);
+  EXPECT_NEAR(first->lateral_offset, start_offset, 0.01);
+  EXPECT_NEAR(r.lateral.plan.lines().back().shift_end, 0.0, 1e-12);
+}
+
+// The first step (index) where the blinker is `b` from `source`, or -1.
+long first_step(const ManeuverRun& r, Blinker b, RequestSource source, std::size_t from = 0) {
+  for (std::size_t i = from; i < r.record.rows.size(); ++i)
+    if (r.record.rows[i].blinker == b && r.record.rows[i].blinker_source == source) return static_cast<long>(i);
+  return -1;
+}
+
+// The lane-change blinker turns on exactly at the first step with the front within the prep
+// distance of the lane-changing start, and stays on (from the lane change) until base_link passes
+// the lane-changing end; returns the index of the first step after it.
+std::size_t expect_lane_change_stretch(const ManeuverRun& r, Blinker b) {
+  const ShiftLine& line = r.lateral.plan.lines().front();
+  const auto& rows = r.record.rows;
+  std::size_t i = 0;
+  for (; i < rows.size(); ++i) {
+    const double prep = std::max(rows[i].speed * kSearchTime, kMinSearchDistance);
+    if (line.s_start - rows[i].s_front <= prep) break;
+    EXPECT_EQ(rows[i].blinker, Blinker::None) << "too early at s_front " << rows[i].s_front;
+  }
+  if (i >= rows.size()) {
+    ADD_FAILURE() << "the lane change never came within reach";
+    return i;
+  }
+  EXPECT_GT(i, 0u) << "the scenario should start out of reach";
+  for (; i < rows.size() && s_base(r, rows[i]) <= line.s_end; ++i) {
+    EXPECT_EQ(rows[i].blinker, b) << "s_front " << rows[i].s_front;
+    EXPECT_EQ(rows[i].blinker_source, RequestSource::LaneChange) << "s_front " << rows[i].s_front;
+  }
+  return i;
+}
+
+TEST(ManeuverScenario, LaneChangeRightAlone) {
+  const ManeuverRun r = run("lane_change_right");
+  ASSERT_TRUE(r.record.arrived);
+  expect_tracks_plan(r, kLaneWidth);  // departs on in_S_1, one lane left of the planned in_S_0
+  const std::size_t after = expect_lane_change_stretch(r, Blinker::Right);
+  for (std::size_t i = after; i < r.record.rows.size(); ++i)
+    EXPECT_EQ(r.record.rows[i].blinker, Blinker::None) << "s_front " << r.record.rows[i].s_front;
+  // The lane change really happened: SUMO has the ego on in_S_0 at the end of in_S, and it went
+  // straight through C on the route (no off-route step).
+  std::string last_in_s;
+  for (const TimelineRow& row : r.record.rows)
+    if (row.edge == "in_S") last_in_s = row.lane;
+  EXPECT_EQ(last_in_s, "in_S_0");
+  EXPECT_EQ(r.record.off_route_steps, 0);
+  EXPECT_EQ(r.record.collisions, 0);
+}
+
+TEST(ManeuverScenario, LaneChangeThenLeftTurnTheLeftTurnWaitsForTheLaneChangeEnd) {
+  const ManeuverRun r = run("lane_change_then_left");
+  ASSERT_TRUE(r.record.arrived);
+  expect_tracks_plan(r, -kLaneWidth);  // departs on in_S_0, the left turn needs in_S_1
+  const std::size_t after = expect_lane_change_stretch(r, Blinker::Left);
+  // The intersection's own request would have started earlier: 3 v + 30 before the turn lane at
+  // 189.60 (s_front ~118, see intersection_left.yaml); the lane-change path ends at base_link 120.
+  const long turn = first_step(r, Blinker::Left, RequestSource::Intersection);
+  ASSERT_GE(turn, 0);
+  EXPECT_EQ(static_cast<std::size_t>(turn), after) << "the left turn takes over right after the lane change";
+  EXPECT_GT(s_base(r, r.record.rows[static_cast<std::size_t>(turn)]), r.lateral.plan.lines().front().s_end);
+  const double turn_search = r.record.rows[static_cast<std::size_t>(turn)].speed * kSearchTime + 30.0;
+  EXPECT_LT(189.60 - r.record.rows[static_cast<std::size_t>(turn)].s_front, turn_search)
+      << "the intersection request was already within reach when the lane change ended";
+  for (std::size_t i = 0; i < r.record.rows.size(); ++i) EXPECT_NE(r.record.rows[i].blinker, Blinker::Right);
+  EXPECT_EQ(r.record.off_route_steps, 0);
+}
+
+TEST(ManeuverScenario, EarlyLaneChangeThenLeftTurnTwoStretches) {
+  const ManeuverRun r = run("lane_change_gap_then_left");
+  ASSERT_TRUE(r.record.arrived);
+  expect_tracks_plan(r, -kLaneWidth);
+  const auto& rows = r.record.rows;
+  // Departs already within reach (lane-changing start 20 m, front at 5 m): on from the first step.
+  EXPECT_EQ(rows.front().blinker, Blinker::Left);
+  EXPECT_EQ(rows.front().blinker_source, RequestSource::LaneChange);
+  std::size_t i = 0;
+  for (; i < rows.size() && s_base(r, rows[i]) <= r.lateral.plan.lines().front().s_end; ++i)
+    EXPECT_EQ(rows[i].blinker_source, RequestSource::LaneChange);
+  const long turn = first_step(r, Blinker::Left, RequestSource::Intersection, i);
+  ASSERT_GT(turn, static_cast<long>(i)) << "a gap without blinker between the two stretches";
+  for (std::size_t k = i; k < static_cast<std::size_t>(turn); ++k) EXPECT_EQ(rows[k].blinker, Blinker::None);
+  // The intersection request: on at the first step with the turn lane (189.60) within 3 v + 30.
+  const TimelineRow& on = rows[static_cast<std::size_t>(turn)];
+  const TimelineRow& before = rows[static_cast<std::size_t>(turn) - 1];
+  EXPECT_LT(189.60 - on.s_front, on.speed * kSearchTime + 30.0);
+  EXPECT_GE(189.60 - before.s_front, before.speed * kSearchTime + 30.0);
+}
+
+}  // namespace
+}  // namespace signalsim
