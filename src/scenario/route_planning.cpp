@@ -1,5 +1,7 @@
 #include "scenario/route_planning.hpp"
 
+#include <algorithm>
+#include <optional>
 #include <sstream>
 
 #include "scenario/input_error.hpp"
@@ -13,35 +15,44 @@ sumo::RoutePlan prepare_route(sumo::RoutePlan plan, const ParameterSet& params) 
   return plan;
 }
 
-LateralPlan plan_lateral(const Scenario& scenario, const sumo::RoutePlan& plan, const sumo::NetIndex& net) {
-  LateralPlan lateral;
+namespace {
+
+[[noreturn]] void fail(const Scenario& scenario, const std::string& message) {
+  throw InputError(scenario.path, 0, message);
+}
+
+// The lane change on the first edge, if the ego departs on another lane than the planned one.
+std::optional<LateralSegment> plan_depart_lane_change(const Scenario& scenario, const sumo::RoutePlan& plan,
+                                                      const sumo::NetIndex& net) {
   const Lanelet& first = plan.map.at(0);
-  lateral.edge = first.edge_id;
-  lateral.reference_lane = first.lane_id;
   const sumo::NetEdge* edge = net.edge(first.edge_id);
   const int planned = plan.lane_per_edge.empty() ? 0 : plan.lane_per_edge.front();
   const int depart = scenario.ego.depart_lane < 0 ? planned : scenario.ego.depart_lane;
-  if (edge == nullptr) return lateral;
+  if (edge == nullptr) return std::nullopt;
   if (depart >= static_cast<int>(edge->lanes.size()) || !edge->lanes[static_cast<std::size_t>(depart)].allows_passenger) {
     std::ostringstream out;
     out << "ego.depart_lane: edge '" << edge->id << "' has no lane " << depart << " the ego may drive ("
         << edge->lanes.size() << " lanes)";
-    throw InputError(scenario.path, 0, out.str());
+    fail(scenario, out.str());
   }
   if (depart == planned) {
     if (scenario.lane_change)
-      throw InputError(scenario.path, 0,
-                       "maneuvers: lane_change: the ego departs on the planned lane " + first.lane_id +
-                           " of the first edge; set ego.depart_lane to another lane");
-    return lateral;
+      fail(scenario, "maneuvers: lane_change: the ego departs on the planned lane " + first.lane_id +
+                         " of the first edge; set ego.depart_lane to another lane");
+    return std::nullopt;
   }
+  LateralSegment seg;
+  seg.kind = LateralKind::LaneChange;
+  seg.edge = first.edge_id;
+  seg.reference_lane = first.lane_id;
   // The depart lane's centre seen from the planned lane's centre (left positive).
   const auto width = [&](int i) { return edge->lanes[static_cast<std::size_t>(i)].width; };
   const int step = depart > planned ? 1 : -1;
   double offset = 0.5 * width(planned) + 0.5 * width(depart);
   for (int i = planned + step; i != depart; i += step) offset += width(i);
   offset *= step;
-  lateral.boundary = step * 0.5 * width(planned);
+  seg.boundary = step * 0.5 * width(planned);
+  seg.left_half_width = seg.right_half_width = 0.5 * width(planned);
   const double b2f = scenario.ego.base_link_to_front;
   const double depart_base = scenario.ego.depart_pos - b2f;
   LaneChangeManeuver m;
@@ -51,16 +62,88 @@ LateralPlan plan_lateral(const Scenario& scenario, const sumo::RoutePlan& plan, 
   if (m.at < depart_base) {
     std::ostringstream out;
     out << "maneuvers: lane_change.at " << m.at << " m is behind base_link's depart position " << depart_base << " m";
-    throw InputError(scenario.path, 0, out.str());
+    fail(scenario, out.str());
   }
   // No lateral command on internal lanes: the shift ends while the front is still on the edge.
   if (m.at + m.length + b2f > first.length) {
     std::ostringstream out;
     out << "maneuvers: the lane change on '" << edge->id << "' (base_link " << m.at << " + " << m.length
         << " m) must end while the front bumper is still on the edge (" << first.length << " m)";
-    throw InputError(scenario.path, 0, out.str());
+    fail(scenario, out.str());
   }
-  lateral.plan = ShiftPlan({ShiftLine{m.at, m.at + m.length, offset, 0.0}});
+  seg.plan = ShiftPlan({ShiftLine{m.at, m.at + m.length, offset, 0.0}});
+  return seg;
+}
+
+LateralSegment plan_avoid(const Scenario& scenario, const sumo::RoutePlan& plan, const AvoidManeuver& avoid,
+                          std::size_t index) {
+  const std::string where = "maneuvers: avoid '" + avoid.obstacle + "': ";
+  const ObstacleSpec* obstacle = nullptr;
+  for (const ObstacleSpec& o : scenario.obstacles)
+    if (o.id == avoid.obstacle) obstacle = &o;
+  if (obstacle == nullptr) fail(scenario, where + "no such obstacle in 'obstacles'");
+  const auto route_index = plan.map.find_edge(obstacle->edge);
+  if (!route_index) fail(scenario, where + "edge '" + obstacle->edge + "' is not on the ego's route");
+  const Lanelet& lanelet = plan.map.at(*route_index);
+  const std::string lane_id = obstacle->edge + "_" + std::to_string(obstacle->lane);
+  if (lanelet.lane_id != lane_id)
+    fail(scenario, where + "it stands on " + lane_id + ", not on the ego's planned lane " + lanelet.lane_id);
+  if (obstacle->pos > lanelet.length || obstacle->pos < obstacle->length)
+    fail(scenario, where + "its position must lie between its length and the lane length");
+  const double b2f = scenario.ego.base_link_to_front;
+  AvoidanceRequest request;
+  request.s_object_start = lanelet.s_start + obstacle->pos - obstacle->length;
+  request.s_object_end = lanelet.s_start + obstacle->pos;
+  request.object_left = 0.5 * kObstacleWidth;
+  request.object_right = -0.5 * kObstacleWidth;
+  request.clearance = avoid.clearance;
+  request.vehicle_width = kObstacleWidth;  // the ego uses SUMO's default width too
+  request.side = avoid.side == "left" ? AvoidSide::Left : avoid.side == "right" ? AvoidSide::Right : AvoidSide::Auto;
+  request.base_link_to_front = b2f;
+  request.rear_overhang = scenario.ego.length - b2f;
+  request.speed = scenario.ego.max_speed;
+  if (avoid.length > 0.0) request.lengths.fixed_length = avoid.length;
+  LateralSegment seg;
+  seg.kind = LateralKind::Avoidance;
+  seg.edge = lanelet.edge_id;
+  seg.reference_lane = lanelet.lane_id;
+  seg.left_half_width = seg.right_half_width = 0.5 * lanelet.width;
+  seg.plan = plan_avoidance(request);
+  seg.first_line_id = 1000 * (index + 1);
+  const double first_s = seg.plan.lines().front().s_start;
+  const double last_s = seg.plan.lines().back().s_end;
+  if (first_s < lanelet.s_start || last_s + b2f > lanelet.s_end()) {
+    std::ostringstream out;
+    out << where << "the avoidance (base_link " << first_s << " to " << last_s << " m) must start and end while the "
+        << "ego is on edge '" << seg.edge << "' (route s " << lanelet.s_start << " to " << lanelet.s_end()
+        << " m, front bumper included); move the obstacle or shorten the shifts (length)";
+    fail(scenario, out.str());
+  }
+  return seg;
+}
+
+}  // namespace
+
+LateralPlan plan_lateral(const Scenario& scenario, const sumo::RoutePlan& plan, const sumo::NetIndex& net) {
+  LateralPlan lateral;
+  if (auto seg = plan_depart_lane_change(scenario, plan, net)) lateral.segments.push_back(std::move(*seg));
+  for (const ObstacleSpec& o : scenario.obstacles) {
+    const sumo::NetEdge* edge = net.edge(o.edge);
+    if (edge == nullptr || edge->is_internal) fail(scenario, "obstacles: '" + o.id + "': no edge '" + o.edge + "'");
+    if (o.lane >= static_cast<int>(edge->lanes.size()))
+      fail(scenario, "obstacles: '" + o.id + "': edge '" + o.edge + "' has no lane " + std::to_string(o.lane));
+    if (o.pos > edge->lanes[static_cast<std::size_t>(o.lane)].length)
+      fail(scenario, "obstacles: '" + o.id + "': pos is beyond the end of its lane");
+  }
+  for (std::size_t i = 0; i < scenario.avoids.size(); ++i) {
+    LateralSegment seg = plan_avoid(scenario, plan, scenario.avoids[i], i);
+    if (lateral.on_edge(seg.edge))
+      fail(scenario, "maneuvers: at most one maneuver per edge ('" + seg.edge + "' has two)");
+    lateral.segments.push_back(std::move(seg));
+  }
+  std::sort(lateral.segments.begin(), lateral.segments.end(), [](const LateralSegment& a, const LateralSegment& b) {
+    return a.plan.lines().front().s_start < b.plan.lines().front().s_start;
+  });
   return lateral;
 }
 

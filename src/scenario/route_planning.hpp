@@ -2,6 +2,10 @@
 // change lanelet attributes (spec TSD §5.3 exit-signal marking, Japan).
 #pragma once
 
+#include <cstdint>
+#include <string>
+#include <vector>
+
 #include "planning/shift_line.hpp"
 #include "scenario/scenario.hpp"
 #include "sumo/net_index.hpp"
@@ -15,22 +19,37 @@ namespace signalsim {
 /// `ego.route`) for a route the net cannot drive.
 sumo::RoutePlan plan_route(const Scenario& scenario, const sumo::NetIndex& net);
 
-/// The lateral plan of a scenario (issue 5, spec SUMO §4): the lane change from ego.depart_lane onto
-/// the first edge's planned lane (the lane with the connection to the next edge), one shift line on
-/// base_link's route s from the depart lane's offset to 0. Offsets are lateral, left positive, from
-/// the centre of `reference_lane`. Empty plan when the ego departs on the planned lane.
-struct LateralPlan {
-  std::string edge;            ///< the edge the plan is driven on (the route's first edge)
+/// The lateral plan of a scenario (issue 5, spec SUMO §4), one segment per maneuver, each driven on
+/// one route edge: the lane change from ego.depart_lane onto the first edge's planned lane (the lane
+/// with the connection to the next edge), and the avoidance of declared obstacles. Shift lines are on
+/// base_link's route s; offsets are lateral, left positive, from the centre of the segment's
+/// `reference_lane` (the edge's planned lane).
+enum class LateralKind { LaneChange, Avoidance };
+struct LateralSegment {
+  LateralKind kind = LateralKind::LaneChange;
+  std::string edge;            ///< the edge the plan is driven on
   std::string reference_lane;  ///< its planned lane: offsets are measured from its centre
   ShiftPlan plan;
-  /// Lateral position of the lane boundary the ego crosses (the adjacent lane's boundary) [m].
+  /// Lane change: lateral position of the lane boundary the ego crosses (the adjacent lane's boundary) [m].
   double boundary = 0.0;
-  bool active() const { return !plan.empty(); }
+  double left_half_width = 1.6;   ///< of the reference lane [m] (lane-bound test)
+  double right_half_width = 1.6;
+  std::uint64_t first_line_id = 0;  ///< ids of the lines: first_line_id + index
+};
+struct LateralPlan {
+  std::vector<LateralSegment> segments;  ///< ordered along the route, at most one per edge
+  bool active() const { return !segments.empty(); }
+  const LateralSegment* on_edge(const std::string& edge) const {
+    for (const LateralSegment& seg : segments)
+      if (seg.edge == edge) return &seg;
+    return nullptr;
+  }
 };
 
 /// Throws InputError (naming ego.depart_lane or maneuvers) for a depart lane the edge does not have
-/// or the ego may not use, a lane change without a lane to change to, or one that does not end
-/// while the front bumper is still on the first edge.
+/// or the ego may not use, a lane change without a lane to change to, an obstacle off the route's
+/// planned lanes, an avoidance of an unknown obstacle, or a shift that does not start and end while
+/// the ego is on the segment's edge (no lateral command on internal lanes).
 LateralPlan plan_lateral(const Scenario& scenario, const sumo::RoutePlan& plan, const sumo::NetIndex& net);
 
 /// The same preparation for a route built elsewhere (inspect).

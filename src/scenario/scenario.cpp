@@ -130,7 +130,7 @@ PerceptionModelParameters parse_perception(const YAML::Node& node, const std::st
 // Top-level scenario keys; any other override key is a parameter name.
 bool is_scenario_key(const std::string& key) {
   static const char* const keys[] = {"name", "description", "net", "additional", "step_length", "duration",
-                                     "seed", "country", "ego", "perception", "light_offsets", "params", "maneuvers",
+                                     "seed", "country", "ego", "perception", "light_offsets", "params", "obstacles", "maneuvers",
                                      "expect"};
   for (const char* k : keys)
     if (key == k) return true;
@@ -263,6 +263,23 @@ Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrid
   s.ego.depart_lane = ego.integer("depart_lane", -1, -1, 100);
   ego.finish();
 
+  const YAML::Node obstacles = top.node("obstacles");
+  if (obstacles && !obstacles.IsNull()) {
+    if (!obstacles.IsSequence()) top.fail("obstacles", "expected a list of obstacles");
+    for (std::size_t i = 0; i < obstacles.size(); ++i) {
+      YamlFields fields(obstacles[i], path, "obstacles[" + std::to_string(i) + "]");
+      ObstacleSpec o;
+      o.id = fields.text("id");
+      o.edge = fields.text("edge");
+      o.lane = fields.integer("lane", 0, 0, 100);
+      o.pos = fields.required_number("pos", 0.0, 1e6);
+      o.length = fields.number("length", 4.5, 0.5, 30.0);
+      fields.finish();
+      for (const ObstacleSpec& other : s.obstacles)
+        if (other.id == o.id) fields.fail("id", "'" + o.id + "' is declared twice");
+      s.obstacles.push_back(o);
+    }
+  }
   const YAML::Node maneuvers = top.node("maneuvers");
   if (maneuvers && !maneuvers.IsNull()) {
     if (!maneuvers.IsSequence()) top.fail("maneuvers", "expected a list of maneuvers");
@@ -273,9 +290,22 @@ Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrid
         throw InputError(path, yaml_line(item), where + ": each maneuver is a one-key mapping, e.g. "
                                                         "'- lane_change: {at: 40, length: 50}'");
       const std::string kind = item.begin()->first.Scalar();
+      if (kind == "avoid") {
+        YamlFields fields(item.begin()->second, path, where + ".avoid");
+        AvoidManeuver a;
+        a.obstacle = fields.text("obstacle");
+        a.clearance = fields.number("clearance", 1.0, 0.0, 10.0);
+        a.side = fields.text_or("side", "auto");
+        if (a.side != "auto" && a.side != "left" && a.side != "right")
+          fields.fail("side", "'" + a.side + "' is not one of auto, left, right");
+        a.length = fields.number("length", 0.0, 0.0, 10000.0);
+        fields.finish();
+        s.avoids.push_back(a);
+        continue;
+      }
       if (kind != "lane_change")
         throw InputError(path, yaml_line(item.begin()->first),
-                         where + ": unknown maneuver '" + kind + "' (known: lane_change)");
+                         where + ": unknown maneuver '" + kind + "' (known: lane_change, avoid)");
       if (s.lane_change) throw InputError(path, yaml_line(item), where + ": at most one lane_change");
       YamlFields fields(item.begin()->second, path, where + ".lane_change");
       LaneChangeManeuver m;

@@ -43,6 +43,26 @@ struct LaneChangeManeuver {
 inline constexpr double kDefaultLaneChangeLead = 20.0;    ///< [m]
 inline constexpr double kDefaultLaneChangeLength = 50.0;  ///< [m]
 
+/// `obstacles: [{id, edge, lane, pos, length}]`: a vehicle standing still on a lane for the whole run
+/// (SUMO: inserted with a stop at its position), 1.8 m wide like SUMO's default vehicle type.
+struct ObstacleSpec {
+  std::string id;
+  std::string edge;
+  int lane = 0;           ///< lane index on `edge`
+  double pos = 0.0;       ///< lane position of its front [m]
+  double length = 4.5;    ///< [m]
+};
+inline constexpr double kObstacleWidth = 1.8;  ///< [m] SUMO DEFAULT_VEHTYPE
+
+/// `maneuvers: [{avoid: {obstacle, clearance, side, length}}]`: pass a declared obstacle standing on
+/// the ego's planned lane: shift out, hold, shift back (planning/shift_line.hpp plan_avoidance).
+struct AvoidManeuver {
+  std::string obstacle;
+  double clearance = 1.0;    ///< lateral gap between the ego's side and the obstacle [m]
+  std::string side = "auto"; ///< auto (left), left, right
+  double length = 0.0;       ///< > 0: each shift is this long [m]; 0: from jerk/accel limits at max_speed
+};
+
 /// Every step on a normal lane while a lateral plan is driven, |lateral_offset - planned_offset|
 /// stays within `tolerance`.
 struct ExpectLateralFollowsPlan {
@@ -116,6 +136,8 @@ struct Scenario {
   std::map<std::string, double> light_offsets;  ///< `light_offsets: {tls: seconds}` program shifts
   ParameterSet params;                  ///< defaults, params.files, the country, params.set, overrides
   std::optional<LaneChangeManeuver> lane_change;  ///< from `maneuvers` (at most one lane_change)
+  std::vector<ObstacleSpec> obstacles;
+  std::vector<AvoidManeuver> avoids;              ///< from `maneuvers`
   std::vector<Expectation> expect;
 };
 

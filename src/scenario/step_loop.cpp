@@ -18,6 +18,7 @@ namespace {
 
 constexpr double kRestSpeed = 0.01;       // [m/s] below this the ego counts as at rest for stop errors
 constexpr double kSettleDistance = 0.02;  // [m] this close to the stop point the ego is brought to rest
+constexpr double kPathBackward = 5.0;     // [m] behind base_link: the behaviour modules' path start
 
 Blinker blinker_of(const TurnSignalDecision& d) {
   if (d.hazard == HazardLights::Enable) return Blinker::Hazard;
@@ -59,6 +60,7 @@ sumo::SessionConfig session_config(const Scenario& scenario, const sumo::RoutePl
     config.lateral_resolution = 0.1;
     config.keep_planned_lanes = true;
   }
+  for (const ObstacleSpec& o : scenario.obstacles) config.standing.push_back({o.id, o.edge, o.lane, o.pos, o.length});
   return config;
 }
 
@@ -127,6 +129,7 @@ RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, co
   const LateralPlan lateral = plan_lateral(scenario, plan, net);
   const BehaviorSignalParameters behavior_params = behavior_signal_parameters(decider.parameters());
   BehaviorModules modules;
+  const double path_forward = scenario.params.number("forward_path_length");  // behaviour module path ahead of base_link
   sumo::SumoSession session(session_config(scenario, plan, lateral));
   // Arrow bulbs from every program SUMO loaded (additional files may replace the net's program).
   std::vector<sumo::ApproachLight> approaches = sumo::approach_lights(net, route);
@@ -154,26 +157,48 @@ RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, co
     last_s = s_front;
     const EgoOnRoute ego{s_front, s_front - b2f, observed.speed};
 
-    // lateral plan: measured against the planned lane while the ego is on the plan's edge.
-    const bool on_plan_edge = lateral.active() && observed.edge == lateral.edge;
+    // lateral plan: measured against the planned lane while the ego is on a segment's edge.
+    const LateralSegment* segment = lateral.on_edge(observed.edge);
     const double lateral_offset =
-        on_plan_edge ? session.lateral_offset_from(lateral.reference_lane) : observed.lateral_offset;
+        segment ? session.lateral_offset_from(segment->reference_lane) : observed.lateral_offset;
     std::optional<double> planned_offset;
-    if (on_plan_edge) planned_offset = lateral.plan.offset_at(ego.s_base);
+    if (segment) planned_offset = segment->plan.offset_at(ego.s_base);
 
-    // behaviour modules (spec TSD §8): the lane change runs until base_link passes its end.
+    // behaviour modules (spec TSD §8): the lane change runs until base_link passes its end; the
+    // avoidance whenever one of its lines ends ahead of base_link (it filters the lines itself).
     LaneChangeSignal::Input lane_change;
+    AvoidanceSignal::Input avoidance;
     BehaviorRequests requests;
     requests.now = observed.time;
-    if (on_plan_edge) {
-      const ShiftLine& line = lateral.plan.lines().front();
-      if (ego.s_base <= line.s_end) {
+    for (const LateralSegment& seg : lateral.segments) {
+      if (seg.kind == LateralKind::LaneChange && segment == &seg) {
+        const ShiftLine& line = seg.plan.lines().front();
+        if (ego.s_base > line.s_end) continue;
         lane_change.phase = LaneChangeSignal::Phase::Running;
         lane_change.direction = line.relative_shift() > 0 ? TurnIndicator::EnableLeft : TurnIndicator::EnableRight;
         lane_change.lane_changing_start = line.s_start;
         lane_change.lane_changing_end = line.s_end;
-        lane_change.boundary_crossing = line.s_at_offset(lateral.boundary);
+        lane_change.boundary_crossing = line.s_at_offset(seg.boundary);
         requests.lane_change = &lane_change;
+      }
+      // The avoidance runs once its whole plan lies within the module path (Autoware registers
+      // shift lines only for objects within the path), until its last line is behind base_link.
+      const double path_back = std::min(route.length(), ego.s_base + path_forward);
+      if (seg.kind == LateralKind::Avoidance && !requests.avoidance && seg.plan.lines().back().s_end >= ego.s_base &&
+          seg.plan.lines().back().s_end <= path_back) {
+        for (std::size_t k = 0; k < seg.plan.lines().size(); ++k) {
+          const ShiftLine& line = seg.plan.lines()[k];
+          avoidance.shift_lines.push_back({seg.first_line_id + k, line.s_start, line.s_end, line.shift_start, line.shift_end});
+        }
+        avoidance.planned_shift_at_ego = segment == &seg ? *planned_offset : 0.0;
+        BehaviorSignalInput& in = avoidance.signal;
+        in.path_front = std::max(0.0, ego.s_base - kPathBackward);
+        in.path_back = path_back;
+        in.current_shift_length = segment == &seg ? lateral_offset : 0.0;
+        in.route_start = 0.0;
+        in.lane.left_half_width = seg.left_half_width;
+        in.lane.right_half_width = seg.right_half_width;
+        requests.avoidance = &avoidance;
       }
     }
     const TurnSignalInfo behavior = merge_behavior_requests(modules, requests, ego, behavior_params);
@@ -209,7 +234,7 @@ RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, co
     // apply, step.
     session.command(signal_mask(blinker), speed);
     // The plan's offset where base_link will be after the step (normal lanes of the plan's edge only).
-    if (on_plan_edge) session.command_lateral_offset(lateral.plan.offset_at(ego.s_base + speed * dt), lateral.reference_lane);
+    if (segment) session.command_lateral_offset(segment->plan.offset_at(ego.s_base + speed * dt), segment->reference_lane);
     const bool alive = session.step();
 
     // record.

@@ -132,6 +132,14 @@ SumoSession::SumoSession(const SessionConfig& config) {
     // Sublane model: lateral speed and acceleration high enough that one changeSublane per step
     // lands exactly on the commanded offset (spec SUMO §4); the plan itself keeps them realistic.
     if (lateral_resolution_ > 0.0) libsumo::VehicleType::setMaxSpeedLat(kEgoType, 10.0);
+    for (const StandingVehicle& v : config.standing) {
+      const std::string route = "standing_route_" + v.id, type = "standing_type_" + v.id;
+      libsumo::Route::add(route, {v.edge});
+      libsumo::VehicleType::copy("DEFAULT_VEHTYPE", type);
+      libsumo::VehicleType::setLength(type, v.length);
+      libsumo::Vehicle::add(v.id, route, type, "0", std::to_string(v.lane), number(v.pos), "0");
+      libsumo::Vehicle::setStop(v.id, v.edge, v.pos, v.lane, 1e7);
+    }
     libsumo::Vehicle::add(kEgo, kEgoRoute, kEgoType, "0", std::to_string(config.depart_lane),
                           number(config.depart_pos), number(config.depart_speed));
     if (lateral_resolution_ > 0.0) libsumo::Vehicle::setParameter(kEgo, "laneChangeModel.lcAccelLat", "20");

@@ -23,6 +23,15 @@ inline constexpr int kBlinkerLeft = 2;
 inline constexpr int kBlinkerEmergency = 4;
 inline constexpr int kBlinkerMask = kBlinkerRight | kBlinkerLeft | kBlinkerEmergency;
 
+/// A vehicle standing still on a lane for the whole run (an obstacle to pass).
+struct StandingVehicle {
+  std::string id;
+  std::string edge;
+  int lane = 0;
+  double pos = 0.0;     ///< lane position of its front [m]
+  double length = 4.5;  ///< [m]; width, as SUMO's DEFAULT_VEHTYPE, 1.8 m
+};
+
 struct SessionConfig {
   std::string net;
   std::vector<std::string> additional;
@@ -43,6 +52,8 @@ struct SessionConfig {
   /// dynamics fast enough to follow command_lateral_offset() exactly: vehicle-type maxSpeedLat
   /// 10 m/s and the vehicle parameter laneChangeModel.lcAccelLat 20 m/s^2 (spec SUMO §4).
   double lateral_resolution = 0.0;
+  /// Inserted with the ego, each with a stop at its position that lasts for the whole run.
+  std::vector<StandingVehicle> standing;
 };
 
 /// The ego as SUMO reports it after a step.

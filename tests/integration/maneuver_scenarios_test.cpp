@@ -61,7 +61,7 @@ void expect_tracks_plan(const ManeuverRun& r, double start_offset) {
                                   [](const TimelineRow& row) { return row.planned_offset.has_value(); });
   EXPECT_NEAR(*first->planned_offset, start_offset, 1e-9);
   EXPECT_NEAR(first->lateral_offset, start_offset, 0.01);
-  EXPECT_NEAR(r.lateral.plan.lines().back().shift_end, 0.0, 1e-12);
+  EXPECT_NEAR(r.lateral.segments.front().plan.lines().back().shift_end, 0.0, 1e-12);
 }
 
 // The first step (index) where the blinker is `b` from `source`, or -1.
@@ -75,7 +75,7 @@ long first_step(const ManeuverRun& r, Blinker b, RequestSource source, std::size
 // distance of the lane-changing start, and stays on (from the lane change) until base_link passes
 // the lane-changing end; returns the index of the first step after it.
 std::size_t expect_lane_change_stretch(const ManeuverRun& r, Blinker b) {
-  const ShiftLine& line = r.lateral.plan.lines().front();
+  const ShiftLine& line = r.lateral.segments.front().plan.lines().front();
   const auto& rows = r.record.rows;
   std::size_t i = 0;
   for (; i < rows.size(); ++i) {
@@ -122,7 +122,7 @@ TEST(ManeuverScenario, LaneChangeThenLeftTurnTheLeftTurnWaitsForTheLaneChangeEnd
   const long turn = first_step(r, Blinker::Left, RequestSource::Intersection);
   ASSERT_GE(turn, 0);
   EXPECT_EQ(static_cast<std::size_t>(turn), after) << "the left turn takes over right after the lane change";
-  EXPECT_GT(s_base(r, r.record.rows[static_cast<std::size_t>(turn)]), r.lateral.plan.lines().front().s_end);
+  EXPECT_GT(s_base(r, r.record.rows[static_cast<std::size_t>(turn)]), r.lateral.segments.front().plan.lines().front().s_end);
   const double turn_search = r.record.rows[static_cast<std::size_t>(turn)].speed * kSearchTime + 30.0;
   EXPECT_LT(189.60 - r.record.rows[static_cast<std::size_t>(turn)].s_front, turn_search)
       << "the intersection request was already within reach when the lane change ended";
@@ -139,7 +139,7 @@ TEST(ManeuverScenario, EarlyLaneChangeThenLeftTurnTwoStretches) {
   EXPECT_EQ(rows.front().blinker, Blinker::Left);
   EXPECT_EQ(rows.front().blinker_source, RequestSource::LaneChange);
   std::size_t i = 0;
-  for (; i < rows.size() && s_base(r, rows[i]) <= r.lateral.plan.lines().front().s_end; ++i)
+  for (; i < rows.size() && s_base(r, rows[i]) <= r.lateral.segments.front().plan.lines().front().s_end; ++i)
     EXPECT_EQ(rows[i].blinker_source, RequestSource::LaneChange);
   const long turn = first_step(r, Blinker::Left, RequestSource::Intersection, i);
   ASSERT_GT(turn, static_cast<long>(i)) << "a gap without blinker between the two stretches";
