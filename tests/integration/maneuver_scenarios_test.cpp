@@ -9,7 +9,9 @@
 #include <cmath>
 #include <optional>
 #include <string>
+#include <vector>
 
+#include "scenario/input_error.hpp"
 #include "scenario/route_planning.hpp"
 #include "scenario/scenario.hpp"
 #include "scenario/step_loop.hpp"
@@ -149,6 +151,157 @@ TEST(ManeuverScenario, EarlyLaneChangeThenLeftTurnTwoStretches) {
   const TimelineRow& before = rows[static_cast<std::size_t>(turn) - 1];
   EXPECT_LT(189.60 - on.s_front, on.speed * kSearchTime + 30.0);
   EXPECT_GE(189.60 - before.s_front, before.speed * kSearchTime + 30.0);
+}
+
+// ---- Avoidance (spec TSD §8.2 "Avoidance", §8.1) ----------------------------------------------
+
+constexpr double kMaxPrepareTime = 3.0;  // avoidance max_prepare_time
+constexpr double kAvoidOffset = 0.9 + 1.0 + 0.9;  // half obstacle + clearance + half ego [m]
+
+// The avoidance segment's two lines (shift out, shift back) and the tracking of the whole plan.
+struct AvoidLines {
+  ShiftLine out, back;
+};
+AvoidLines avoid_lines(const ManeuverRun& r, double side) {
+  const LateralSegment& seg = r.lateral.segments.back();
+  EXPECT_EQ(seg.kind, LateralKind::Avoidance);
+  EXPECT_EQ(seg.plan.lines().size(), 2u);
+  const AvoidLines lines{seg.plan.lines().front(), seg.plan.lines().back()};
+  EXPECT_NEAR(lines.out.shift_end, side * kAvoidOffset, 1e-9);
+  EXPECT_NEAR(lines.back.shift_start, side * kAvoidOffset, 1e-9);
+  EXPECT_NEAR(lines.back.shift_end, 0.0, 1e-12);
+  // The measured offset follows the plan; it really reaches the hold offset beside the obstacle.
+  double widest = 0.0;
+  for (const TimelineRow& row : r.record.rows) {
+    if (!row.planned_offset) continue;
+    EXPECT_NEAR(row.lateral_offset, *row.planned_offset, kTolerance) << "t=" << row.time;
+    widest = std::max(widest, side * row.lateral_offset);
+  }
+  EXPECT_NEAR(widest, kAvoidOffset, 0.01);
+  EXPECT_EQ(r.record.collisions, 0);
+  EXPECT_EQ(r.record.off_route_steps, 0);
+  return lines;
+}
+
+// §8.1 on: the first step with the front within max(v * search_time, min distance) of `line`'s start.
+bool within_prep(const TimelineRow& row, const ShiftLine& line) {
+  return line.s_start - row.s_front <= std::max(row.speed * kSearchTime, kMinSearchDistance);
+}
+
+// §8.2 target line: the return line once its start is within v * max_prepare_time of base_link
+// (strict) and the shift out has started.
+bool return_is_target(const ManeuverRun& r, const TimelineRow& row, const AvoidLines& l) {
+  return l.out.s_start <= s_base(r, row) && l.back.s_start - s_base(r, row) < row.speed * kMaxPrepareTime;
+}
+
+TEST(ManeuverScenario, AvoidanceAloneShiftOutLeftReturnRight) {
+  const ManeuverRun r = run("avoidance_left");
+  ASSERT_TRUE(r.record.arrived);
+  const AvoidLines l = avoid_lines(r, +1.0);
+  const auto& rows = r.record.rows;
+  std::size_t i = 0;
+  for (; i < rows.size() && !within_prep(rows[i], l.out); ++i) EXPECT_EQ(rows[i].blinker, Blinker::None);
+  ASSERT_GT(i, 0u);
+  // Left (shift out) until the return line becomes the target, then right (return).
+  for (; i < rows.size() && !return_is_target(r, rows[i], l); ++i) {
+    EXPECT_EQ(rows[i].blinker, Blinker::Left) << "s_front " << rows[i].s_front;
+    EXPECT_EQ(rows[i].blinker_source, RequestSource::Avoidance);
+  }
+  ASSERT_LT(i, rows.size());
+  // Right until the remaining return is below turn_signal_remaining_shift_length_threshold (0.1 m):
+  // then NONE and the line latched as ignored; nothing after that.
+  for (; i < rows.size() && std::abs(rows[i].lateral_offset) >= 0.1; ++i) {
+    EXPECT_EQ(rows[i].blinker, Blinker::Right) << "s_front " << rows[i].s_front;
+    EXPECT_EQ(rows[i].blinker_source, RequestSource::Avoidance);
+  }
+  EXPECT_LT(s_base(r, rows[i]), l.back.s_end);
+  for (std::size_t k = i + 1; k < rows.size(); ++k) EXPECT_EQ(rows[k].blinker, Blinker::None) << rows[k].s_front;
+}
+
+TEST(ManeuverScenario, AvoidanceBeforeLeftTurnReturnHandsOverToTheTurn) {
+  const ManeuverRun r = run("avoidance_before_left_turn");
+  ASSERT_TRUE(r.record.arrived);
+  const AvoidLines l = avoid_lines(r, -1.0);  // on the right: in_S_1 is the leftmost lane
+  const auto& rows = r.record.rows;
+  std::size_t i = 0;
+  for (; i < rows.size() && !within_prep(rows[i], l.out); ++i) EXPECT_EQ(rows[i].blinker, Blinker::None);
+  for (; i < rows.size() && !return_is_target(r, rows[i], l); ++i) {
+    EXPECT_EQ(rows[i].blinker, Blinker::Right) << "s_front " << rows[i].s_front;
+    EXPECT_EQ(rows[i].blinker_source, RequestSource::Avoidance);
+  }
+  // The return (left) from the avoidance, then the left turn's own request, left all the way.
+  const long turn = first_step(r, Blinker::Left, RequestSource::Intersection);
+  ASSERT_GT(turn, static_cast<long>(i));
+  for (; i < static_cast<std::size_t>(turn); ++i) {
+    EXPECT_EQ(rows[i].blinker, Blinker::Left) << "s_front " << rows[i].s_front;
+    EXPECT_EQ(rows[i].blinker_source, RequestSource::Avoidance);
+  }
+  // The turn takes over exactly when the remaining return drops below 0.1 m (the avoidance goes
+  // NONE and latches), not where its own search distance begins.
+  EXPECT_LT(std::abs(rows[static_cast<std::size_t>(turn)].lateral_offset), 0.1);
+  EXPECT_GE(std::abs(rows[static_cast<std::size_t>(turn) - 1].lateral_offset), 0.1);
+  for (const TimelineRow& row : rows) EXPECT_NE(row.blinker, Blinker::Hazard);
+}
+
+TEST(ManeuverScenario, AvoidanceAfterLeftTurnWaitsForTheTurnToEnd) {
+  const ManeuverRun r = run("avoidance_after_left_turn");
+  ASSERT_TRUE(r.record.arrived);
+  const AvoidLines l = avoid_lines(r, -1.0);
+  const auto& rows = r.record.rows;
+  const long turn = first_step(r, Blinker::Left, RequestSource::Intersection);
+  const long avoid = first_step(r, Blinker::Right, RequestSource::Avoidance);
+  ASSERT_GE(turn, 0);
+  ASSERT_GT(avoid, turn);
+  // Left (the turn) without a gap up to the avoidance's right, which was already within reach the
+  // step before: the turn won while base_link was still in junction C (it leaves at 208.95).
+  for (long k = turn; k < avoid; ++k) EXPECT_EQ(rows[static_cast<std::size_t>(k)].blinker, Blinker::Left);
+  const TimelineRow& before = rows[static_cast<std::size_t>(avoid) - 1];
+  EXPECT_TRUE(within_prep(before, l.out)) << "the avoidance request existed before it won";
+  EXPECT_LE(s_base(r, before), 208.95 + 0.01);
+  EXPECT_GT(s_base(r, rows[static_cast<std::size_t>(avoid)]), 208.95);
+  // Then left again for the return, from the avoidance.
+  const long back = first_step(r, Blinker::Left, RequestSource::Avoidance, static_cast<std::size_t>(avoid));
+  ASSERT_GT(back, avoid);
+  EXPECT_TRUE(return_is_target(r, rows[static_cast<std::size_t>(back)], l));
+}
+
+// ---- Scenario checks before SUMO starts (InputError naming the key) ----------------------------
+
+std::string input_error(const std::string& name, std::vector<std::string> set) {
+  try {
+    const Scenario scenario =
+        load_scenario(std::string(SIGNALSIM_SOURCE_DIR) + "/scenarios/" + name + ".yaml", ScenarioOverrides{set});
+    const sumo::NetIndex net = sumo::NetIndex::load(scenario.net);
+    plan_route(scenario, net);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(ManeuverInput, RejectsWhatCannotBeDriven) {
+  EXPECT_NE(input_error("lane_change_right", {"ego.depart_lane=2"}).find("ego.depart_lane"), std::string::npos);
+  EXPECT_NE(input_error("lane_change_right", {"ego.depart_lane=0"}).find("departs on the planned lane"),
+            std::string::npos);
+  EXPECT_NE(input_error("lane_change_right", {"maneuvers=[{lane_change: {at: 40, length: 160}}]"})
+                .find("must end while the front bumper is still on the edge"),
+            std::string::npos);
+  EXPECT_NE(input_error("lane_change_right", {"maneuvers=[{lane_change: {at: 0, length: 50}}]"}).find("behind"),
+            std::string::npos);
+  EXPECT_NE(input_error("lane_change_right", {"maneuvers=[{pull_over: {}}]"}).find("unknown maneuver"),
+            std::string::npos);
+  EXPECT_NE(input_error("avoidance_left", {"obstacles=[{id: parked, edge: in_S, lane: 1, pos: 120}]"})
+                .find("not on the ego's planned lane"),
+            std::string::npos);
+  EXPECT_NE(input_error("avoidance_left", {"maneuvers=[{avoid: {obstacle: nobody}}]"}).find("no such obstacle"),
+            std::string::npos);
+  EXPECT_NE(input_error("avoidance_left", {"obstacles=[{id: parked, edge: in_S, lane: 0, pos: 30}]"})
+                .find("must start and end"),
+            std::string::npos);
+  EXPECT_NE(input_error("avoidance_left", {"maneuvers=[{avoid: {obstacle: parked, side: up}}]"}).find("side"),
+            std::string::npos);
+  EXPECT_EQ(input_error("avoidance_left", {}), "");
+  EXPECT_EQ(input_error("lane_change_right", {}), "");
 }
 
 }  // namespace
