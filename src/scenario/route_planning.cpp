@@ -105,6 +105,7 @@ LateralSegment plan_avoid(const Scenario& scenario, const sumo::RoutePlan& plan,
   if (avoid.length > 0.0) request.lengths.fixed_length = avoid.length;
   LateralSegment seg;
   seg.kind = LateralKind::Avoidance;
+  seg.route_index = *route_index;
   seg.edge = lanelet.edge_id;
   seg.reference_lane = lanelet.lane_id;
   seg.left_half_width = seg.right_half_width = 0.5 * lanelet.width;
@@ -122,6 +123,21 @@ LateralSegment plan_avoid(const Scenario& scenario, const sumo::RoutePlan& plan,
   return seg;
 }
 
+// A plan must start and end while base_link and the front are on the segment's edge.
+void check_within_edge(const Scenario& scenario, const LateralSegment& seg, const Lanelet& lanelet,
+                       const std::string& what) {
+  const double b2f = scenario.ego.base_link_to_front;
+  const double first_s = seg.plan.lines().front().s_start;
+  const double last_s = seg.plan.lines().back().s_end;
+  if (first_s < lanelet.s_start - 1e-9 || last_s + b2f > lanelet.s_end()) {
+    std::ostringstream out;
+    out << "maneuvers: " << what << " (base_link " << first_s << " to " << last_s << " m) must start and end while "
+        << "the ego is on edge '" << seg.edge << "' (route s " << lanelet.s_start << " to " << lanelet.s_end()
+        << " m, front bumper included)";
+    fail(scenario, out.str());
+  }
+}
+
 }  // namespace
 
 LateralPlan plan_lateral(const Scenario& scenario, const sumo::RoutePlan& plan, const sumo::NetIndex& net) {
@@ -134,6 +150,40 @@ LateralPlan plan_lateral(const Scenario& scenario, const sumo::RoutePlan& plan, 
       fail(scenario, "obstacles: '" + o.id + "': edge '" + o.edge + "' has no lane " + std::to_string(o.lane));
     if (o.pos > edge->lanes[static_cast<std::size_t>(o.lane)].length)
       fail(scenario, "obstacles: '" + o.id + "': pos is beyond the end of its lane");
+  }
+  const double b2f = scenario.ego.base_link_to_front;
+  if (scenario.pull_out) {
+    const PullOutManeuver& m = *scenario.pull_out;
+    if (!lateral.segments.empty()) fail(scenario, "maneuvers: pull_out and a lane change on the first edge");
+    const Lanelet& first = plan.map.at(0);
+    LateralSegment seg;
+    seg.kind = LateralKind::PullOut;
+    seg.edge = first.edge_id;
+    seg.reference_lane = first.lane_id;
+    seg.left_half_width = seg.right_half_width = 0.5 * first.width;
+    const double depart_base = scenario.ego.depart_pos - b2f;
+    const double at = m.at < 0.0 ? std::max(0.0, depart_base) : m.at;
+    seg.plan = plan_pull_out(at, m.offset, m.length);
+    check_within_edge(scenario, seg, first, "pull_out");
+    lateral.depart_offset = m.offset;
+    lateral.segments.push_back(std::move(seg));
+  }
+  if (scenario.pull_over) {
+    const PullOverManeuver& m = *scenario.pull_over;
+    const auto index = plan.map.find_edge(m.edge);
+    if (!index) fail(scenario, "maneuvers: pull_over: edge '" + m.edge + "' is not on the ego's route");
+    const Lanelet& lanelet = plan.map.at(*index);
+    LateralSegment seg;
+    seg.kind = LateralKind::PullOver;
+    seg.edge = lanelet.edge_id;
+    seg.reference_lane = lanelet.lane_id;
+    seg.route_index = *index;
+    seg.left_half_width = seg.right_half_width = 0.5 * lanelet.width;
+    seg.goal_s = lanelet.s_start + m.pos - b2f;
+    seg.plan = plan_pull_over(seg.goal_s, m.offset, m.length);
+    check_within_edge(scenario, seg, lanelet, "pull_over");
+    if (lateral.on_edge(seg.edge)) fail(scenario, "maneuvers: at most one maneuver per edge ('" + seg.edge + "' has two)");
+    lateral.segments.push_back(std::move(seg));
   }
   for (std::size_t i = 0; i < scenario.avoids.size(); ++i) {
     LateralSegment seg = plan_avoid(scenario, plan, scenario.avoids[i], i);

@@ -24,7 +24,7 @@ sumo::RoutePlan plan_route(const Scenario& scenario, const sumo::NetIndex& net);
 /// with the connection to the next edge), and the avoidance of declared obstacles. Shift lines are on
 /// base_link's route s; offsets are lateral, left positive, from the centre of the segment's
 /// `reference_lane` (the edge's planned lane).
-enum class LateralKind { LaneChange, Avoidance };
+enum class LateralKind { LaneChange, Avoidance, PullOut, PullOver };
 struct LateralSegment {
   LateralKind kind = LateralKind::LaneChange;
   std::string edge;            ///< the edge the plan is driven on
@@ -35,10 +35,14 @@ struct LateralSegment {
   double left_half_width = 1.6;   ///< of the reference lane [m] (lane-bound test)
   double right_half_width = 1.6;
   std::uint64_t first_line_id = 0;  ///< ids of the lines: first_line_id + index
+  std::size_t route_index = 0;      ///< the edge's lanelet on the route
+  double goal_s = 0.0;              ///< pull over: base_link's route s at the goal stop [m]
 };
 struct LateralPlan {
   std::vector<LateralSegment> segments;  ///< ordered along the route, at most one per edge
   bool active() const { return !segments.empty(); }
+  /// Pull out: the lateral offset the ego departs with (SUMO departPosLat), 0 otherwise.
+  double depart_offset = 0.0;
   const LateralSegment* on_edge(const std::string& edge) const {
     for (const LateralSegment& seg : segments)
       if (seg.edge == edge) return &seg;

@@ -303,9 +303,32 @@ Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrid
         s.avoids.push_back(a);
         continue;
       }
+      if (kind == "pull_out") {
+        if (s.pull_out) throw InputError(path, yaml_line(item), where + ": at most one pull_out");
+        YamlFields fields(item.begin()->second, path, where + ".pull_out");
+        PullOutManeuver m;
+        m.offset = fields.required_number("offset", -10.0, 10.0);
+        m.length = fields.number("length", 30.0, 1.0, 10000.0);
+        m.at = fields.number("at", -1.0, 0.0, 1e6);
+        fields.finish();
+        s.pull_out = m;
+        continue;
+      }
+      if (kind == "pull_over") {
+        if (s.pull_over) throw InputError(path, yaml_line(item), where + ": at most one pull_over");
+        YamlFields fields(item.begin()->second, path, where + ".pull_over");
+        PullOverManeuver m;
+        m.edge = fields.text("edge");
+        m.pos = fields.required_number("pos", 0.0, 1e6);
+        m.offset = fields.required_number("offset", -10.0, 10.0);
+        m.length = fields.number("length", 30.0, 1.0, 10000.0);
+        fields.finish();
+        s.pull_over = m;
+        continue;
+      }
       if (kind != "lane_change")
         throw InputError(path, yaml_line(item.begin()->first),
-                         where + ": unknown maneuver '" + kind + "' (known: lane_change, avoid)");
+                         where + ": unknown maneuver '" + kind + "' (known: lane_change, avoid, pull_out, pull_over)");
       if (s.lane_change) throw InputError(path, yaml_line(item), where + ": at most one lane_change");
       YamlFields fields(item.begin()->second, path, where + ".lane_change");
       LaneChangeManeuver m;

@@ -63,6 +63,25 @@ struct AvoidManeuver {
   double length = 0.0;       ///< > 0: each shift is this long [m]; 0: from jerk/accel limits at max_speed
 };
 
+/// `maneuvers: [{pull_out: {offset, length, at}}]`: the ego departs `offset` metres beside its lane's
+/// centre (the road side; SUMO departPosLat) and shifts back to the centre over `length` metres from
+/// base_link's route s `at` (default: its depart position). Only on the first edge.
+struct PullOutManeuver {
+  double offset = -0.7;  ///< [m], left positive, from the planned lane's centre
+  double length = 30.0;  ///< [m]
+  double at = -1.0;      ///< [m] route s of base_link; < 0: the depart position
+};
+
+/// `maneuvers: [{pull_over: {edge, pos, offset, length}}]`: the ego's goal is a stop at the road side:
+/// it shifts from its lane's centre to `offset` over `length` metres, reaching it with the front
+/// bumper at lane position `pos` of `edge`, and stops there (jerk-limited stop).
+struct PullOverManeuver {
+  std::string edge;
+  double pos = 0.0;      ///< lane position of the front bumper at the goal [m]
+  double offset = -0.7;  ///< [m], left positive, from the planned lane's centre
+  double length = 30.0;  ///< [m]
+};
+
 /// Every step on a normal lane while a lateral plan is driven, |lateral_offset - planned_offset|
 /// stays within `tolerance`.
 struct ExpectLateralFollowsPlan {
@@ -138,6 +157,8 @@ struct Scenario {
   std::optional<LaneChangeManeuver> lane_change;  ///< from `maneuvers` (at most one lane_change)
   std::vector<ObstacleSpec> obstacles;
   std::vector<AvoidManeuver> avoids;              ///< from `maneuvers`
+  std::optional<PullOutManeuver> pull_out;        ///< from `maneuvers` (at most one)
+  std::optional<PullOverManeuver> pull_over;      ///< from `maneuvers` (at most one)
   std::vector<Expectation> expect;
 };
 

@@ -60,6 +60,7 @@ sumo::SessionConfig session_config(const Scenario& scenario, const sumo::RoutePl
     config.lateral_resolution = 0.1;
     config.keep_planned_lanes = true;
   }
+  config.depart_pos_lat = lateral.depart_offset;
   for (const ObstacleSpec& o : scenario.obstacles) config.standing.push_back({o.id, o.edge, o.lane, o.pos, o.length});
   return config;
 }
@@ -147,6 +148,11 @@ RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, co
   Blinker previous_blinker = Blinker::None;
   JudgeDecision previous_decision = JudgeDecision::None;
 
+  bool departed = false;  // the ego has moved (start planner: has_departed)
+  const LateralSegment* pull_over_goal = nullptr;
+  for (const LateralSegment& seg : lateral.segments)
+    if (seg.kind == LateralKind::PullOver) pull_over_goal = &seg;
+
   sumo::EgoState observed = session.ego();
   while (true) {
     // observe: the ego's route position (monotonic: search from the lanelet it was on).
@@ -156,6 +162,7 @@ RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, co
     hint = route.index_at(std::max(0.0, s_front - 1e-6));
     last_s = s_front;
     const EgoOnRoute ego{s_front, s_front - b2f, observed.speed};
+    if (observed.speed > kRestSpeed) departed = true;
 
     // lateral plan: measured against the planned lane while the ego is on a segment's edge.
     const LateralSegment* segment = lateral.on_edge(observed.edge);
@@ -168,6 +175,20 @@ RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, co
     // avoidance whenever one of its lines ends ahead of base_link (it filters the lines itself).
     LaneChangeSignal::Input lane_change;
     AvoidanceSignal::Input avoidance;
+    PullOutSignal::Input pull_out;
+    PullOverSignal::Input pull_over;
+    const auto module_signal = [&](const LateralSegment& seg, double path_back) {
+      BehaviorSignalInput in;
+      in.path_front = std::max(0.0, ego.s_base - kPathBackward);
+      in.path_back = path_back;
+      in.current_shift_length = segment == &seg ? lateral_offset : 0.0;
+      in.route_start = 0.0;
+      in.lane.left_half_width = seg.left_half_width;
+      in.lane.right_half_width = seg.right_half_width;
+      // The yaw relative to the lane: the plan's (SUMO follows it exactly, see planned_offset).
+      if (segment == &seg) in.ego_relative_yaw = std::atan(seg.plan.heading_at(ego.s_base));
+      return in;
+    };
     BehaviorRequests requests;
     requests.now = observed.time;
     for (const LateralSegment& seg : lateral.segments) {
@@ -191,14 +212,33 @@ RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, co
           avoidance.shift_lines.push_back({seg.first_line_id + k, line.s_start, line.s_end, line.shift_start, line.shift_end});
         }
         avoidance.planned_shift_at_ego = segment == &seg ? *planned_offset : 0.0;
-        BehaviorSignalInput& in = avoidance.signal;
-        in.path_front = std::max(0.0, ego.s_base - kPathBackward);
-        in.path_back = path_back;
-        in.current_shift_length = segment == &seg ? lateral_offset : 0.0;
-        in.route_start = 0.0;
-        in.lane.left_half_width = seg.left_half_width;
-        in.lane.right_half_width = seg.right_half_width;
+        avoidance.signal = module_signal(seg, path_back);
         requests.avoidance = &avoidance;
+      }
+      // The start planner runs from departure until base_link passes the pull-out end.
+      if (seg.kind == LateralKind::PullOut && segment == &seg && ego.s_base <= seg.plan.lines().back().s_end) {
+        const ShiftLine& line = seg.plan.lines().front();
+        pull_out.pull_out_start = line.s_start;
+        pull_out.pull_out_end = line.s_end;
+        pull_out.shift_at_start = line.shift_start;
+        pull_out.shift_at_end = line.shift_end;
+        pull_out.driving_forward = true;
+        pull_out.override_ego_stopped_check = !departed;  // [SP]: not yet departed
+        pull_out.closest_lanelet = seg.route_index;
+        pull_out.signal = module_signal(seg, path_back);
+        requests.pull_out = &pull_out;
+      }
+      // The goal planner runs once the pull-over path lies within the module path.
+      if (seg.kind == LateralKind::PullOver && seg.goal_s <= path_back) {
+        const ShiftLine& line = seg.plan.lines().front();
+        pull_over.path_decided = true;
+        pull_over.pull_over_start = line.s_start;
+        pull_over.pull_over_end = line.s_end;
+        pull_over.shift_at_start = line.shift_start;
+        pull_over.shift_at_end = line.shift_end;
+        pull_over.closest_lanelet = seg.route_index;
+        pull_over.signal = module_signal(seg, path_back);
+        requests.pull_over = &pull_over;
       }
     }
     const TurnSignalInfo behavior = merge_behavior_requests(modules, requests, ego, behavior_params);
@@ -228,6 +268,12 @@ RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, co
         stop_level = stop.level;
       }
       if (to_go < kSettleDistance) speed = 0.0;  // within 2 cm: come to rest (coarse steps never settle)
+    }
+    if (pull_over_goal) {  // the pull-over goal: a jerk-limited stop with base_link at the goal
+      const double to_go = pull_over_goal->goal_s - ego.s_base;
+      const StopCommand stop = plan_stop({observed.speed, observed.accel, to_go, dt}, stop_params);
+      if (stop.braking || stop.commanded_velocity < speed) speed = std::min(speed, stop.commanded_velocity);
+      if (to_go < kSettleDistance) speed = 0.0;
     }
     session.set_emergency_braking(stop_level == StopLevel::Emergency);
 

@@ -151,6 +151,7 @@ SumoSession::SumoSession(const SessionConfig& config) {
         // braking: the traffic-light judge alone decides at lights.
         libsumo::Vehicle::setSpeedMode(kEgo, 15);
         if (config.keep_planned_lanes) libsumo::Vehicle::setLaneChangeMode(kEgo, 0);
+        if (config.depart_pos_lat != 0.0) move_to_depart_offset(config);
         return;
       }
     }
@@ -160,6 +161,19 @@ SumoSession::SumoSession(const SessionConfig& config) {
   }
   libsumo::Simulation::close();
   throw SumoError("the ego could not be inserted within 600 steps (its departure lane stays blocked)");
+}
+
+void SumoSession::move_to_depart_offset(const SessionConfig& config) {
+  // libsumo 1.15's Vehicle::add has no departPosLat: the ego stands still (speed 0) while SUMO's
+  // sublane model moves it sideways, a few steps (lcAccelLat 20 m/s^2), before the run starts.
+  if (lateral_resolution_ <= 0.0) throw SumoError("a lateral depart offset needs lateral_resolution > 0");
+  libsumo::Vehicle::setSpeed(kEgo, 0.0);
+  for (int i = 0; i < 100; ++i) {
+    const double delta = config.depart_pos_lat - libsumo::Vehicle::getLateralLanePosition(kEgo);
+    if (std::abs(delta) < 1e-3) break;
+    libsumo::Vehicle::changeSublane(kEgo, delta);
+    libsumo::Simulation::step();
+  }
 }
 
 SumoSession::~SumoSession() {

@@ -40,6 +40,9 @@ struct SessionConfig {
   std::vector<std::string> route;  ///< ego edges
   int depart_lane = 0;
   double depart_pos = 0.0;
+  /// Lateral offset from the depart lane's centre [m, left positive]; needs lateral_resolution > 0.
+  /// The ego is moved there standing still before the constructor returns (a few steps).
+  double depart_pos_lat = 0.0;
   double depart_speed = 0.0;
   double max_speed = 13.89;
   double length = 4.5;
@@ -135,6 +138,7 @@ class SumoSession {
 
  private:
   std::string sumo_reason(const std::exception& e) const;
+  void move_to_depart_offset(const SessionConfig& config);
   std::unique_ptr<StderrCapture> capture_;  ///< SUMO's stderr while the session lives
   int ego_collisions_ = 0;
   bool emergency_braking_ = false;

@@ -265,6 +265,66 @@ TEST(ManeuverScenario, AvoidanceAfterLeftTurnWaitsForTheTurnToEnd) {
   EXPECT_TRUE(return_is_target(r, rows[static_cast<std::size_t>(back)], l));
 }
 
+// ---- Pull out and pull over (spec TSD §8.2 start / goal planner) --------------------------------
+
+constexpr double kRemainingShift = 0.1;  // turn_signal_remaining_shift_length_threshold
+constexpr double kBoundThreshold = 1.3;  // turn_signal_remaining_distance_to_bound_threshold
+constexpr double kHalfLane = 1.6, kHalfEgo = 0.9;
+
+TEST(ManeuverScenario, PullOutLeftOffOnceTheFrontCornerNearsTheFarBound) {
+  const ManeuverRun r = run("pull_out_left");
+  ASSERT_TRUE(r.record.arrived);
+  const ShiftLine& line = r.lateral.segments.front().plan.lines().front();
+  EXPECT_NEAR(line.shift_start, -0.7, 1e-12);
+  const auto& rows = r.record.rows;
+  EXPECT_NEAR(rows.front().lateral_offset, -0.7, 0.01) << "departs at the road side";
+  EXPECT_NEAR(rows.front().speed, 0.0, 1e-9);
+  std::size_t i = 0;
+  for (; i < rows.size() && rows[i].blinker == Blinker::Left; ++i) {
+    EXPECT_EQ(rows[i].blinker_source, RequestSource::PullOut);
+    EXPECT_NEAR(rows[i].lateral_offset, *rows[i].planned_offset, kTolerance);
+  }
+  ASSERT_GT(i, 0u) << "left from the first step";
+  ASSERT_LT(i, rows.size());
+  // Off: the left front corner (offset + half width, plus the yaw's share) within 1.3 m of the
+  // left bound, while the shift is not yet complete; on before that.
+  const auto corner_gap = [&](const TimelineRow& row) {
+    const double yaw = std::atan(line.heading_at(s_base(r, row)));
+    return kHalfLane - (row.lateral_offset + kHalfEgo * std::cos(yaw) + r.record.base_link_to_front * std::sin(yaw));
+  };
+  EXPECT_LT(corner_gap(rows[i]), kBoundThreshold + 0.01);
+  EXPECT_GE(corner_gap(rows[i - 1]), kBoundThreshold - 0.01);
+  EXPECT_LT(s_base(r, rows[i]), line.s_end);
+  for (std::size_t k = i; k < rows.size(); ++k) EXPECT_EQ(rows[k].blinker, Blinker::None) << rows[k].s_front;
+}
+
+TEST(ManeuverScenario, PullOverRightSignalsFromSearchTimeBeforeThePathAndStopsAtTheGoal) {
+  const ManeuverRun r = run("pull_over_right");
+  const LateralSegment& seg = r.lateral.segments.front();
+  ASSERT_EQ(seg.kind, LateralKind::PullOver);
+  const ShiftLine& line = seg.plan.lines().front();
+  const auto& rows = r.record.rows;
+  std::size_t i = 0;
+  for (; i < rows.size() && !within_prep(rows[i], line); ++i) EXPECT_EQ(rows[i].blinker, Blinker::None) << rows[i].s_front;
+  ASSERT_GT(i, 0u);
+  for (; i < rows.size() && std::abs(rows[i].lateral_offset - line.shift_end) >= kRemainingShift; ++i) {
+    EXPECT_EQ(rows[i].blinker, Blinker::Right) << "s_front " << rows[i].s_front;
+    EXPECT_EQ(rows[i].blinker_source, RequestSource::PullOver);
+  }
+  ASSERT_LT(i, rows.size());
+  for (std::size_t k = i; k < rows.size(); ++k) EXPECT_EQ(rows[k].blinker, Blinker::None) << rows[k].s_front;
+  // Stopped at the goal, at the road-side offset, the measured offset on the plan all the way.
+  EXPECT_NEAR(rows.back().speed, 0.0, 1e-6);
+  EXPECT_NEAR(s_base(r, rows.back()), seg.goal_s, 0.05);
+  EXPECT_NEAR(rows.back().lateral_offset, -0.7, 0.01);
+  for (const TimelineRow& row : rows) {
+    if (row.planned_offset) {
+      EXPECT_NEAR(row.lateral_offset, *row.planned_offset, kTolerance) << row.time;
+    }
+  }
+  EXPECT_EQ(r.record.collisions, 0);
+}
+
 // ---- Scenario checks before SUMO starts (InputError naming the key) ----------------------------
 
 std::string input_error(const std::string& name, std::vector<std::string> set) {
@@ -288,7 +348,7 @@ TEST(ManeuverInput, RejectsWhatCannotBeDriven) {
             std::string::npos);
   EXPECT_NE(input_error("lane_change_right", {"maneuvers=[{lane_change: {at: 0, length: 50}}]"}).find("behind"),
             std::string::npos);
-  EXPECT_NE(input_error("lane_change_right", {"maneuvers=[{pull_over: {}}]"}).find("unknown maneuver"),
+  EXPECT_NE(input_error("lane_change_right", {"maneuvers=[{pull_sideways: {}}]"}).find("unknown maneuver"),
             std::string::npos);
   EXPECT_NE(input_error("avoidance_left", {"obstacles=[{id: parked, edge: in_S, lane: 1, pos: 120}]"})
                 .find("not on the ego's planned lane"),
@@ -301,6 +361,13 @@ TEST(ManeuverInput, RejectsWhatCannotBeDriven) {
   EXPECT_NE(input_error("avoidance_left", {"maneuvers=[{avoid: {obstacle: parked, side: up}}]"}).find("side"),
             std::string::npos);
   EXPECT_EQ(input_error("avoidance_left", {}), "");
+  EXPECT_NE(input_error("pull_over_right", {"maneuvers=[{pull_over: {edge: out_N, pos: 20, offset: -0.7}}]"})
+                .find("must start and end"),
+            std::string::npos);
+  EXPECT_NE(input_error("pull_over_right", {"maneuvers=[{pull_over: {edge: out_E, pos: 120, offset: -0.7}}]"})
+                .find("not on the ego's route"),
+            std::string::npos);
+  EXPECT_NE(input_error("pull_out_left", {"ego.depart_lane=1"}).find("pull_out and a lane change"), std::string::npos);
   EXPECT_EQ(input_error("lane_change_right", {}), "");
 }
 
