@@ -162,10 +162,19 @@ LateralPlan plan_lateral(const Scenario& scenario, const sumo::RoutePlan& plan, 
     seg.reference_lane = first.lane_id;
     seg.left_half_width = seg.right_half_width = 0.5 * first.width;
     const double depart_base = scenario.ego.depart_pos - b2f;
-    const double at = m.at < 0.0 ? std::max(0.0, depart_base) : m.at;
+    if (m.backward > 0.0 && scenario.ego.depart_pos - m.backward < scenario.ego.length) {
+      std::ostringstream out;
+      out << "maneuvers: pull_out.backward " << m.backward << " m would back the ego off the start of edge '"
+          << first.edge_id << "' (depart_pos " << scenario.ego.depart_pos << " m, length " << scenario.ego.length << " m)";
+      fail(scenario, out.str());
+    }
+    if (m.backward > 0.0 && scenario.ego.depart_speed > 0.0)
+      fail(scenario, "maneuvers: pull_out.backward needs ego.depart_speed 0");
+    const double at = m.at < 0.0 ? std::max(0.0, depart_base - m.backward) : m.at;
     seg.plan = plan_pull_out(at, m.offset, m.length);
     check_within_edge(scenario, seg, first, "pull_out");
     lateral.depart_offset = m.offset;
+    lateral.backward = m.backward;
     lateral.segments.push_back(std::move(seg));
   }
   if (scenario.pull_over) {
@@ -191,6 +200,11 @@ LateralPlan plan_lateral(const Scenario& scenario, const sumo::RoutePlan& plan, 
       fail(scenario, "maneuvers: at most one maneuver per edge ('" + seg.edge + "' has two)");
     lateral.segments.push_back(std::move(seg));
   }
+  // With a maneuver SUMO's own lane changes are off for the ego: a route that needs lane changes
+  // beyond the first edge's could not be driven (signalsim does not plan those yet).
+  if (!lateral.segments.empty() && plan.lane_changes > 0)
+    fail(scenario, "maneuvers: the route needs lane changes that signalsim does not drive yet (only the one "
+                   "from ego.depart_lane on the first edge); choose a route without them");
   std::sort(lateral.segments.begin(), lateral.segments.end(), [](const LateralSegment& a, const LateralSegment& b) {
     return a.plan.lines().front().s_start < b.plan.lines().front().s_start;
   });

@@ -43,6 +43,8 @@ struct LateralPlan {
   bool active() const { return !segments.empty(); }
   /// Pull out: the lateral offset the ego departs with (SUMO departPosLat), 0 otherwise.
   double depart_offset = 0.0;
+  /// Pull out: metres the ego backs up (emulated) before it pulls out.
+  double backward = 0.0;
   const LateralSegment* on_edge(const std::string& edge) const {
     for (const LateralSegment& seg : segments)
       if (seg.edge == edge) return &seg;

@@ -310,6 +310,7 @@ Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrid
         m.offset = fields.required_number("offset", -10.0, 10.0);
         m.length = fields.number("length", 30.0, 1.0, 10000.0);
         m.at = fields.number("at", -1.0, 0.0, 1e6);
+        m.backward = fields.number("backward", 0.0, 0.0, 1000.0);
         fields.finish();
         s.pull_out = m;
         continue;

@@ -69,8 +69,12 @@ struct AvoidManeuver {
 struct PullOutManeuver {
   double offset = -0.7;  ///< [m], left positive, from the planned lane's centre
   double length = 30.0;  ///< [m]
-  double at = -1.0;      ///< [m] route s of base_link; < 0: the depart position
+  double at = -1.0;      ///< [m] route s of base_link; < 0: the depart position (minus `backward`)
+  /// > 0: first back up this far along the lane at kBackwardSpeed (emulated: SUMO moves the ego back
+  /// with Vehicle::moveTo; the decider sees a negative speed, not driving forward: hazard lights).
+  double backward = 0.0;  ///< [m]
 };
+inline constexpr double kBackwardSpeed = 1.0;  ///< [m/s] emulated backing-up speed
 
 /// `maneuvers: [{pull_over: {edge, pos, offset, length}}]`: the ego's goal is a stop at the road side:
 /// it shifts from its lane's centre to `offset` over `length` metres, reaching it with the front

@@ -149,6 +149,7 @@ RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, co
   JudgeDecision previous_decision = JudgeDecision::None;
 
   bool departed = false;  // the ego has moved (start planner: has_departed)
+  double backed_up = 0.0;  // [m] emulated backward driving done so far
   const LateralSegment* pull_over_goal = nullptr;
   for (const LateralSegment& seg : lateral.segments)
     if (seg.kind == LateralKind::PullOver) pull_over_goal = &seg;
@@ -161,7 +162,9 @@ RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, co
     const double s_front = located.value_or(last_s);
     hint = route.index_at(std::max(0.0, s_front - 1e-6));
     last_s = s_front;
-    const EgoOnRoute ego{s_front, s_front - b2f, observed.speed};
+    // Backing up (pull out with `backward`, emulated): not driving forward, negative speed.
+    const bool backing = backed_up < lateral.backward - 1e-9;
+    const EgoOnRoute ego{s_front, s_front - b2f, backing ? -kBackwardSpeed : observed.speed};
     if (observed.speed > kRestSpeed) departed = true;
 
     // lateral plan: measured against the planned lane while the ego is on a segment's edge.
@@ -169,7 +172,11 @@ RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, co
     const double lateral_offset =
         segment ? session.lateral_offset_from(segment->reference_lane) : observed.lateral_offset;
     std::optional<double> planned_offset;
-    if (segment) planned_offset = segment->plan.offset_at(ego.s_base);
+    // While backing up (before the pull out) the ego holds its road-side offset.
+    const auto plan_at = [&](const LateralSegment& seg, double s) {
+      return backing ? seg.plan.lines().front().shift_start : seg.plan.offset_at(s);
+    };
+    if (segment) planned_offset = plan_at(*segment, ego.s_base);
 
     // behaviour modules (spec TSD §8): the lane change runs until base_link passes its end; the
     // avoidance whenever one of its lines ends ahead of base_link (it filters the lines itself).
@@ -222,7 +229,7 @@ RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, co
         pull_out.pull_out_end = line.s_end;
         pull_out.shift_at_start = line.shift_start;
         pull_out.shift_at_end = line.shift_end;
-        pull_out.driving_forward = true;
+        pull_out.driving_forward = !backing;
         pull_out.override_ego_stopped_check = !departed;  // [SP]: not yet departed
         pull_out.closest_lanelet = seg.route_index;
         pull_out.signal = module_signal(seg, path_back);
@@ -278,9 +285,15 @@ RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, co
     session.set_emergency_braking(stop_level == StopLevel::Emergency);
 
     // apply, step.
+    if (backing) speed = 0.0;
     session.command(signal_mask(blinker), speed);
     // The plan's offset where base_link will be after the step (normal lanes of the plan's edge only).
-    if (segment) session.command_lateral_offset(segment->plan.offset_at(ego.s_base + speed * dt), segment->reference_lane);
+    if (segment) session.command_lateral_offset(plan_at(*segment, ego.s_base + speed * dt), segment->reference_lane);
+    if (backing) {
+      const double back = std::min(kBackwardSpeed * dt, lateral.backward - backed_up);
+      session.move_back(back);
+      backed_up += back;
+    }
     const bool alive = session.step();
 
     // record.
@@ -289,7 +302,7 @@ RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, co
     row.s_front = s_front;
     row.x = observed.x;
     row.y = observed.y;
-    row.speed = observed.speed;
+    row.speed = ego.speed;  // signed: negative while backing up
     row.accel = observed.accel;
     row.edge = observed.edge;
     row.lane = observed.lane;

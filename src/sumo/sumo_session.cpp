@@ -238,6 +238,23 @@ void SumoSession::command(int signal_mask, double speed) {
   }
 }
 
+void SumoSession::move_back(double distance) {
+  try {
+    const std::string lane = libsumo::Vehicle::getLaneID(kEgo);
+    const double pos = libsumo::Vehicle::getLanePosition(kEgo);
+    const double lat = libsumo::Vehicle::getLateralLanePosition(kEgo);
+    if (pos - distance < libsumo::Vehicle::getLength(kEgo))
+      throw SumoError("the ego cannot back up beyond the start of lane " + lane);
+    libsumo::Vehicle::moveTo(kEgo, lane, pos - distance);
+    const double drift = lat - libsumo::Vehicle::getLateralLanePosition(kEgo);
+    if (lateral_resolution_ > 0.0 && std::abs(drift) > 1e-6) libsumo::Vehicle::changeSublane(kEgo, drift);
+  } catch (const SumoError&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw SumoError(std::string("SUMO refused to move the ego back: ") + e.what());
+  }
+}
+
 double SumoSession::lateral_offset_from(const std::string& reference_lane_id) const {
   try {
     const std::string reference_edge = libsumo::Lane::getEdgeID(reference_lane_id);

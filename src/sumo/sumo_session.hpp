@@ -119,6 +119,11 @@ class SumoSession {
   /// the border and leave the ego short of it.
   void command_lateral_offset(double target_offset_next_step, const std::string& reference_lane_id);
 
+  /// Emulated backward driving (SUMO cannot drive backward): moves the ego `distance` metres back
+  /// along its lane now (Vehicle::moveTo), keeping its lateral offset in the lane. Command speed 0
+  /// for the step. Throws SumoError when the ego would leave the start of its lane.
+  void move_back(double distance);
+
   /// Live state of a light: one character per link index (spec SUMO §2).
   std::string light_state(const std::string& tls_id) const;
 

@@ -325,6 +325,35 @@ TEST(ManeuverScenario, PullOverRightSignalsFromSearchTimeBeforeThePathAndStopsAt
   EXPECT_EQ(r.record.collisions, 0);
 }
 
+TEST(ManeuverScenario, PullOutBackingUpGivesHazardThenLeft) {
+  const ManeuverRun r = run("pull_out_backward_hazard");
+  ASSERT_TRUE(r.record.arrived);
+  const auto& rows = r.record.rows;
+  // Backing up 3 m at 1 m/s (emulated): hazard (spec TSD §3.1, §8.1 not driving forward) every step
+  // with a negative speed, the front moving back 0.1 m per step, the road-side offset held.
+  std::size_t i = 0;
+  for (; i < rows.size() && rows[i].speed < 0.0; ++i) {
+    EXPECT_EQ(rows[i].blinker, Blinker::Hazard) << "t=" << rows[i].time;
+    EXPECT_EQ(rows[i].blinker_source, RequestSource::PullOut);
+    EXPECT_EQ(rows[i].sumo_signals & 7, 4) << "SUMO shows the hazard bit";
+    EXPECT_NEAR(rows[i].lateral_offset, -0.7, 0.01);
+    if (i > 0) {
+      EXPECT_NEAR(rows[i].s_front, rows[i - 1].s_front - 0.1, 1e-6);
+    }
+  }
+  EXPECT_EQ(i, 30u);
+  EXPECT_NEAR(rows[i].s_front, 12.0, 1e-6);
+  // Then forward: the pull out's left blinker straight away, never right.
+  EXPECT_EQ(rows[i].blinker, Blinker::Left);
+  EXPECT_EQ(rows[i].blinker_source, RequestSource::PullOut);
+  for (const TimelineRow& row : rows) {
+    EXPECT_NE(row.blinker, Blinker::Right);
+    if (row.planned_offset) {
+      EXPECT_NEAR(row.lateral_offset, *row.planned_offset, kTolerance) << row.time;
+    }
+  }
+}
+
 // ---- Scenario checks before SUMO starts (InputError naming the key) ----------------------------
 
 std::string input_error(const std::string& name, std::vector<std::string> set) {
@@ -366,6 +395,9 @@ TEST(ManeuverInput, RejectsWhatCannotBeDriven) {
             std::string::npos);
   EXPECT_NE(input_error("pull_over_right", {"maneuvers=[{pull_over: {edge: out_E, pos: 120, offset: -0.7}}]"})
                 .find("not on the ego's route"),
+            std::string::npos);
+  EXPECT_NE(input_error("pull_out_backward_hazard", {"maneuvers=[{pull_out: {offset: -0.7, backward: 12}}]"})
+                .find("back the ego off the start"),
             std::string::npos);
   EXPECT_NE(input_error("pull_out_left", {"ego.depart_lane=1"}).find("pull_out and a lane change"), std::string::npos);
   EXPECT_EQ(input_error("lane_change_right", {}), "");
