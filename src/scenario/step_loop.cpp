@@ -178,8 +178,8 @@ RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, co
     };
     if (segment) planned_offset = plan_at(*segment, ego.s_base);
 
-    // behaviour modules (spec TSD §8): the lane change runs until base_link passes its end; the
-    // avoidance whenever one of its lines ends ahead of base_link (it filters the lines itself).
+    // behaviour modules (spec TSD §8), each while Autoware would run it (see each block); merged in
+    // Autoware's order with OVERWRITE / USE_PRIOR_INFO (spec TSD §6.4) by merge_behavior_requests.
     LaneChangeSignal::Input lane_change;
     AvoidanceSignal::Input avoidance;
     PullOutSignal::Input pull_out;
