@@ -1,5 +1,6 @@
 #include "scenario/expectations.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <sstream>
@@ -84,6 +85,27 @@ ExpectationResult check(const ExpectBlinkerNever& e, const RouteMap&, const RunR
   if (record.rows.empty()) return {"", false, "the run recorded no step"};
   if (!record.arrived) return {"", false, "the run ended before the ego arrived: the rest of the route is unchecked"};
   return {"", true, std::to_string(record.rows.size()) + " steps checked"};
+}
+
+ExpectationResult check(const ExpectLateralFollowsPlan& e, const RouteMap&, const RunRecord& record) {
+  std::size_t checked = 0;
+  double worst = 0.0;
+  for (const TimelineRow& row : record.rows) {
+    if (!row.planned_offset) continue;
+    ++checked;
+    const double error = std::abs(row.lateral_offset - *row.planned_offset);
+    worst = std::max(worst, error);
+    if (error > e.tolerance) {
+      std::ostringstream out;
+      out << "lateral offset " << row.lateral_offset << " m against planned " << *row.planned_offset << " m at "
+          << at(row);
+      return {"", false, out.str()};
+    }
+  }
+  if (checked == 0) return {"", false, "no step drove a lateral plan"};
+  std::ostringstream out;
+  out << checked << " steps, worst deviation " << worst << " m";
+  return {"", true, out.str()};
 }
 
 // Route s of the stop line of the first approach to `light`, if the route meets it.

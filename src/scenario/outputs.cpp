@@ -55,7 +55,7 @@ void write_timeline_csv(const std::string& path, const std::vector<TimelineRow>&
   std::string out =
       "time,s_front,x,y,speed,accel,edge,lane,lateral_offset,blinker,blinker_source,sumo_signals,"
       "tl_id,tl_state,tl_observed,tl_decision,stop_distance,judge_distance,yellow_lamp_line,zone,stop_s,"
-      "stop_level\n";
+      "stop_level,planned_offset\n";
   out.reserve(rows.size() * 120);
   for (const TimelineRow& r : rows) {
     out += fixed(r.time, 3) + ',' + fixed(r.s_front, 3) + ',' + fixed(r.x, 3) + ',' + fixed(r.y, 3) + ',' +
@@ -70,7 +70,8 @@ void write_timeline_csv(const std::string& path, const std::vector<TimelineRow>&
            (r.stop_distance ? fixed(r.yellow_lamp_line, 3) : std::string()) + ',' +
            (r.zone == JudgeZone::None ? std::string() : std::string(to_string(r.zone))) + ',' +
            (r.stop_s ? fixed(*r.stop_s, 3) : std::string()) + ',' +
-           (r.stop_level ? std::string(to_string(*r.stop_level)) : std::string()) + '\n';
+           (r.stop_level ? std::string(to_string(*r.stop_level)) : std::string()) + ',' +
+           (r.planned_offset ? fixed(*r.planned_offset, 3) : std::string()) + '\n';
   }
   write_atomically(path, out);
 }

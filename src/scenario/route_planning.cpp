@@ -1,5 +1,7 @@
 #include "scenario/route_planning.hpp"
 
+#include <algorithm>
+#include <optional>
 #include <sstream>
 
 #include "scenario/input_error.hpp"
@@ -11,6 +13,202 @@ sumo::RoutePlan prepare_route(sumo::RoutePlan plan, const ParameterSet& params) 
   if (params.boolean("turn_signal_roundabout_exit_signal_from_previous_exit"))
     plan.map = mark_exit_signal_lanes(std::move(plan.map));
   return plan;
+}
+
+namespace {
+
+[[noreturn]] void fail(const Scenario& scenario, const std::string& message) {
+  throw InputError(scenario.path, 0, message);
+}
+
+// The lane change on the first edge, if the ego departs on another lane than the planned one.
+std::optional<LateralSegment> plan_depart_lane_change(const Scenario& scenario, const sumo::RoutePlan& plan,
+                                                      const sumo::NetIndex& net) {
+  const Lanelet& first = plan.map.at(0);
+  const sumo::NetEdge* edge = net.edge(first.edge_id);
+  const int planned = plan.lane_per_edge.empty() ? 0 : plan.lane_per_edge.front();
+  const int depart = scenario.ego.depart_lane < 0 ? planned : scenario.ego.depart_lane;
+  if (edge == nullptr) return std::nullopt;
+  if (depart >= static_cast<int>(edge->lanes.size()) || !edge->lanes[static_cast<std::size_t>(depart)].allows_passenger) {
+    std::ostringstream out;
+    out << "ego.depart_lane: edge '" << edge->id << "' has no lane " << depart << " the ego may drive ("
+        << edge->lanes.size() << " lanes)";
+    fail(scenario, out.str());
+  }
+  if (depart == planned) {
+    if (scenario.lane_change)
+      fail(scenario, "maneuvers: lane_change: the ego departs on the planned lane " + first.lane_id +
+                         " of the first edge; set ego.depart_lane to another lane");
+    return std::nullopt;
+  }
+  LateralSegment seg;
+  seg.kind = LateralKind::LaneChange;
+  seg.edge = first.edge_id;
+  seg.reference_lane = first.lane_id;
+  // The depart lane's centre seen from the planned lane's centre (left positive).
+  const auto width = [&](int i) { return edge->lanes[static_cast<std::size_t>(i)].width; };
+  const int step = depart > planned ? 1 : -1;
+  double offset = 0.5 * width(planned) + 0.5 * width(depart);
+  for (int i = planned + step; i != depart; i += step) offset += width(i);
+  offset *= step;
+  seg.boundary = step * 0.5 * width(planned);
+  seg.left_half_width = seg.right_half_width = 0.5 * width(planned);
+  const double b2f = scenario.ego.base_link_to_front;
+  const double depart_base = scenario.ego.depart_pos - b2f;
+  LaneChangeManeuver m;
+  m.at = depart_base + kDefaultLaneChangeLead;
+  m.length = kDefaultLaneChangeLength;
+  if (scenario.lane_change) m = *scenario.lane_change;
+  if (m.at < depart_base) {
+    std::ostringstream out;
+    out << "maneuvers: lane_change.at " << m.at << " m is behind base_link's depart position " << depart_base << " m";
+    fail(scenario, out.str());
+  }
+  // No lateral command on internal lanes: the shift ends while the front is still on the edge.
+  if (m.at + m.length + b2f > first.length) {
+    std::ostringstream out;
+    out << "maneuvers: the lane change on '" << edge->id << "' (base_link " << m.at << " + " << m.length
+        << " m) must end while the front bumper is still on the edge (" << first.length << " m)";
+    fail(scenario, out.str());
+  }
+  seg.plan = ShiftPlan({ShiftLine{m.at, m.at + m.length, offset, 0.0}});
+  return seg;
+}
+
+LateralSegment plan_avoid(const Scenario& scenario, const sumo::RoutePlan& plan, const AvoidManeuver& avoid,
+                          std::size_t index) {
+  const std::string where = "maneuvers: avoid '" + avoid.obstacle + "': ";
+  const ObstacleSpec* obstacle = nullptr;
+  for (const ObstacleSpec& o : scenario.obstacles)
+    if (o.id == avoid.obstacle) obstacle = &o;
+  if (obstacle == nullptr) fail(scenario, where + "no such obstacle in 'obstacles'");
+  const auto route_index = plan.map.find_edge(obstacle->edge);
+  if (!route_index) fail(scenario, where + "edge '" + obstacle->edge + "' is not on the ego's route");
+  const Lanelet& lanelet = plan.map.at(*route_index);
+  const std::string lane_id = obstacle->edge + "_" + std::to_string(obstacle->lane);
+  if (lanelet.lane_id != lane_id)
+    fail(scenario, where + "it stands on " + lane_id + ", not on the ego's planned lane " + lanelet.lane_id);
+  if (obstacle->pos > lanelet.length || obstacle->pos < obstacle->length)
+    fail(scenario, where + "its position must lie between its length and the lane length");
+  const double b2f = scenario.ego.base_link_to_front;
+  AvoidanceRequest request;
+  request.s_object_start = lanelet.s_start + obstacle->pos - obstacle->length;
+  request.s_object_end = lanelet.s_start + obstacle->pos;
+  request.object_left = 0.5 * kObstacleWidth;
+  request.object_right = -0.5 * kObstacleWidth;
+  request.clearance = avoid.clearance;
+  request.vehicle_width = kObstacleWidth;  // the ego uses SUMO's default width too
+  request.side = avoid.side == "left" ? AvoidSide::Left : avoid.side == "right" ? AvoidSide::Right : AvoidSide::Auto;
+  request.base_link_to_front = b2f;
+  request.rear_overhang = scenario.ego.length - b2f;
+  request.speed = scenario.ego.max_speed;
+  if (avoid.length > 0.0) request.lengths.fixed_length = avoid.length;
+  LateralSegment seg;
+  seg.kind = LateralKind::Avoidance;
+  seg.route_index = *route_index;
+  seg.edge = lanelet.edge_id;
+  seg.reference_lane = lanelet.lane_id;
+  seg.left_half_width = seg.right_half_width = 0.5 * lanelet.width;
+  seg.plan = plan_avoidance(request);
+  seg.first_line_id = 1000 * (index + 1);
+  const double first_s = seg.plan.lines().front().s_start;
+  const double last_s = seg.plan.lines().back().s_end;
+  if (first_s < lanelet.s_start || last_s + b2f > lanelet.s_end()) {
+    std::ostringstream out;
+    out << where << "the avoidance (base_link " << first_s << " to " << last_s << " m) must start and end while the "
+        << "ego is on edge '" << seg.edge << "' (route s " << lanelet.s_start << " to " << lanelet.s_end()
+        << " m, front bumper included); move the obstacle or shorten the shifts (length)";
+    fail(scenario, out.str());
+  }
+  return seg;
+}
+
+// A plan must start and end while base_link and the front are on the segment's edge.
+void check_within_edge(const Scenario& scenario, const LateralSegment& seg, const Lanelet& lanelet,
+                       const std::string& what) {
+  const double b2f = scenario.ego.base_link_to_front;
+  const double first_s = seg.plan.lines().front().s_start;
+  const double last_s = seg.plan.lines().back().s_end;
+  if (first_s < lanelet.s_start - 1e-9 || last_s + b2f > lanelet.s_end()) {
+    std::ostringstream out;
+    out << "maneuvers: " << what << " (base_link " << first_s << " to " << last_s << " m) must start and end while "
+        << "the ego is on edge '" << seg.edge << "' (route s " << lanelet.s_start << " to " << lanelet.s_end()
+        << " m, front bumper included)";
+    fail(scenario, out.str());
+  }
+}
+
+}  // namespace
+
+LateralPlan plan_lateral(const Scenario& scenario, const sumo::RoutePlan& plan, const sumo::NetIndex& net) {
+  LateralPlan lateral;
+  if (auto seg = plan_depart_lane_change(scenario, plan, net)) lateral.segments.push_back(std::move(*seg));
+  for (const ObstacleSpec& o : scenario.obstacles) {
+    const sumo::NetEdge* edge = net.edge(o.edge);
+    if (edge == nullptr || edge->is_internal) fail(scenario, "obstacles: '" + o.id + "': no edge '" + o.edge + "'");
+    if (o.lane >= static_cast<int>(edge->lanes.size()))
+      fail(scenario, "obstacles: '" + o.id + "': edge '" + o.edge + "' has no lane " + std::to_string(o.lane));
+    if (o.pos > edge->lanes[static_cast<std::size_t>(o.lane)].length)
+      fail(scenario, "obstacles: '" + o.id + "': pos is beyond the end of its lane");
+  }
+  const double b2f = scenario.ego.base_link_to_front;
+  if (scenario.pull_out) {
+    const PullOutManeuver& m = *scenario.pull_out;
+    if (!lateral.segments.empty()) fail(scenario, "maneuvers: pull_out and a lane change on the first edge");
+    const Lanelet& first = plan.map.at(0);
+    LateralSegment seg;
+    seg.kind = LateralKind::PullOut;
+    seg.edge = first.edge_id;
+    seg.reference_lane = first.lane_id;
+    seg.left_half_width = seg.right_half_width = 0.5 * first.width;
+    const double depart_base = scenario.ego.depart_pos - b2f;
+    if (m.backward > 0.0 && scenario.ego.depart_pos - m.backward < scenario.ego.length) {
+      std::ostringstream out;
+      out << "maneuvers: pull_out.backward " << m.backward << " m would back the ego off the start of edge '"
+          << first.edge_id << "' (depart_pos " << scenario.ego.depart_pos << " m, length " << scenario.ego.length << " m)";
+      fail(scenario, out.str());
+    }
+    if (m.backward > 0.0 && scenario.ego.depart_speed > 0.0)
+      fail(scenario, "maneuvers: pull_out.backward needs ego.depart_speed 0");
+    const double at = m.at < 0.0 ? std::max(0.0, depart_base - m.backward) : m.at;
+    seg.plan = plan_pull_out(at, m.offset, m.length);
+    check_within_edge(scenario, seg, first, "pull_out");
+    lateral.depart_offset = m.offset;
+    lateral.backward = m.backward;
+    lateral.segments.push_back(std::move(seg));
+  }
+  if (scenario.pull_over) {
+    const PullOverManeuver& m = *scenario.pull_over;
+    const auto index = plan.map.find_edge(m.edge);
+    if (!index) fail(scenario, "maneuvers: pull_over: edge '" + m.edge + "' is not on the ego's route");
+    const Lanelet& lanelet = plan.map.at(*index);
+    LateralSegment seg;
+    seg.kind = LateralKind::PullOver;
+    seg.edge = lanelet.edge_id;
+    seg.reference_lane = lanelet.lane_id;
+    seg.route_index = *index;
+    seg.left_half_width = seg.right_half_width = 0.5 * lanelet.width;
+    seg.goal_s = lanelet.s_start + m.pos - b2f;
+    seg.plan = plan_pull_over(seg.goal_s, m.offset, m.length);
+    check_within_edge(scenario, seg, lanelet, "pull_over");
+    if (lateral.on_edge(seg.edge)) fail(scenario, "maneuvers: at most one maneuver per edge ('" + seg.edge + "' has two)");
+    lateral.segments.push_back(std::move(seg));
+  }
+  for (std::size_t i = 0; i < scenario.avoids.size(); ++i) {
+    LateralSegment seg = plan_avoid(scenario, plan, scenario.avoids[i], i);
+    if (lateral.on_edge(seg.edge))
+      fail(scenario, "maneuvers: at most one maneuver per edge ('" + seg.edge + "' has two)");
+    lateral.segments.push_back(std::move(seg));
+  }
+  // With a maneuver SUMO's own lane changes are off for the ego: a route that needs lane changes
+  // beyond the first edge's could not be driven (signalsim does not plan those yet).
+  if (!lateral.segments.empty() && plan.lane_changes > 0)
+    fail(scenario, "maneuvers: the route needs lane changes that signalsim does not drive yet (only the one "
+                   "from ego.depart_lane on the first edge); choose a route without them");
+  std::sort(lateral.segments.begin(), lateral.segments.end(), [](const LateralSegment& a, const LateralSegment& b) {
+    return a.plan.lines().front().s_start < b.plan.lines().front().s_start;
+  });
+  return lateral;
 }
 
 sumo::RoutePlan plan_route(const Scenario& scenario, const sumo::NetIndex& net) {
@@ -28,6 +226,7 @@ sumo::RoutePlan plan_route(const Scenario& scenario, const sumo::NetIndex& net) 
         << "' (" << first.length << " m)";
     throw InputError(scenario.path, 0, out.str());
   }
+  plan_lateral(scenario, plan, net);  // checks the depart lane and the maneuvers
   for (const auto& [tls, offset] : scenario.light_offsets)
     if (!net.tl_logic(tls))
       throw InputError(scenario.path, 0, "light_offsets: '" + tls + "' is not a traffic light of the net");

@@ -2,6 +2,11 @@
 // change lanelet attributes (spec TSD §5.3 exit-signal marking, Japan).
 #pragma once
 
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "planning/shift_line.hpp"
 #include "scenario/scenario.hpp"
 #include "sumo/net_index.hpp"
 #include "sumo/route_builder.hpp"
@@ -13,6 +18,45 @@ namespace signalsim {
 /// previous exit as `enable_exit_turn_signal`. Throws InputError (naming the scenario file and
 /// `ego.route`) for a route the net cannot drive.
 sumo::RoutePlan plan_route(const Scenario& scenario, const sumo::NetIndex& net);
+
+/// The lateral plan of a scenario (issue 5, spec SUMO §4), one segment per maneuver, each driven on
+/// one route edge: the lane change from ego.depart_lane onto the first edge's planned lane (the lane
+/// with the connection to the next edge), and the avoidance of declared obstacles. Shift lines are on
+/// base_link's route s; offsets are lateral, left positive, from the centre of the segment's
+/// `reference_lane` (the edge's planned lane).
+enum class LateralKind { LaneChange, Avoidance, PullOut, PullOver };
+struct LateralSegment {
+  LateralKind kind = LateralKind::LaneChange;
+  std::string edge;            ///< the edge the plan is driven on
+  std::string reference_lane;  ///< its planned lane: offsets are measured from its centre
+  ShiftPlan plan;
+  /// Lane change: lateral position of the lane boundary the ego crosses (the adjacent lane's boundary) [m].
+  double boundary = 0.0;
+  double left_half_width = 1.6;   ///< of the reference lane [m] (lane-bound test)
+  double right_half_width = 1.6;
+  std::uint64_t first_line_id = 0;  ///< ids of the lines: first_line_id + index
+  std::size_t route_index = 0;      ///< the edge's lanelet on the route
+  double goal_s = 0.0;              ///< pull over: base_link's route s at the goal stop [m]
+};
+struct LateralPlan {
+  std::vector<LateralSegment> segments;  ///< ordered along the route, at most one per edge
+  bool active() const { return !segments.empty(); }
+  /// Pull out: the lateral offset the ego departs with (SUMO departPosLat), 0 otherwise.
+  double depart_offset = 0.0;
+  /// Pull out: metres the ego backs up (emulated) before it pulls out.
+  double backward = 0.0;
+  const LateralSegment* on_edge(const std::string& edge) const {
+    for (const LateralSegment& seg : segments)
+      if (seg.edge == edge) return &seg;
+    return nullptr;
+  }
+};
+
+/// Throws InputError (naming ego.depart_lane or maneuvers) for a depart lane the edge does not have
+/// or the ego may not use, a lane change without a lane to change to, an obstacle off the route's
+/// planned lanes, an avoidance of an unknown obstacle, or a shift that does not start and end while
+/// the ego is on the segment's edge (no lateral command on internal lanes).
+LateralPlan plan_lateral(const Scenario& scenario, const sumo::RoutePlan& plan, const sumo::NetIndex& net);
 
 /// The same preparation for a route built elsewhere (inspect).
 sumo::RoutePlan prepare_route(sumo::RoutePlan plan, const ParameterSet& params);

@@ -90,10 +90,17 @@ Expectation parse_expectation(const YAML::Node& item, const std::string& file, s
     fields.finish();
     return e;
   }
+  if (kind == "lateral_offset_follows_plan") {
+    ExpectLateralFollowsPlan e;
+    e.tolerance = fields.number("tolerance", 0.2, 0.0, 10.0);
+    fields.finish();
+    return e;
+  }
   throw InputError(file, yaml_line(item.begin()->first),
                    where + ": unknown expectation '" + kind +
                        "' (known: blinker_through_junction, blinker_through_lanelet, blinker_on, no_blinker, blinker_never, "
-                       "stops_before_light, passes_light, emergency_stop_at_light, never_runs_red)");
+                       "stops_before_light, passes_light, emergency_stop_at_light, never_runs_red, "
+                       "lateral_offset_follows_plan)");
 }
 
 PerceptionModelParameters parse_perception(const YAML::Node& node, const std::string& file) {
@@ -123,7 +130,8 @@ PerceptionModelParameters parse_perception(const YAML::Node& node, const std::st
 // Top-level scenario keys; any other override key is a parameter name.
 bool is_scenario_key(const std::string& key) {
   static const char* const keys[] = {"name", "description", "net", "additional", "step_length", "duration",
-                                     "seed", "country", "ego", "perception", "light_offsets", "params", "expect"};
+                                     "seed", "country", "ego", "perception", "light_offsets", "params", "obstacles", "maneuvers",
+                                     "expect"};
   for (const char* k : keys)
     if (key == k) return true;
   return false;
@@ -199,6 +207,8 @@ std::string describe(const Expectation& expectation) {
           out << "passes_light " << e.light;
         } else if constexpr (std::is_same_v<T, ExpectEmergencyStopAtLight>) {
           out << "emergency_stop_at_light " << e.light;
+        } else if constexpr (std::is_same_v<T, ExpectLateralFollowsPlan>) {
+          out << "lateral_offset_follows_plan tolerance " << e.tolerance;
         } else if constexpr (std::is_same_v<T, ExpectNeverRunsRed>) {
           out << "never_runs_red";
         } else if constexpr (std::is_same_v<T, ExpectNoBlinker>) {
@@ -250,7 +260,85 @@ Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrid
   s.ego.decel = ego.number("decel", 1.0, 0.1, 10.0);
   s.ego.emergency_decel = ego.number("emergency_decel", 9.0, 1.0, 15.0);
   if (s.ego.depart_speed > s.ego.max_speed) ego.fail("depart_speed", "exceeds ego.max_speed");
+  s.ego.depart_lane = ego.integer("depart_lane", -1, -1, 100);
   ego.finish();
+
+  const YAML::Node obstacles = top.node("obstacles");
+  if (obstacles && !obstacles.IsNull()) {
+    if (!obstacles.IsSequence()) top.fail("obstacles", "expected a list of obstacles");
+    for (std::size_t i = 0; i < obstacles.size(); ++i) {
+      YamlFields fields(obstacles[i], path, "obstacles[" + std::to_string(i) + "]");
+      ObstacleSpec o;
+      o.id = fields.text("id");
+      o.edge = fields.text("edge");
+      o.lane = fields.integer("lane", 0, 0, 100);
+      o.pos = fields.required_number("pos", 0.0, 1e6);
+      o.length = fields.number("length", 4.5, 0.5, 30.0);
+      fields.finish();
+      for (const ObstacleSpec& other : s.obstacles)
+        if (other.id == o.id) fields.fail("id", "'" + o.id + "' is declared twice");
+      s.obstacles.push_back(o);
+    }
+  }
+  const YAML::Node maneuvers = top.node("maneuvers");
+  if (maneuvers && !maneuvers.IsNull()) {
+    if (!maneuvers.IsSequence()) top.fail("maneuvers", "expected a list of maneuvers");
+    for (std::size_t i = 0; i < maneuvers.size(); ++i) {
+      const YAML::Node item = maneuvers[i];
+      const std::string where = "maneuvers[" + std::to_string(i) + "]";
+      if (!item.IsMap() || item.size() != 1)
+        throw InputError(path, yaml_line(item), where + ": each maneuver is a one-key mapping, e.g. "
+                                                        "'- lane_change: {at: 40, length: 50}'");
+      const std::string kind = item.begin()->first.Scalar();
+      if (kind == "avoid") {
+        YamlFields fields(item.begin()->second, path, where + ".avoid");
+        AvoidManeuver a;
+        a.obstacle = fields.text("obstacle");
+        a.clearance = fields.number("clearance", 1.0, 0.0, 10.0);
+        a.side = fields.text_or("side", "auto");
+        if (a.side != "auto" && a.side != "left" && a.side != "right")
+          fields.fail("side", "'" + a.side + "' is not one of auto, left, right");
+        a.length = fields.number("length", 0.0, 0.0, 10000.0);
+        fields.finish();
+        s.avoids.push_back(a);
+        continue;
+      }
+      if (kind == "pull_out") {
+        if (s.pull_out) throw InputError(path, yaml_line(item), where + ": at most one pull_out");
+        YamlFields fields(item.begin()->second, path, where + ".pull_out");
+        PullOutManeuver m;
+        m.offset = fields.required_number("offset", -10.0, 10.0);
+        m.length = fields.number("length", 30.0, 1.0, 10000.0);
+        m.at = fields.number("at", -1.0, 0.0, 1e6);
+        m.backward = fields.number("backward", 0.0, 0.0, 1000.0);
+        fields.finish();
+        s.pull_out = m;
+        continue;
+      }
+      if (kind == "pull_over") {
+        if (s.pull_over) throw InputError(path, yaml_line(item), where + ": at most one pull_over");
+        YamlFields fields(item.begin()->second, path, where + ".pull_over");
+        PullOverManeuver m;
+        m.edge = fields.text("edge");
+        m.pos = fields.required_number("pos", 0.0, 1e6);
+        m.offset = fields.required_number("offset", -10.0, 10.0);
+        m.length = fields.number("length", 30.0, 1.0, 10000.0);
+        fields.finish();
+        s.pull_over = m;
+        continue;
+      }
+      if (kind != "lane_change")
+        throw InputError(path, yaml_line(item.begin()->first),
+                         where + ": unknown maneuver '" + kind + "' (known: lane_change, avoid, pull_out, pull_over)");
+      if (s.lane_change) throw InputError(path, yaml_line(item), where + ": at most one lane_change");
+      YamlFields fields(item.begin()->second, path, where + ".lane_change");
+      LaneChangeManeuver m;
+      m.at = fields.required_number("at", 0.0, 1e6);
+      m.length = fields.number("length", kDefaultLaneChangeLength, 1.0, 10000.0);
+      fields.finish();
+      s.lane_change = m;
+    }
+  }
 
   if (top.has("perception")) s.perception = parse_perception(top.node("perception"), path);
   s.perception.seed = static_cast<std::uint64_t>(s.seed);

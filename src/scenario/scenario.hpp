@@ -6,6 +6,7 @@
 #include <vector>
 
 #include <map>
+#include <optional>
 
 #include "scenario/parameters.hpp"
 #include "traffic_light/perception_model.hpp"
@@ -26,6 +27,69 @@ struct EgoSpec {
   double accel = 1.0;               ///< comfortable acceleration [m/s^2] (Autoware normal set)
   double decel = 1.0;               ///< comfortable deceleration [m/s^2] (Autoware normal set)
   double emergency_decel = 9.0;     ///< the most the ego can brake [m/s^2] (SUMO passenger default)
+  /// Lane index the ego departs on; -1 = the planned lane of the first edge. Another lane makes
+  /// signalsim plan a lane change onto the planned lane on the first edge (see LaneChangeManeuver).
+  int depart_lane = -1;
+};
+
+/// `maneuvers: [{lane_change: {at, length}}]`: the timing of the lane change from ego.depart_lane to
+/// the first edge's planned lane (the lane with the connection to the next edge). Without it the
+/// lane change starts kDefaultLaneChangeLead metres after base_link's depart position and is
+/// kDefaultLaneChangeLength long.
+struct LaneChangeManeuver {
+  double at = -1.0;      ///< route s of base_link where the lateral motion starts [m]; < 0: default
+  double length = 50.0;  ///< [m] of route s over which the ego shifts one lane
+};
+inline constexpr double kDefaultLaneChangeLead = 20.0;    ///< [m]
+inline constexpr double kDefaultLaneChangeLength = 50.0;  ///< [m]
+
+/// `obstacles: [{id, edge, lane, pos, length}]`: a vehicle standing still on a lane for the whole run
+/// (SUMO: inserted with a stop at its position), 1.8 m wide like SUMO's default vehicle type.
+struct ObstacleSpec {
+  std::string id;
+  std::string edge;
+  int lane = 0;           ///< lane index on `edge`
+  double pos = 0.0;       ///< lane position of its front [m]
+  double length = 4.5;    ///< [m]
+};
+inline constexpr double kObstacleWidth = 1.8;  ///< [m] SUMO DEFAULT_VEHTYPE
+
+/// `maneuvers: [{avoid: {obstacle, clearance, side, length}}]`: pass a declared obstacle standing on
+/// the ego's planned lane: shift out, hold, shift back (planning/shift_line.hpp plan_avoidance).
+struct AvoidManeuver {
+  std::string obstacle;
+  double clearance = 1.0;    ///< lateral gap between the ego's side and the obstacle [m]
+  std::string side = "auto"; ///< auto (left), left, right
+  double length = 0.0;       ///< > 0: each shift is this long [m]; 0: from jerk/accel limits at max_speed
+};
+
+/// `maneuvers: [{pull_out: {offset, length, at}}]`: the ego departs `offset` metres beside its lane's
+/// centre (the road side; SUMO departPosLat) and shifts back to the centre over `length` metres from
+/// base_link's route s `at` (default: its depart position). Only on the first edge.
+struct PullOutManeuver {
+  double offset = -0.7;  ///< [m], left positive, from the planned lane's centre
+  double length = 30.0;  ///< [m]
+  double at = -1.0;      ///< [m] route s of base_link; < 0: the depart position (minus `backward`)
+  /// > 0: first back up this far along the lane at kBackwardSpeed (emulated: SUMO moves the ego back
+  /// with Vehicle::moveTo; the decider sees a negative speed, not driving forward: hazard lights).
+  double backward = 0.0;  ///< [m]
+};
+inline constexpr double kBackwardSpeed = 1.0;  ///< [m/s] emulated backing-up speed
+
+/// `maneuvers: [{pull_over: {edge, pos, offset, length}}]`: the ego's goal is a stop at the road side:
+/// it shifts from its lane's centre to `offset` over `length` metres, reaching it with the front
+/// bumper at lane position `pos` of `edge`, and stops there (jerk-limited stop).
+struct PullOverManeuver {
+  std::string edge;
+  double pos = 0.0;      ///< lane position of the front bumper at the goal [m]
+  double offset = -0.7;  ///< [m], left positive, from the planned lane's centre
+  double length = 30.0;  ///< [m]
+};
+
+/// Every step on a normal lane while a lateral plan is driven, |lateral_offset - planned_offset|
+/// stays within `tolerance`.
+struct ExpectLateralFollowsPlan {
+  double tolerance = 0.2;
 };
 
 /// A blinker direction is on continuously from at least `lead` metres (front bumper) before the
@@ -68,7 +132,7 @@ struct ExpectEmergencyStopAtLight {
 struct ExpectNeverRunsRed {};
 using Expectation = std::variant<ExpectBlinkerThrough, ExpectNoBlinker, ExpectBlinkerNever, ExpectBlinkerOn,
                                  ExpectStopsBeforeLight, ExpectPassesLight, ExpectEmergencyStopAtLight,
-                                 ExpectNeverRunsRed>;
+                                 ExpectNeverRunsRed, ExpectLateralFollowsPlan>;
 
 /// One line describing an expectation, e.g. "blinker_through_junction C left lead 30".
 std::string describe(const Expectation& e);
@@ -94,6 +158,11 @@ struct Scenario {
   PerceptionModelParameters perception;  ///< `perception:`; seeded with `seed`; all faults off by default
   std::map<std::string, double> light_offsets;  ///< `light_offsets: {tls: seconds}` program shifts
   ParameterSet params;                  ///< defaults, params.files, the country, params.set, overrides
+  std::optional<LaneChangeManeuver> lane_change;  ///< from `maneuvers` (at most one lane_change)
+  std::vector<ObstacleSpec> obstacles;
+  std::vector<AvoidManeuver> avoids;              ///< from `maneuvers`
+  std::optional<PullOutManeuver> pull_out;        ///< from `maneuvers` (at most one)
+  std::optional<PullOverManeuver> pull_over;      ///< from `maneuvers` (at most one)
   std::vector<Expectation> expect;
 };
 

@@ -7,8 +7,10 @@
 #include "planning/speed_limit_planner.hpp"
 #include "planning/stop/jerk_limited_stop.hpp"
 #include "scenario/light_stage.hpp"
+#include "scenario/route_planning.hpp"
 #include "sumo/approach_lights.hpp"
 #include "sumo/sumo_session.hpp"
+#include "turn_signal/behavior_modules.hpp"
 #include "turn_signal/turn_signal_decider.hpp"
 
 namespace signalsim {
@@ -16,6 +18,7 @@ namespace {
 
 constexpr double kRestSpeed = 0.01;       // [m/s] below this the ego counts as at rest for stop errors
 constexpr double kSettleDistance = 0.02;  // [m] this close to the stop point the ego is brought to rest
+constexpr double kPathBackward = 5.0;     // [m] behind base_link: the behaviour modules' path start
 
 Blinker blinker_of(const TurnSignalDecision& d) {
   if (d.hazard == HazardLights::Enable) return Blinker::Hazard;
@@ -36,7 +39,7 @@ int signal_mask(Blinker b) {
 
 bool is_red(char state) { return state == 'r' || state == 'u'; }
 
-sumo::SessionConfig session_config(const Scenario& scenario, const sumo::RoutePlan& plan) {
+sumo::SessionConfig session_config(const Scenario& scenario, const sumo::RoutePlan& plan, const LateralPlan& lateral) {
   sumo::SessionConfig config;
   config.net = scenario.net;
   config.additional = scenario.additional;
@@ -44,6 +47,7 @@ sumo::SessionConfig session_config(const Scenario& scenario, const sumo::RoutePl
   config.seed = scenario.seed;
   config.route = scenario.ego.route;
   config.depart_lane = plan.lane_per_edge.empty() ? 0 : plan.lane_per_edge.front();
+  if (scenario.ego.depart_lane >= 0) config.depart_lane = scenario.ego.depart_lane;
   config.depart_pos = scenario.ego.depart_pos;
   config.depart_speed = scenario.ego.depart_speed;
   config.max_speed = scenario.ego.max_speed;
@@ -51,6 +55,13 @@ sumo::SessionConfig session_config(const Scenario& scenario, const sumo::RoutePl
   config.accel = scenario.ego.accel;
   config.emergency_decel = scenario.ego.emergency_decel;
   config.keep_planned_lanes = plan.lane_changes == 0;
+  if (lateral.active()) {
+    // signalsim drives the lane change (sublane offsets re-commanded every step, spec SUMO §4).
+    config.lateral_resolution = 0.1;
+    config.keep_planned_lanes = true;
+  }
+  config.depart_pos_lat = lateral.depart_offset;
+  for (const ObstacleSpec& o : scenario.obstacles) config.standing.push_back({o.id, o.edge, o.lane, o.pos, o.length});
   return config;
 }
 
@@ -116,7 +127,11 @@ RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, co
   TurnSignalDecider decider(turn_signal_parameters(scenario.params, b2f));
   RunRecord record;
   record.base_link_to_front = b2f;
-  sumo::SumoSession session(session_config(scenario, plan));
+  const LateralPlan lateral = plan_lateral(scenario, plan, net);
+  const BehaviorSignalParameters behavior_params = behavior_signal_parameters(decider.parameters());
+  BehaviorModules modules;
+  const double path_forward = scenario.params.number("forward_path_length");  // behaviour module path ahead of base_link
+  sumo::SumoSession session(session_config(scenario, plan, lateral));
   // Arrow bulbs from every program SUMO loaded (additional files may replace the net's program).
   std::vector<sumo::ApproachLight> approaches = sumo::approach_lights(net, route);
   for (sumo::ApproachLight& a : approaches) a.has_arrow = sumo::shows_arrow(session.program_states(a.tls_id), a);
@@ -133,6 +148,12 @@ RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, co
   Blinker previous_blinker = Blinker::None;
   JudgeDecision previous_decision = JudgeDecision::None;
 
+  bool departed = false;  // the ego has moved (start planner: has_departed)
+  double backed_up = 0.0;  // [m] emulated backward driving done so far
+  const LateralSegment* pull_over_goal = nullptr;
+  for (const LateralSegment& seg : lateral.segments)
+    if (seg.kind == LateralKind::PullOver) pull_over_goal = &seg;
+
   sumo::EgoState observed = session.ego();
   while (true) {
     // observe: the ego's route position (monotonic: search from the lanelet it was on).
@@ -141,10 +162,96 @@ RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, co
     const double s_front = located.value_or(last_s);
     hint = route.index_at(std::max(0.0, s_front - 1e-6));
     last_s = s_front;
-    const EgoOnRoute ego{s_front, s_front - b2f, observed.speed};
+    // Backing up (pull out with `backward`, emulated): not driving forward, negative speed.
+    const bool backing = backed_up < lateral.backward - 1e-9;
+    const EgoOnRoute ego{s_front, s_front - b2f, backing ? -kBackwardSpeed : observed.speed};
+    if (observed.speed > kRestSpeed) departed = true;
+
+    // lateral plan: measured against the planned lane while the ego is on a segment's edge.
+    const LateralSegment* segment = lateral.on_edge(observed.edge);
+    const double lateral_offset =
+        segment ? session.lateral_offset_from(segment->reference_lane) : observed.lateral_offset;
+    std::optional<double> planned_offset;
+    // While backing up (before the pull out) the ego holds its road-side offset.
+    const auto plan_at = [&](const LateralSegment& seg, double s) {
+      return backing ? seg.plan.lines().front().shift_start : seg.plan.offset_at(s);
+    };
+    if (segment) planned_offset = plan_at(*segment, ego.s_base);
+
+    // behaviour modules (spec TSD §8), each while Autoware would run it (see each block); merged in
+    // Autoware's order with OVERWRITE / USE_PRIOR_INFO (spec TSD §6.4) by merge_behavior_requests.
+    LaneChangeSignal::Input lane_change;
+    AvoidanceSignal::Input avoidance;
+    PullOutSignal::Input pull_out;
+    PullOverSignal::Input pull_over;
+    const auto module_signal = [&](const LateralSegment& seg, double path_back) {
+      BehaviorSignalInput in;
+      in.path_front = std::max(0.0, ego.s_base - kPathBackward);
+      in.path_back = path_back;
+      in.current_shift_length = segment == &seg ? lateral_offset : 0.0;
+      in.route_start = 0.0;
+      in.lane.left_half_width = seg.left_half_width;
+      in.lane.right_half_width = seg.right_half_width;
+      // The yaw relative to the lane: the plan's (SUMO follows it exactly, see planned_offset).
+      if (segment == &seg) in.ego_relative_yaw = std::atan(seg.plan.heading_at(ego.s_base));
+      return in;
+    };
+    BehaviorRequests requests;
+    requests.now = observed.time;
+    for (const LateralSegment& seg : lateral.segments) {
+      if (seg.kind == LateralKind::LaneChange && segment == &seg) {
+        const ShiftLine& line = seg.plan.lines().front();
+        if (ego.s_base > line.s_end) continue;
+        lane_change.phase = LaneChangeSignal::Phase::Running;
+        lane_change.direction = line.relative_shift() > 0 ? TurnIndicator::EnableLeft : TurnIndicator::EnableRight;
+        lane_change.lane_changing_start = line.s_start;
+        lane_change.lane_changing_end = line.s_end;
+        lane_change.boundary_crossing = line.s_at_offset(seg.boundary);
+        requests.lane_change = &lane_change;
+      }
+      // The avoidance runs once its whole plan lies within the module path (Autoware registers
+      // shift lines only for objects within the path), until its last line is behind base_link.
+      const double path_back = std::min(route.length(), ego.s_base + path_forward);
+      if (seg.kind == LateralKind::Avoidance && !requests.avoidance && seg.plan.lines().back().s_end >= ego.s_base &&
+          seg.plan.lines().back().s_end <= path_back) {
+        for (std::size_t k = 0; k < seg.plan.lines().size(); ++k) {
+          const ShiftLine& line = seg.plan.lines()[k];
+          avoidance.shift_lines.push_back({seg.first_line_id + k, line.s_start, line.s_end, line.shift_start, line.shift_end});
+        }
+        avoidance.planned_shift_at_ego = segment == &seg ? *planned_offset : 0.0;
+        avoidance.signal = module_signal(seg, path_back);
+        requests.avoidance = &avoidance;
+      }
+      // The start planner runs from departure until base_link passes the pull-out end.
+      if (seg.kind == LateralKind::PullOut && segment == &seg && ego.s_base <= seg.plan.lines().back().s_end) {
+        const ShiftLine& line = seg.plan.lines().front();
+        pull_out.pull_out_start = line.s_start;
+        pull_out.pull_out_end = line.s_end;
+        pull_out.shift_at_start = line.shift_start;
+        pull_out.shift_at_end = line.shift_end;
+        pull_out.driving_forward = !backing;
+        pull_out.override_ego_stopped_check = !departed;  // [SP]: not yet departed
+        pull_out.closest_lanelet = seg.route_index;
+        pull_out.signal = module_signal(seg, path_back);
+        requests.pull_out = &pull_out;
+      }
+      // The goal planner runs once the pull-over path lies within the module path.
+      if (seg.kind == LateralKind::PullOver && seg.goal_s <= path_back) {
+        const ShiftLine& line = seg.plan.lines().front();
+        pull_over.path_decided = true;
+        pull_over.pull_over_start = line.s_start;
+        pull_over.pull_over_end = line.s_end;
+        pull_over.shift_at_start = line.shift_start;
+        pull_over.shift_at_end = line.shift_end;
+        pull_over.closest_lanelet = seg.route_index;
+        pull_over.signal = module_signal(seg, path_back);
+        requests.pull_over = &pull_over;
+      }
+    }
+    const TurnSignalInfo behavior = merge_behavior_requests(modules, requests, ego, behavior_params);
 
     // decide: blinker (spec TSD) and light (spec TLJ).
-    const TurnSignalDecision decision = decider.decide(route, ego);
+    const TurnSignalDecision decision = decider.decide(route, ego, behavior);
     const Blinker blinker = blinker_of(decision);
     const std::vector<LightStep> light_steps =
         lights.step(observed.time, s_front, observed.speed, observed.accel, light_state);
@@ -169,10 +276,24 @@ RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, co
       }
       if (to_go < kSettleDistance) speed = 0.0;  // within 2 cm: come to rest (coarse steps never settle)
     }
+    if (pull_over_goal) {  // the pull-over goal: a jerk-limited stop with base_link at the goal
+      const double to_go = pull_over_goal->goal_s - ego.s_base;
+      const StopCommand stop = plan_stop({observed.speed, observed.accel, to_go, dt}, stop_params);
+      if (stop.braking || stop.commanded_velocity < speed) speed = std::min(speed, stop.commanded_velocity);
+      if (to_go < kSettleDistance) speed = 0.0;
+    }
     session.set_emergency_braking(stop_level == StopLevel::Emergency);
 
     // apply, step.
+    if (backing) speed = 0.0;
     session.command(signal_mask(blinker), speed);
+    // The plan's offset where base_link will be after the step (normal lanes of the plan's edge only).
+    if (segment) session.command_lateral_offset(plan_at(*segment, ego.s_base + speed * dt), segment->reference_lane);
+    if (backing) {
+      const double back = std::min(kBackwardSpeed * dt, lateral.backward - backed_up);
+      session.move_back(back);
+      backed_up += back;
+    }
     const bool alive = session.step();
 
     // record.
@@ -181,11 +302,12 @@ RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, co
     row.s_front = s_front;
     row.x = observed.x;
     row.y = observed.y;
-    row.speed = observed.speed;
+    row.speed = ego.speed;  // signed: negative while backing up
     row.accel = observed.accel;
     row.edge = observed.edge;
     row.lane = observed.lane;
-    row.lateral_offset = observed.lateral_offset;
+    row.lateral_offset = lateral_offset;
+    row.planned_offset = planned_offset;
     row.blinker = blinker;
     row.blinker_source = blinker == Blinker::None ? RequestSource::None : decision.source;
     row.sumo_signals = alive ? session.ego_signals() : -1;

@@ -20,7 +20,10 @@ struct TimelineRow {
   double speed = 0.0;            ///< [m/s]
   double accel = 0.0;            ///< [m/s^2]
   std::string edge, lane;
-  double lateral_offset = 0.0;   ///< [m], left positive
+  double lateral_offset = 0.0;   ///< [m], left positive; from the planned lane's centre while a lateral plan is driven
+  /// The lateral plan's offset at base_link [m, left positive, from the centre of the route lane of
+  /// the edge]; empty when no plan is driven (no maneuver, or off the plan's edge).
+  std::optional<double> planned_offset;
   Blinker blinker = Blinker::None;            ///< what the decider decided
   RequestSource blinker_source = RequestSource::None;
   int sumo_signals = -1;         ///< mask SUMO showed while executing this decision; -1 = gone

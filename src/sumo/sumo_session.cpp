@@ -145,6 +145,14 @@ SumoSession::SumoSession(const SessionConfig& config) {
     // Sublane model: lateral speed and acceleration high enough that one changeSublane per step
     // lands exactly on the commanded offset (spec SUMO §4); the plan itself keeps them realistic.
     if (lateral_resolution_ > 0.0) libsumo::VehicleType::setMaxSpeedLat(kEgoType, 10.0);
+    for (const StandingVehicle& v : config.standing) {
+      const std::string route = "standing_route_" + v.id, type = "standing_type_" + v.id;
+      libsumo::Route::add(route, {v.edge});
+      libsumo::VehicleType::copy("DEFAULT_VEHTYPE", type);
+      libsumo::VehicleType::setLength(type, v.length);
+      libsumo::Vehicle::add(v.id, route, type, "0", std::to_string(v.lane), number(v.pos), "0");
+      libsumo::Vehicle::setStop(v.id, v.edge, v.pos, v.lane, 1e7);
+    }
     libsumo::Vehicle::add(kEgo, kEgoRoute, kEgoType, "0", std::to_string(config.depart_lane),
                           number(config.depart_pos), number(config.depart_speed));
     if (lateral_resolution_ > 0.0) libsumo::Vehicle::setParameter(kEgo, "laneChangeModel.lcAccelLat", "20");
@@ -156,6 +164,7 @@ SumoSession::SumoSession(const SessionConfig& config) {
         // braking: the traffic-light judge alone decides at lights.
         libsumo::Vehicle::setSpeedMode(kEgo, 15);
         if (config.keep_planned_lanes) libsumo::Vehicle::setLaneChangeMode(kEgo, 0);
+        if (config.depart_pos_lat != 0.0) move_to_depart_offset(config);
         return;
       }
     }
@@ -165,6 +174,19 @@ SumoSession::SumoSession(const SessionConfig& config) {
   }
   libsumo::Simulation::close();
   throw SumoError("the ego could not be inserted within 600 steps (its departure lane stays blocked)");
+}
+
+void SumoSession::move_to_depart_offset(const SessionConfig& config) {
+  // libsumo 1.15's Vehicle::add has no departPosLat: the ego stands still (speed 0) while SUMO's
+  // sublane model moves it sideways, a few steps (lcAccelLat 20 m/s^2), before the run starts.
+  if (lateral_resolution_ <= 0.0) throw SumoError("a lateral depart offset needs lateral_resolution > 0");
+  libsumo::Vehicle::setSpeed(kEgo, 0.0);
+  for (int i = 0; i < 100; ++i) {
+    const double delta = config.depart_pos_lat - libsumo::Vehicle::getLateralLanePosition(kEgo);
+    if (std::abs(delta) < 1e-3) break;
+    libsumo::Vehicle::changeSublane(kEgo, delta);
+    libsumo::Simulation::step();
+  }
 }
 
 SumoSession::~SumoSession() {
@@ -226,6 +248,23 @@ void SumoSession::command(int signal_mask, double speed) {
     libsumo::Vehicle::setSpeed(kEgo, speed);
   } catch (const std::exception& e) {
     throw SumoError(std::string("SUMO refused a command for the ego: ") + e.what());
+  }
+}
+
+void SumoSession::move_back(double distance) {
+  try {
+    const std::string lane = libsumo::Vehicle::getLaneID(kEgo);
+    const double pos = libsumo::Vehicle::getLanePosition(kEgo);
+    const double lat = libsumo::Vehicle::getLateralLanePosition(kEgo);
+    if (pos - distance < libsumo::Vehicle::getLength(kEgo))
+      throw SumoError("the ego cannot back up beyond the start of lane " + lane);
+    libsumo::Vehicle::moveTo(kEgo, lane, pos - distance);
+    const double drift = lat - libsumo::Vehicle::getLateralLanePosition(kEgo);
+    if (lateral_resolution_ > 0.0 && std::abs(drift) > 1e-6) libsumo::Vehicle::changeSublane(kEgo, drift);
+  } catch (const SumoError&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw SumoError(std::string("SUMO refused to move the ego back: ") + e.what());
   }
 }
 

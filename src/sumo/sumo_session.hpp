@@ -23,6 +23,15 @@ inline constexpr int kBlinkerLeft = 2;
 inline constexpr int kBlinkerEmergency = 4;
 inline constexpr int kBlinkerMask = kBlinkerRight | kBlinkerLeft | kBlinkerEmergency;
 
+/// A vehicle standing still on a lane for the whole run (an obstacle to pass).
+struct StandingVehicle {
+  std::string id;
+  std::string edge;
+  int lane = 0;
+  double pos = 0.0;     ///< lane position of its front [m]
+  double length = 4.5;  ///< [m]; width, as SUMO's DEFAULT_VEHTYPE, 1.8 m
+};
+
 struct SessionConfig {
   std::string net;
   std::vector<std::string> additional;
@@ -31,6 +40,9 @@ struct SessionConfig {
   std::vector<std::string> route;  ///< ego edges
   int depart_lane = 0;
   double depart_pos = 0.0;
+  /// Lateral offset from the depart lane's centre [m, left positive]; needs lateral_resolution > 0.
+  /// The ego is moved there standing still before the constructor returns (a few steps).
+  double depart_pos_lat = 0.0;
   double depart_speed = 0.0;
   double max_speed = 13.89;
   double length = 4.5;
@@ -43,6 +55,8 @@ struct SessionConfig {
   /// dynamics fast enough to follow command_lateral_offset() exactly: vehicle-type maxSpeedLat
   /// 10 m/s and the vehicle parameter laneChangeModel.lcAccelLat 20 m/s^2 (spec SUMO §4).
   double lateral_resolution = 0.0;
+  /// Inserted with the ego, each with a stop at its position that lasts for the whole run.
+  std::vector<StandingVehicle> standing;
 };
 
 /// The ego as SUMO reports it after a step.
@@ -105,6 +119,11 @@ class SumoSession {
   /// the border and leave the ego short of it.
   void command_lateral_offset(double target_offset_next_step, const std::string& reference_lane_id);
 
+  /// Emulated backward driving (SUMO cannot drive backward): moves the ego `distance` metres back
+  /// along its lane now (Vehicle::moveTo), keeping its lateral offset in the lane. Command speed 0
+  /// for the step. Throws SumoError when the ego would leave the start of its lane.
+  void move_back(double distance);
+
   /// Live state of a light: one character per link index (spec SUMO §2).
   std::string light_state(const std::string& tls_id) const;
 
@@ -124,6 +143,7 @@ class SumoSession {
 
  private:
   std::string sumo_reason(const std::exception& e) const;
+  void move_to_depart_offset(const SessionConfig& config);
   std::unique_ptr<StderrCapture> capture_;  ///< SUMO's stderr while the session lives
   int ego_collisions_ = 0;
   bool emergency_braking_ = false;

@@ -1,0 +1,407 @@
+// Lateral maneuvers end to end on the real libsumo (issue 5): the bundled lane-change scenarios run
+// through run_scenario, and each step is checked against spec TSD §8.2 (lane change, signalsim
+// activation: on once the front is within max(v * turn_signal_search_time,
+// turn_signal_minimum_search_distance) of the lane-changing start; off once base_link passes the
+// lane-changing end) and against the lateral plan (measured offset within 0.2 m of the plan).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "scenario/input_error.hpp"
+#include "scenario/route_planning.hpp"
+#include "scenario/scenario.hpp"
+#include "scenario/step_loop.hpp"
+#include "sumo/net_index.hpp"
+
+namespace signalsim {
+namespace {
+
+constexpr double kSearchTime = 3.0;          // turn_signal_search_time
+constexpr double kMinSearchDistance = 10.0;  // turn_signal_minimum_search_distance
+constexpr double kTolerance = 0.2;           // m, lateral tracking
+constexpr double kLaneWidth = 3.2;           // cross.net.xml lanes
+
+struct ManeuverRun {
+  Scenario scenario;
+  LateralPlan lateral;
+  RunRecord record;
+};
+
+ManeuverRun run(const std::string& name) {
+  ManeuverRun r;
+  r.scenario = load_scenario(std::string(SIGNALSIM_SOURCE_DIR) + "/scenarios/" + name + ".yaml");
+  const sumo::NetIndex net = sumo::NetIndex::load(r.scenario.net);
+  const sumo::RoutePlan plan = plan_route(r.scenario, net);
+  r.lateral = plan_lateral(r.scenario, plan, net);
+  r.record = run_scenario(r.scenario, plan, net);
+  return r;
+}
+
+double s_base(const ManeuverRun& r, const TimelineRow& row) { return row.s_front - r.record.base_link_to_front; }
+
+// Every step with a plan: measured within 0.2 m of it; the plan starts on the depart lane's offset
+// and ends on the planned lane's centre; the lane change is never a jump.
+void expect_tracks_plan(const ManeuverRun& r, double start_offset) {
+  ASSERT_TRUE(r.lateral.active());
+  int steps = 0;
+  std::optional<double> previous;
+  for (const TimelineRow& row : r.record.rows) {
+    if (!row.planned_offset) continue;
+    ++steps;
+    EXPECT_NEAR(row.lateral_offset, *row.planned_offset, kTolerance) << "t=" << row.time;
+    if (previous) {
+      EXPECT_LT(std::abs(row.lateral_offset - *previous), 0.5) << "a jump at t=" << row.time;
+    }
+    previous = row.lateral_offset;
+  }
+  EXPECT_GT(steps, 100);
+  const auto first = std::find_if(r.record.rows.begin(), r.record.rows.end(),
+                                  [](const TimelineRow& row) { return row.planned_offset.has_value(); });
+  EXPECT_NEAR(*first->planned_offset, start_offset, 1e-9);
+  EXPECT_NEAR(first->lateral_offset, start_offset, 0.01);
+  EXPECT_NEAR(r.lateral.segments.front().plan.lines().back().shift_end, 0.0, 1e-12);
+}
+
+// The first step (index) where the blinker is `b` from `source`, or -1.
+long first_step(const ManeuverRun& r, Blinker b, RequestSource source, std::size_t from = 0) {
+  for (std::size_t i = from; i < r.record.rows.size(); ++i)
+    if (r.record.rows[i].blinker == b && r.record.rows[i].blinker_source == source) return static_cast<long>(i);
+  return -1;
+}
+
+// The lane-change blinker turns on exactly at the first step with the front within the prep
+// distance of the lane-changing start, and stays on (from the lane change) until base_link passes
+// the lane-changing end; returns the index of the first step after it.
+std::size_t expect_lane_change_stretch(const ManeuverRun& r, Blinker b) {
+  const ShiftLine& line = r.lateral.segments.front().plan.lines().front();
+  const auto& rows = r.record.rows;
+  std::size_t i = 0;
+  for (; i < rows.size(); ++i) {
+    const double prep = std::max(rows[i].speed * kSearchTime, kMinSearchDistance);
+    if (line.s_start - rows[i].s_front <= prep) break;
+    EXPECT_EQ(rows[i].blinker, Blinker::None) << "too early at s_front " << rows[i].s_front;
+  }
+  if (i >= rows.size()) {
+    ADD_FAILURE() << "the lane change never came within reach";
+    return i;
+  }
+  EXPECT_GT(i, 0u) << "the scenario should start out of reach";
+  for (; i < rows.size() && s_base(r, rows[i]) <= line.s_end; ++i) {
+    EXPECT_EQ(rows[i].blinker, b) << "s_front " << rows[i].s_front;
+    EXPECT_EQ(rows[i].blinker_source, RequestSource::LaneChange) << "s_front " << rows[i].s_front;
+  }
+  return i;
+}
+
+TEST(ManeuverScenario, LaneChangeRightAlone) {
+  const ManeuverRun r = run("lane_change_right");
+  ASSERT_TRUE(r.record.arrived);
+  expect_tracks_plan(r, kLaneWidth);  // departs on in_S_1, one lane left of the planned in_S_0
+  const std::size_t after = expect_lane_change_stretch(r, Blinker::Right);
+  for (std::size_t i = after; i < r.record.rows.size(); ++i)
+    EXPECT_EQ(r.record.rows[i].blinker, Blinker::None) << "s_front " << r.record.rows[i].s_front;
+  // The lane change really happened: SUMO has the ego on in_S_0 at the end of in_S, and it went
+  // straight through C on the route (no off-route step).
+  std::string last_in_s;
+  for (const TimelineRow& row : r.record.rows)
+    if (row.edge == "in_S") last_in_s = row.lane;
+  EXPECT_EQ(last_in_s, "in_S_0");
+  EXPECT_EQ(r.record.off_route_steps, 0);
+  EXPECT_EQ(r.record.collisions, 0);
+}
+
+TEST(ManeuverScenario, LaneChangeThenLeftTurnTheLeftTurnWaitsForTheLaneChangeEnd) {
+  const ManeuverRun r = run("lane_change_then_left");
+  ASSERT_TRUE(r.record.arrived);
+  expect_tracks_plan(r, -kLaneWidth);  // departs on in_S_0, the left turn needs in_S_1
+  const std::size_t after = expect_lane_change_stretch(r, Blinker::Left);
+  // The intersection's own request would have started earlier: 3 v + 30 before the turn lane at
+  // 189.60 (s_front ~118, see intersection_left.yaml); the lane-change path ends at base_link 120.
+  const long turn = first_step(r, Blinker::Left, RequestSource::Intersection);
+  ASSERT_GE(turn, 0);
+  EXPECT_EQ(static_cast<std::size_t>(turn), after) << "the left turn takes over right after the lane change";
+  EXPECT_GT(s_base(r, r.record.rows[static_cast<std::size_t>(turn)]), r.lateral.segments.front().plan.lines().front().s_end);
+  const double turn_search = r.record.rows[static_cast<std::size_t>(turn)].speed * kSearchTime + 30.0;
+  EXPECT_LT(189.60 - r.record.rows[static_cast<std::size_t>(turn)].s_front, turn_search)
+      << "the intersection request was already within reach when the lane change ended";
+  for (std::size_t i = 0; i < r.record.rows.size(); ++i) EXPECT_NE(r.record.rows[i].blinker, Blinker::Right);
+  EXPECT_EQ(r.record.off_route_steps, 0);
+}
+
+TEST(ManeuverScenario, EarlyLaneChangeThenLeftTurnTwoStretches) {
+  const ManeuverRun r = run("lane_change_gap_then_left");
+  ASSERT_TRUE(r.record.arrived);
+  expect_tracks_plan(r, -kLaneWidth);
+  const auto& rows = r.record.rows;
+  // Departs already within reach (lane-changing start 20 m, front at 5 m): on from the first step.
+  EXPECT_EQ(rows.front().blinker, Blinker::Left);
+  EXPECT_EQ(rows.front().blinker_source, RequestSource::LaneChange);
+  std::size_t i = 0;
+  for (; i < rows.size() && s_base(r, rows[i]) <= r.lateral.segments.front().plan.lines().front().s_end; ++i)
+    EXPECT_EQ(rows[i].blinker_source, RequestSource::LaneChange);
+  const long turn = first_step(r, Blinker::Left, RequestSource::Intersection, i);
+  ASSERT_GT(turn, static_cast<long>(i)) << "a gap without blinker between the two stretches";
+  for (std::size_t k = i; k < static_cast<std::size_t>(turn); ++k) EXPECT_EQ(rows[k].blinker, Blinker::None);
+  // The intersection request: on at the first step with the turn lane (189.60) within 3 v + 30.
+  const TimelineRow& on = rows[static_cast<std::size_t>(turn)];
+  const TimelineRow& before = rows[static_cast<std::size_t>(turn) - 1];
+  EXPECT_LT(189.60 - on.s_front, on.speed * kSearchTime + 30.0);
+  EXPECT_GE(189.60 - before.s_front, before.speed * kSearchTime + 30.0);
+}
+
+// ---- Avoidance (spec TSD §8.2 "Avoidance", §8.1) ----------------------------------------------
+
+constexpr double kMaxPrepareTime = 3.0;  // avoidance max_prepare_time
+constexpr double kAvoidOffset = 0.9 + 1.0 + 0.9;  // half obstacle + clearance + half ego [m]
+
+// The avoidance segment's two lines (shift out, shift back) and the tracking of the whole plan.
+struct AvoidLines {
+  ShiftLine out, back;
+};
+AvoidLines avoid_lines(const ManeuverRun& r, double side) {
+  const LateralSegment& seg = r.lateral.segments.back();
+  EXPECT_EQ(seg.kind, LateralKind::Avoidance);
+  EXPECT_EQ(seg.plan.lines().size(), 2u);
+  const AvoidLines lines{seg.plan.lines().front(), seg.plan.lines().back()};
+  EXPECT_NEAR(lines.out.shift_end, side * kAvoidOffset, 1e-9);
+  EXPECT_NEAR(lines.back.shift_start, side * kAvoidOffset, 1e-9);
+  EXPECT_NEAR(lines.back.shift_end, 0.0, 1e-12);
+  // The measured offset follows the plan; it really reaches the hold offset beside the obstacle.
+  double widest = 0.0;
+  for (const TimelineRow& row : r.record.rows) {
+    if (!row.planned_offset) continue;
+    EXPECT_NEAR(row.lateral_offset, *row.planned_offset, kTolerance) << "t=" << row.time;
+    widest = std::max(widest, side * row.lateral_offset);
+  }
+  EXPECT_NEAR(widest, kAvoidOffset, 0.01);
+  EXPECT_EQ(r.record.collisions, 0);
+  EXPECT_EQ(r.record.off_route_steps, 0);
+  return lines;
+}
+
+// §8.1 on: the first step with the front within max(v * search_time, min distance) of `line`'s start.
+bool within_prep(const TimelineRow& row, const ShiftLine& line) {
+  return line.s_start - row.s_front <= std::max(row.speed * kSearchTime, kMinSearchDistance);
+}
+
+// §8.2 target line: the return line once its start is within v * max_prepare_time of base_link
+// (strict) and the shift out has started.
+bool return_is_target(const ManeuverRun& r, const TimelineRow& row, const AvoidLines& l) {
+  return l.out.s_start <= s_base(r, row) && l.back.s_start - s_base(r, row) < row.speed * kMaxPrepareTime;
+}
+
+TEST(ManeuverScenario, AvoidanceAloneShiftOutLeftReturnRight) {
+  const ManeuverRun r = run("avoidance_left");
+  ASSERT_TRUE(r.record.arrived);
+  const AvoidLines l = avoid_lines(r, +1.0);
+  const auto& rows = r.record.rows;
+  std::size_t i = 0;
+  for (; i < rows.size() && !within_prep(rows[i], l.out); ++i) EXPECT_EQ(rows[i].blinker, Blinker::None);
+  ASSERT_GT(i, 0u);
+  // Left (shift out) until the return line becomes the target, then right (return).
+  for (; i < rows.size() && !return_is_target(r, rows[i], l); ++i) {
+    EXPECT_EQ(rows[i].blinker, Blinker::Left) << "s_front " << rows[i].s_front;
+    EXPECT_EQ(rows[i].blinker_source, RequestSource::Avoidance);
+  }
+  ASSERT_LT(i, rows.size());
+  // Right until the remaining return is below turn_signal_remaining_shift_length_threshold (0.1 m):
+  // then NONE and the line latched as ignored; nothing after that.
+  for (; i < rows.size() && std::abs(rows[i].lateral_offset) >= 0.1; ++i) {
+    EXPECT_EQ(rows[i].blinker, Blinker::Right) << "s_front " << rows[i].s_front;
+    EXPECT_EQ(rows[i].blinker_source, RequestSource::Avoidance);
+  }
+  EXPECT_LT(s_base(r, rows[i]), l.back.s_end);
+  for (std::size_t k = i + 1; k < rows.size(); ++k) EXPECT_EQ(rows[k].blinker, Blinker::None) << rows[k].s_front;
+}
+
+TEST(ManeuverScenario, AvoidanceBeforeLeftTurnReturnHandsOverToTheTurn) {
+  const ManeuverRun r = run("avoidance_before_left_turn");
+  ASSERT_TRUE(r.record.arrived);
+  const AvoidLines l = avoid_lines(r, -1.0);  // on the right: in_S_1 is the leftmost lane
+  const auto& rows = r.record.rows;
+  std::size_t i = 0;
+  for (; i < rows.size() && !within_prep(rows[i], l.out); ++i) EXPECT_EQ(rows[i].blinker, Blinker::None);
+  for (; i < rows.size() && !return_is_target(r, rows[i], l); ++i) {
+    EXPECT_EQ(rows[i].blinker, Blinker::Right) << "s_front " << rows[i].s_front;
+    EXPECT_EQ(rows[i].blinker_source, RequestSource::Avoidance);
+  }
+  // The return (left) from the avoidance, then the left turn's own request, left all the way.
+  const long turn = first_step(r, Blinker::Left, RequestSource::Intersection);
+  ASSERT_GT(turn, static_cast<long>(i));
+  for (; i < static_cast<std::size_t>(turn); ++i) {
+    EXPECT_EQ(rows[i].blinker, Blinker::Left) << "s_front " << rows[i].s_front;
+    EXPECT_EQ(rows[i].blinker_source, RequestSource::Avoidance);
+  }
+  // The turn takes over exactly when the remaining return drops below 0.1 m (the avoidance goes
+  // NONE and latches), not where its own search distance begins.
+  EXPECT_LT(std::abs(rows[static_cast<std::size_t>(turn)].lateral_offset), 0.1);
+  EXPECT_GE(std::abs(rows[static_cast<std::size_t>(turn) - 1].lateral_offset), 0.1);
+  for (const TimelineRow& row : rows) EXPECT_NE(row.blinker, Blinker::Hazard);
+}
+
+TEST(ManeuverScenario, AvoidanceAfterLeftTurnWaitsForTheTurnToEnd) {
+  const ManeuverRun r = run("avoidance_after_left_turn");
+  ASSERT_TRUE(r.record.arrived);
+  const AvoidLines l = avoid_lines(r, -1.0);
+  const auto& rows = r.record.rows;
+  const long turn = first_step(r, Blinker::Left, RequestSource::Intersection);
+  const long avoid = first_step(r, Blinker::Right, RequestSource::Avoidance);
+  ASSERT_GE(turn, 0);
+  ASSERT_GT(avoid, turn);
+  // Left (the turn) without a gap up to the avoidance's right, which was already within reach the
+  // step before: the turn won while base_link was still in junction C (it leaves at 208.95).
+  for (long k = turn; k < avoid; ++k) EXPECT_EQ(rows[static_cast<std::size_t>(k)].blinker, Blinker::Left);
+  const TimelineRow& before = rows[static_cast<std::size_t>(avoid) - 1];
+  EXPECT_TRUE(within_prep(before, l.out)) << "the avoidance request existed before it won";
+  EXPECT_LE(s_base(r, before), 208.95 + 0.01);
+  EXPECT_GT(s_base(r, rows[static_cast<std::size_t>(avoid)]), 208.95);
+  // Then left again for the return, from the avoidance.
+  const long back = first_step(r, Blinker::Left, RequestSource::Avoidance, static_cast<std::size_t>(avoid));
+  ASSERT_GT(back, avoid);
+  EXPECT_TRUE(return_is_target(r, rows[static_cast<std::size_t>(back)], l));
+}
+
+// ---- Pull out and pull over (spec TSD §8.2 start / goal planner) --------------------------------
+
+constexpr double kRemainingShift = 0.1;  // turn_signal_remaining_shift_length_threshold
+constexpr double kBoundThreshold = 1.3;  // turn_signal_remaining_distance_to_bound_threshold
+constexpr double kHalfLane = 1.6, kHalfEgo = 0.9;
+
+TEST(ManeuverScenario, PullOutLeftOffOnceTheFrontCornerNearsTheFarBound) {
+  const ManeuverRun r = run("pull_out_left");
+  ASSERT_TRUE(r.record.arrived);
+  const ShiftLine& line = r.lateral.segments.front().plan.lines().front();
+  EXPECT_NEAR(line.shift_start, -0.7, 1e-12);
+  const auto& rows = r.record.rows;
+  EXPECT_NEAR(rows.front().lateral_offset, -0.7, 0.01) << "departs at the road side";
+  EXPECT_NEAR(rows.front().speed, 0.0, 1e-9);
+  std::size_t i = 0;
+  for (; i < rows.size() && rows[i].blinker == Blinker::Left; ++i) {
+    EXPECT_EQ(rows[i].blinker_source, RequestSource::PullOut);
+    EXPECT_NEAR(rows[i].lateral_offset, *rows[i].planned_offset, kTolerance);
+  }
+  ASSERT_GT(i, 0u) << "left from the first step";
+  ASSERT_LT(i, rows.size());
+  // Off: the left front corner (offset + half width, plus the yaw's share) within 1.3 m of the
+  // left bound, while the shift is not yet complete; on before that.
+  const auto corner_gap = [&](const TimelineRow& row) {
+    const double yaw = std::atan(line.heading_at(s_base(r, row)));
+    return kHalfLane - (row.lateral_offset + kHalfEgo * std::cos(yaw) + r.record.base_link_to_front * std::sin(yaw));
+  };
+  EXPECT_LT(corner_gap(rows[i]), kBoundThreshold + 0.01);
+  EXPECT_GE(corner_gap(rows[i - 1]), kBoundThreshold - 0.01);
+  EXPECT_LT(s_base(r, rows[i]), line.s_end);
+  for (std::size_t k = i; k < rows.size(); ++k) EXPECT_EQ(rows[k].blinker, Blinker::None) << rows[k].s_front;
+}
+
+TEST(ManeuverScenario, PullOverRightSignalsFromSearchTimeBeforeThePathAndStopsAtTheGoal) {
+  const ManeuverRun r = run("pull_over_right");
+  const LateralSegment& seg = r.lateral.segments.front();
+  ASSERT_EQ(seg.kind, LateralKind::PullOver);
+  const ShiftLine& line = seg.plan.lines().front();
+  const auto& rows = r.record.rows;
+  std::size_t i = 0;
+  for (; i < rows.size() && !within_prep(rows[i], line); ++i) EXPECT_EQ(rows[i].blinker, Blinker::None) << rows[i].s_front;
+  ASSERT_GT(i, 0u);
+  for (; i < rows.size() && std::abs(rows[i].lateral_offset - line.shift_end) >= kRemainingShift; ++i) {
+    EXPECT_EQ(rows[i].blinker, Blinker::Right) << "s_front " << rows[i].s_front;
+    EXPECT_EQ(rows[i].blinker_source, RequestSource::PullOver);
+  }
+  ASSERT_LT(i, rows.size());
+  for (std::size_t k = i; k < rows.size(); ++k) EXPECT_EQ(rows[k].blinker, Blinker::None) << rows[k].s_front;
+  // Stopped at the goal, at the road-side offset, the measured offset on the plan all the way.
+  EXPECT_NEAR(rows.back().speed, 0.0, 1e-6);
+  EXPECT_NEAR(s_base(r, rows.back()), seg.goal_s, 0.05);
+  EXPECT_NEAR(rows.back().lateral_offset, -0.7, 0.01);
+  for (const TimelineRow& row : rows) {
+    if (row.planned_offset) {
+      EXPECT_NEAR(row.lateral_offset, *row.planned_offset, kTolerance) << row.time;
+    }
+  }
+  EXPECT_EQ(r.record.collisions, 0);
+}
+
+TEST(ManeuverScenario, PullOutBackingUpGivesHazardThenLeft) {
+  const ManeuverRun r = run("pull_out_backward_hazard");
+  ASSERT_TRUE(r.record.arrived);
+  const auto& rows = r.record.rows;
+  // Backing up 3 m at 1 m/s (emulated): hazard (spec TSD §3.1, §8.1 not driving forward) every step
+  // with a negative speed, the front moving back 0.1 m per step, the road-side offset held.
+  std::size_t i = 0;
+  for (; i < rows.size() && rows[i].speed < 0.0; ++i) {
+    EXPECT_EQ(rows[i].blinker, Blinker::Hazard) << "t=" << rows[i].time;
+    EXPECT_EQ(rows[i].blinker_source, RequestSource::PullOut);
+    EXPECT_EQ(rows[i].sumo_signals & 7, 4) << "SUMO shows the hazard bit";
+    EXPECT_NEAR(rows[i].lateral_offset, -0.7, 0.01);
+    if (i > 0) {
+      EXPECT_NEAR(rows[i].s_front, rows[i - 1].s_front - 0.1, 1e-6);
+    }
+  }
+  EXPECT_EQ(i, 30u);
+  EXPECT_NEAR(rows[i].s_front, 12.0, 1e-6);
+  // Then forward: the pull out's left blinker straight away, never right.
+  EXPECT_EQ(rows[i].blinker, Blinker::Left);
+  EXPECT_EQ(rows[i].blinker_source, RequestSource::PullOut);
+  for (const TimelineRow& row : rows) {
+    EXPECT_NE(row.blinker, Blinker::Right);
+    if (row.planned_offset) {
+      EXPECT_NEAR(row.lateral_offset, *row.planned_offset, kTolerance) << row.time;
+    }
+  }
+}
+
+// ---- Scenario checks before SUMO starts (InputError naming the key) ----------------------------
+
+std::string input_error(const std::string& name, std::vector<std::string> set) {
+  try {
+    const Scenario scenario =
+        load_scenario(std::string(SIGNALSIM_SOURCE_DIR) + "/scenarios/" + name + ".yaml", ScenarioOverrides{set});
+    const sumo::NetIndex net = sumo::NetIndex::load(scenario.net);
+    plan_route(scenario, net);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(ManeuverInput, RejectsWhatCannotBeDriven) {
+  EXPECT_NE(input_error("lane_change_right", {"ego.depart_lane=2"}).find("ego.depart_lane"), std::string::npos);
+  EXPECT_NE(input_error("lane_change_right", {"ego.depart_lane=0"}).find("departs on the planned lane"),
+            std::string::npos);
+  EXPECT_NE(input_error("lane_change_right", {"maneuvers=[{lane_change: {at: 40, length: 160}}]"})
+                .find("must end while the front bumper is still on the edge"),
+            std::string::npos);
+  EXPECT_NE(input_error("lane_change_right", {"maneuvers=[{lane_change: {at: 0, length: 50}}]"}).find("behind"),
+            std::string::npos);
+  EXPECT_NE(input_error("lane_change_right", {"maneuvers=[{pull_sideways: {}}]"}).find("unknown maneuver"),
+            std::string::npos);
+  EXPECT_NE(input_error("avoidance_left", {"obstacles=[{id: parked, edge: in_S, lane: 1, pos: 120}]"})
+                .find("not on the ego's planned lane"),
+            std::string::npos);
+  EXPECT_NE(input_error("avoidance_left", {"maneuvers=[{avoid: {obstacle: nobody}}]"}).find("no such obstacle"),
+            std::string::npos);
+  EXPECT_NE(input_error("avoidance_left", {"obstacles=[{id: parked, edge: in_S, lane: 0, pos: 30}]"})
+                .find("must start and end"),
+            std::string::npos);
+  EXPECT_NE(input_error("avoidance_left", {"maneuvers=[{avoid: {obstacle: parked, side: up}}]"}).find("side"),
+            std::string::npos);
+  EXPECT_EQ(input_error("avoidance_left", {}), "");
+  EXPECT_NE(input_error("pull_over_right", {"maneuvers=[{pull_over: {edge: out_N, pos: 20, offset: -0.7}}]"})
+                .find("must start and end"),
+            std::string::npos);
+  EXPECT_NE(input_error("pull_over_right", {"maneuvers=[{pull_over: {edge: out_E, pos: 120, offset: -0.7}}]"})
+                .find("not on the ego's route"),
+            std::string::npos);
+  EXPECT_NE(input_error("pull_out_backward_hazard", {"maneuvers=[{pull_out: {offset: -0.7, backward: 12}}]"})
+                .find("back the ego off the start"),
+            std::string::npos);
+  EXPECT_NE(input_error("pull_out_left", {"ego.depart_lane=1"}).find("pull_out and a lane change"), std::string::npos);
+  EXPECT_EQ(input_error("lane_change_right", {}), "");
+}
+
+}  // namespace
+}  // namespace signalsim
