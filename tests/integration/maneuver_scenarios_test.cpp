@@ -211,6 +211,53 @@ TEST(ManeuverScenario, RequestedLaneChangeOnAnEdgeOffTheRouteIsRejected) {
   EXPECT_THROW(plan_route(s, net), InputError);
 }
 
+// ---- Lane change inside a two-lane roundabout, before its exit -----------------------------------
+
+// Common checks: entered on the inner lane, the shift on ring_EN to the outer lane, right from the
+// lane change; returns the first step after the lane-change stretch.
+std::size_t expect_ring_lane_change(const ManeuverRun& r) {
+  EXPECT_TRUE(r.record.arrived);
+  EXPECT_EQ(r.lateral.segments.size(), 1u);
+  const LateralSegment& seg = r.lateral.segments.front();
+  EXPECT_EQ(seg.edge, "ring_EN");
+  EXPECT_EQ(seg.reference_lane, "ring_EN_0");
+  expect_tracks_plan(r, kLaneWidth);  // from the inner lane (one lane left) to the outer one
+  EXPECT_EQ(last_lane_on(r, "in_S"), "in_S_1");
+  EXPECT_EQ(last_lane_on(r, "ring_SE"), "ring_SE_1");
+  EXPECT_EQ(last_lane_on(r, "ring_EN"), "ring_EN_0");
+  EXPECT_EQ(r.record.off_route_steps, 0);
+  EXPECT_EQ(r.record.collisions, 0);
+  for (const TimelineRow& row : r.record.rows) EXPECT_NE(row.blinker, Blinker::Left);
+  return expect_lane_change_stretch(r, Blinker::Right);
+}
+
+TEST(ManeuverScenario, RoundaboutLaneChangeBeforeExitThenExitSignal) {
+  const ManeuverRun r = run("roundabout_two_lane_change_before_exit");
+  const std::size_t after = expect_ring_lane_change(r);
+  const auto& rows = r.record.rows;
+  // de: the exit request starts on the exit lanelet only, after a gap.
+  const long exit = first_step(r, Blinker::Right, RequestSource::RoundaboutExit, after);
+  ASSERT_GT(exit, static_cast<long>(after));
+  for (std::size_t i = after; i < static_cast<std::size_t>(exit); ++i) EXPECT_EQ(rows[i].blinker, Blinker::None);
+  EXPECT_EQ(rows[static_cast<std::size_t>(exit)].lane, ":RN_2_0");
+}
+
+TEST(ManeuverScenario, RoundaboutLaneChangeWinsOverTheExitSignalUntilItsPathEnds) {
+  const ManeuverRun r = run("roundabout_two_lane_change_exit_from_previous");
+  const std::size_t after = expect_ring_lane_change(r);
+  const auto& rows = r.record.rows;
+  ASSERT_LT(after, rows.size());
+  // The exit request (from the previous exit) takes over at once: no gap.
+  EXPECT_EQ(rows[after].blinker, Blinker::Right);
+  EXPECT_EQ(rows[after].blinker_source, RequestSource::RoundaboutExit);
+  EXPECT_EQ(rows[after].edge, "ring_EN");
+  std::size_t i = after;
+  for (; i < rows.size() && rows[i].blinker == Blinker::Right; ++i)
+    EXPECT_EQ(rows[i].blinker_source, RequestSource::RoundaboutExit);
+  ASSERT_LT(i, rows.size());
+  EXPECT_EQ(rows[i].edge, "out_N");
+}
+
 // ---- Avoidance (spec TSD §8.2 "Avoidance", §8.1) ----------------------------------------------
 
 constexpr double kMaxPrepareTime = 3.0;  // avoidance max_prepare_time
