@@ -257,7 +257,11 @@ sumo::RoutePlan plan_route(const Scenario& scenario, const sumo::NetIndex& net) 
   try {
     plan = prepare_route(sumo::build_route(net, scenario.ego.route, required_exit_lanes(scenario)), scenario.params);
   } catch (const sumo::RouteError& e) {
-    throw InputError(scenario.path, 0, std::string("ego.route: ") + e.what());
+    std::string hint;
+    if (scenario.lane_change && !scenario.lane_change->edge.empty())
+      hint = " (with the requested lane change to lane " + std::to_string(scenario.lane_change->to_lane) + " on '" +
+             scenario.lane_change->edge + "': it must be reachable from another lane and lead on)";
+    throw InputError(scenario.path, 0, std::string("ego.route: ") + e.what() + hint);
   }
   // What SUMO would otherwise clamp or reject only after it started.
   const Lanelet& first = plan.map.at(0);
