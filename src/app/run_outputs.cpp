@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "scenario/metrics.hpp"
+#include "scenario/route_planning.hpp"
 #include "scenario/sweep.hpp"
 #include "sumo/net_index.hpp"
 #include "sumo/route_builder.hpp"
@@ -143,10 +144,11 @@ nlohmann::ordered_json metrics_from_run_dir(const std::string& run_dir, const st
   const Scenario scenario = load_scenario(scenario_file, ScenarioOverrides{set});
   std::string key = scenario.net;
   for (const std::string& edge : scenario.ego.route) key += "\n" + edge;
+  for (int lane : required_exit_lanes(scenario)) key += "\n" + std::to_string(lane);
   auto& route = routes[key];
   if (!route) {
     const sumo::NetIndex net = sumo::NetIndex::load(scenario.net);
-    route = std::make_shared<const RouteMap>(sumo::build_route(net, scenario.ego.route).map);
+    route = std::make_shared<const RouteMap>(sumo::build_route(net, scenario.ego.route, required_exit_lanes(scenario)).map);
   }
   const fs::path dir(run_dir);
   RunRecord record;

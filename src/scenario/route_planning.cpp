@@ -21,58 +21,92 @@ namespace {
   throw InputError(scenario.path, 0, message);
 }
 
-// The lane change on the first edge, if the ego departs on another lane than the planned one.
-std::optional<LateralSegment> plan_depart_lane_change(const Scenario& scenario, const sumo::RoutePlan& plan,
-                                                      const sumo::NetIndex& net) {
-  const Lanelet& first = plan.map.at(0);
-  const sumo::NetEdge* edge = net.edge(first.edge_id);
-  const int planned = plan.lane_per_edge.empty() ? 0 : plan.lane_per_edge.front();
-  const int depart = scenario.ego.depart_lane < 0 ? planned : scenario.ego.depart_lane;
-  if (edge == nullptr) return std::nullopt;
-  if (depart >= static_cast<int>(edge->lanes.size()) || !edge->lanes[static_cast<std::size_t>(depart)].allows_passenger) {
-    std::ostringstream out;
-    out << "ego.depart_lane: edge '" << edge->id << "' has no lane " << depart << " the ego may drive ("
-        << edge->lanes.size() << " lanes)";
-    fail(scenario, out.str());
-  }
-  if (depart == planned) {
-    if (scenario.lane_change)
-      fail(scenario, "maneuvers: lane_change: the ego departs on the planned lane " + first.lane_id +
-                         " of the first edge; set ego.depart_lane to another lane");
-    return std::nullopt;
-  }
-  LateralSegment seg;
-  seg.kind = LateralKind::LaneChange;
-  seg.edge = first.edge_id;
-  seg.reference_lane = first.lane_id;
-  // The depart lane's centre seen from the planned lane's centre (left positive).
-  const auto width = [&](int i) { return edge->lanes[static_cast<std::size_t>(i)].width; };
-  const int step = depart > planned ? 1 : -1;
-  double offset = 0.5 * width(planned) + 0.5 * width(depart);
-  for (int i = planned + step; i != depart; i += step) offset += width(i);
-  offset *= step;
-  seg.boundary = step * 0.5 * width(planned);
-  seg.left_half_width = seg.right_half_width = 0.5 * width(planned);
+// The lane changes of the route: on every edge the ego enters on another lane than the planned one
+// (the first edge: ego.depart_lane; later edges: the previous connection's to-lane), one shift line
+// from the entry lane's offset to 0 on that edge.
+std::vector<LateralSegment> plan_lane_changes(const Scenario& scenario, const sumo::RoutePlan& plan,
+                                              const sumo::NetIndex& net) {
+  std::vector<LateralSegment> out;
   const double b2f = scenario.ego.base_link_to_front;
-  const double depart_base = scenario.ego.depart_pos - b2f;
-  LaneChangeManeuver m;
-  m.at = depart_base + kDefaultLaneChangeLead;
-  m.length = kDefaultLaneChangeLength;
-  if (scenario.lane_change) m = *scenario.lane_change;
-  if (m.at < depart_base) {
-    std::ostringstream out;
-    out << "maneuvers: lane_change.at " << m.at << " m is behind base_link's depart position " << depart_base << " m";
-    fail(scenario, out.str());
+  const auto& edges = scenario.ego.route;
+  const std::optional<LaneChangeManeuver>& requested = scenario.lane_change;
+  if (requested && !requested->edge.empty() &&
+      std::find(edges.begin(), edges.end(), requested->edge) == edges.end())
+    fail(scenario, "maneuvers: lane_change: edge '" + requested->edge + "' is not on the ego's route");
+  for (std::size_t i = 0; i < edges.size() && i < plan.lane_per_edge.size(); ++i) {
+    const auto index = plan.map.find_edge(edges[i]);
+    const sumo::NetEdge* edge = net.edge(edges[i]);
+    if (!index || edge == nullptr) continue;
+    const Lanelet& lanelet = plan.map.at(*index);
+    const int planned = plan.lane_per_edge[i];
+    int entry = i < plan.entry_lane_per_edge.size() ? plan.entry_lane_per_edge[i] : planned;
+    const bool first = i == 0;
+    if (first && scenario.ego.depart_lane >= 0) entry = scenario.ego.depart_lane;
+    if (first && (entry >= static_cast<int>(edge->lanes.size()) ||
+                  !edge->lanes[static_cast<std::size_t>(entry)].allows_passenger)) {
+      std::ostringstream out_msg;
+      out_msg << "ego.depart_lane: edge '" << edge->id << "' has no lane " << entry << " the ego may drive ("
+              << edge->lanes.size() << " lanes)";
+      fail(scenario, out_msg.str());
+    }
+    const bool asked = requested && (requested->edge.empty() ? first : requested->edge == edges[i]);
+    if (entry == planned) {
+      if (asked)
+        fail(scenario, "maneuvers: lane_change: the ego departs on the planned lane " + lanelet.lane_id +
+                           " of the first edge; set ego.depart_lane to another lane");
+      continue;
+    }
+    LateralSegment seg;
+    seg.kind = LateralKind::LaneChange;
+    seg.edge = lanelet.edge_id;
+    seg.reference_lane = lanelet.lane_id;
+    seg.route_index = *index;
+    // The entry lane's centre seen from the planned lane's centre (left positive).
+    const auto width = [&](int k) { return edge->lanes[static_cast<std::size_t>(k)].width; };
+    const int step = entry > planned ? 1 : -1;
+    double offset = 0.5 * width(planned) + 0.5 * width(entry);
+    for (int k = planned + step; k != entry; k += step) offset += width(k);
+    offset *= step;
+    seg.boundary = step * 0.5 * width(planned);
+    seg.left_half_width = seg.right_half_width = 0.5 * width(planned);
+    // Where base_link may start: its depart position on the first edge, the edge's start later.
+    const double earliest = first ? scenario.ego.depart_pos - b2f : lanelet.s_start;
+    LaneChangeManeuver m;
+    if (asked) {
+      m = *requested;
+      if (!requested->edge.empty()) m.at = lanelet.s_start + requested->at;  // `at` on the edge
+    } else {
+      // Default: kDefaultLaneChangeLead after `earliest`, kDefaultLaneChangeLength long, both
+      // shrunk to fit a short edge (the shift ends with the front still on the edge).
+      const double room = lanelet.s_end() - b2f - earliest;
+      const double lead = std::min(kDefaultLaneChangeLead, 0.2 * room);
+      m.at = earliest + lead;
+      m.length = std::min(kDefaultLaneChangeLength, room - lead - 1.0);
+      if (m.length < 5.0) {
+        std::ostringstream out_msg;
+        out_msg << "ego.route: the lane change the route needs on edge '" << edge->id << "' does not fit ("
+                << lanelet.length << " m)";
+        fail(scenario, out_msg.str());
+      }
+    }
+    if (m.at < earliest - 1e-9) {
+      std::ostringstream out_msg;
+      out_msg << "maneuvers: lane_change.at " << m.at << " m is behind base_link's " << (first ? "depart position " : "entry ")
+              << earliest << " m";
+      fail(scenario, out_msg.str());
+    }
+    // No lateral command on internal lanes: the shift ends while the front is still on the edge.
+    if (m.at + m.length + b2f > lanelet.s_end()) {
+      std::ostringstream out_msg;
+      out_msg << "maneuvers: the lane change on '" << edge->id << "' (base_link " << m.at << " + " << m.length
+              << " m) must end while the front bumper is still on the edge (" << lanelet.length << " m)";
+      fail(scenario, out_msg.str());
+    }
+    seg.first_line_id = 100 + i;
+    seg.plan = ShiftPlan({ShiftLine{m.at, m.at + m.length, offset, 0.0}});
+    out.push_back(std::move(seg));
   }
-  // No lateral command on internal lanes: the shift ends while the front is still on the edge.
-  if (m.at + m.length + b2f > first.length) {
-    std::ostringstream out;
-    out << "maneuvers: the lane change on '" << edge->id << "' (base_link " << m.at << " + " << m.length
-        << " m) must end while the front bumper is still on the edge (" << first.length << " m)";
-    fail(scenario, out.str());
-  }
-  seg.plan = ShiftPlan({ShiftLine{m.at, m.at + m.length, offset, 0.0}});
-  return seg;
+  return out;
 }
 
 LateralSegment plan_avoid(const Scenario& scenario, const sumo::RoutePlan& plan, const AvoidManeuver& avoid,
@@ -142,7 +176,7 @@ void check_within_edge(const Scenario& scenario, const LateralSegment& seg, cons
 
 LateralPlan plan_lateral(const Scenario& scenario, const sumo::RoutePlan& plan, const sumo::NetIndex& net) {
   LateralPlan lateral;
-  if (auto seg = plan_depart_lane_change(scenario, plan, net)) lateral.segments.push_back(std::move(*seg));
+  for (LateralSegment& seg : plan_lane_changes(scenario, plan, net)) lateral.segments.push_back(std::move(seg));
   for (const ObstacleSpec& o : scenario.obstacles) {
     const sumo::NetEdge* edge = net.edge(o.edge);
     if (edge == nullptr || edge->is_internal) fail(scenario, "obstacles: '" + o.id + "': no edge '" + o.edge + "'");
@@ -154,7 +188,7 @@ LateralPlan plan_lateral(const Scenario& scenario, const sumo::RoutePlan& plan, 
   const double b2f = scenario.ego.base_link_to_front;
   if (scenario.pull_out) {
     const PullOutManeuver& m = *scenario.pull_out;
-    if (!lateral.segments.empty()) fail(scenario, "maneuvers: pull_out and a lane change on the first edge");
+    if (lateral.on_edge(plan.map.at(0).edge_id)) fail(scenario, "maneuvers: pull_out and a lane change on the first edge");
     const Lanelet& first = plan.map.at(0);
     LateralSegment seg;
     seg.kind = LateralKind::PullOut;
@@ -200,23 +234,34 @@ LateralPlan plan_lateral(const Scenario& scenario, const sumo::RoutePlan& plan, 
       fail(scenario, "maneuvers: at most one maneuver per edge ('" + seg.edge + "' has two)");
     lateral.segments.push_back(std::move(seg));
   }
-  // With a maneuver SUMO's own lane changes are off for the ego: a route that needs lane changes
-  // beyond the first edge's could not be driven (signalsim does not plan those yet).
-  if (!lateral.segments.empty() && plan.lane_changes > 0)
-    fail(scenario, "maneuvers: the route needs lane changes that signalsim does not drive yet (only the one "
-                   "from ego.depart_lane on the first edge); choose a route without them");
   std::sort(lateral.segments.begin(), lateral.segments.end(), [](const LateralSegment& a, const LateralSegment& b) {
     return a.plan.lines().front().s_start < b.plan.lines().front().s_start;
   });
   return lateral;
 }
 
+std::vector<int> required_exit_lanes(const Scenario& scenario) {
+  std::vector<int> out;
+  if (!scenario.lane_change || scenario.lane_change->edge.empty()) return out;
+  out.assign(scenario.ego.route.size(), -1);
+  for (std::size_t i = 0; i < out.size(); ++i)
+    if (scenario.ego.route[i] == scenario.lane_change->edge) {
+      out[i] = scenario.lane_change->to_lane;
+      break;
+    }
+  return out;
+}
+
 sumo::RoutePlan plan_route(const Scenario& scenario, const sumo::NetIndex& net) {
   sumo::RoutePlan plan;
   try {
-    plan = prepare_route(sumo::build_route(net, scenario.ego.route), scenario.params);
+    plan = prepare_route(sumo::build_route(net, scenario.ego.route, required_exit_lanes(scenario)), scenario.params);
   } catch (const sumo::RouteError& e) {
-    throw InputError(scenario.path, 0, std::string("ego.route: ") + e.what());
+    std::string hint;
+    if (scenario.lane_change && !scenario.lane_change->edge.empty())
+      hint = " (with the requested lane change to lane " + std::to_string(scenario.lane_change->to_lane) + " on '" +
+             scenario.lane_change->edge + "': it must be reachable from another lane and lead on)";
+    throw InputError(scenario.path, 0, std::string("ego.route: ") + e.what() + hint);
   }
   // What SUMO would otherwise clamp or reject only after it started.
   const Lanelet& first = plan.map.at(0);

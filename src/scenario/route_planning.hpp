@@ -58,6 +58,10 @@ struct LateralPlan {
 /// the ego is on the segment's edge (no lateral command on internal lanes).
 LateralPlan plan_lateral(const Scenario& scenario, const sumo::RoutePlan& plan, const sumo::NetIndex& net);
 
+/// Per route edge, the lane a requested lane change (maneuvers: lane_change with `edge`) ends on,
+/// -1 elsewhere; empty without one (sumo::build_route's required_exit).
+std::vector<int> required_exit_lanes(const Scenario& scenario);
+
 /// The same preparation for a route built elsewhere (inspect).
 sumo::RoutePlan prepare_route(sumo::RoutePlan plan, const ParameterSet& params);
 

@@ -333,6 +333,8 @@ Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrid
       if (s.lane_change) throw InputError(path, yaml_line(item), where + ": at most one lane_change");
       YamlFields fields(item.begin()->second, path, where + ".lane_change");
       LaneChangeManeuver m;
+      m.edge = fields.text_or("edge", "");
+      if (!m.edge.empty()) m.to_lane = static_cast<int>(fields.required_number("to_lane", 0.0, 63.0));
       m.at = fields.required_number("at", 0.0, 1e6);
       m.length = fields.number("length", kDefaultLaneChangeLength, 1.0, 10000.0);
       fields.finish();

@@ -36,7 +36,11 @@ struct EgoSpec {
 /// the first edge's planned lane (the lane with the connection to the next edge). Without it the
 /// lane change starts kDefaultLaneChangeLead metres after base_link's depart position and is
 /// kDefaultLaneChangeLength long.
+/// With `edge` (and `to_lane`) it is a requested lane change on that route edge: the lane plan
+/// leaves `edge` on `to_lane` and enters it on another lane (sumo::plan_lanes' required exit).
 struct LaneChangeManeuver {
+  std::string edge;   ///< empty: the first edge, from ego.depart_lane
+  int to_lane = -1;   ///< with `edge`: the lane the ego is on at the end of `edge`
   double at = -1.0;      ///< route s of base_link where the lateral motion starts [m]; < 0: default
   double length = 50.0;  ///< [m] of route s over which the ego shifts one lane
 };

@@ -46,7 +46,7 @@ sumo::SessionConfig session_config(const Scenario& scenario, const sumo::RoutePl
   config.step_length = scenario.step_length;
   config.seed = scenario.seed;
   config.route = scenario.ego.route;
-  config.depart_lane = plan.lane_per_edge.empty() ? 0 : plan.lane_per_edge.front();
+  config.depart_lane = plan.entry_lane_per_edge.empty() ? 0 : plan.entry_lane_per_edge.front();
   if (scenario.ego.depart_lane >= 0) config.depart_lane = scenario.ego.depart_lane;
   config.depart_pos = scenario.ego.depart_pos;
   config.depart_speed = scenario.ego.depart_speed;
@@ -54,7 +54,8 @@ sumo::SessionConfig session_config(const Scenario& scenario, const sumo::RoutePl
   config.length = scenario.ego.length;
   config.accel = scenario.ego.accel;
   config.emergency_decel = scenario.ego.emergency_decel;
-  config.keep_planned_lanes = plan.lane_changes == 0;
+  // SUMO never changes lanes on its own: signalsim drives every lane change (plan_lateral).
+  config.keep_planned_lanes = true;
   if (lateral.active()) {
     // signalsim drives the lane change (sublane offsets re-commanded every step, spec SUMO §4).
     config.lateral_resolution = 0.1;
@@ -199,9 +200,12 @@ RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, co
     BehaviorRequests requests;
     requests.now = observed.time;
     for (const LateralSegment& seg : lateral.segments) {
-      if (seg.kind == LateralKind::LaneChange && segment == &seg) {
+      // The lane-change module runs from when its shift starts within the module path (also before
+      // the ego reaches the edge) until base_link passes the shift end.
+      if (seg.kind == LateralKind::LaneChange && !requests.lane_change &&
+          seg.plan.lines().front().s_start <= ego.s_base + path_forward &&
+          ego.s_base <= seg.plan.lines().front().s_end) {
         const ShiftLine& line = seg.plan.lines().front();
-        if (ego.s_base > line.s_end) continue;
         lane_change.phase = LaneChangeSignal::Phase::Running;
         lane_change.direction = line.relative_shift() > 0 ? TurnIndicator::EnableLeft : TurnIndicator::EnableRight;
         lane_change.lane_changing_start = line.s_start;

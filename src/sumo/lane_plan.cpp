@@ -30,10 +30,18 @@ const NetConnection* link_to(const std::vector<const NetConnection*>& links, int
 }  // namespace
 
 LanePlan plan_lanes(const std::vector<std::vector<bool>>& usable,
-                    const std::vector<std::vector<const NetConnection*>>& links) {
+                    const std::vector<std::vector<const NetConnection*>>& all_links,
+                    const std::vector<int>& required_exit) {
   const std::size_t n = usable.size();
   LanePlan plan;
-  if (n == 0 || links.size() + 1 != n) return plan;
+  if (n == 0 || all_links.size() + 1 != n) return plan;
+  const auto required = [&](std::size_t i) { return i < required_exit.size() ? required_exit[i] : -1; };
+  // A requested exit lane keeps only the connections leaving from it.
+  std::vector<std::vector<const NetConnection*>> links = all_links;
+  for (std::size_t i = 0; i + 1 < n; ++i) {
+    if (required(i) < 0) continue;
+    std::erase_if(links[i], [&](const NetConnection* c) { return c->from_lane != required(i); });
+  }
 
   // cost[i][l]: fewest lane changes from entering edge i on lane l to the end of the route.
   std::vector<std::vector<int>> cost(n);
@@ -42,12 +50,18 @@ LanePlan plan_lanes(const std::vector<std::vector<bool>>& usable,
     cost[i].assign(usable[i].size(), kImpossible);
     next[i].assign(cost[i].size(), -1);
   }
-  for (std::size_t l = 0; l < cost[n - 1].size(); ++l)
-    if (usable[n - 1][l]) cost[n - 1][l] = 0;
+  for (std::size_t l = 0; l < cost[n - 1].size(); ++l) {
+    if (!usable[n - 1][l]) continue;
+    const int r = required(n - 1);
+    if (r < 0) cost[n - 1][l] = 0;
+    else if (static_cast<int>(l) != r && r < static_cast<int>(usable[n - 1].size()) &&
+             usable[n - 1][static_cast<std::size_t>(r)])
+      cost[n - 1][l] = std::abs(static_cast<int>(l) - r);
+  }
 
   for (std::size_t i = n - 1; i-- > 0;) {
     for (int l = 0; l < static_cast<int>(cost[i].size()); ++l) {
-      if (!usable[i][static_cast<std::size_t>(l)]) continue;
+      if (!usable[i][static_cast<std::size_t>(l)] || l == required(i)) continue;
       for (int m = 0; m < static_cast<int>(cost[i + 1].size()); ++m) {
         const int after = cost[i + 1][static_cast<std::size_t>(m)];
         if (after >= kImpossible) continue;
@@ -78,9 +92,11 @@ LanePlan plan_lanes(const std::vector<std::vector<bool>>& usable,
   for (std::size_t i = 0; i + 1 < n; ++i) {
     const int m = next[i][static_cast<std::size_t>(lane)];
     plan.links.push_back(link_to(links[i], lane, m));
+    plan.exit_lanes.push_back(plan.links.back()->from_lane);
     plan.lanes.push_back(m);
     lane = m;
   }
+  plan.exit_lanes.push_back(required(n - 1) >= 0 ? required(n - 1) : lane);
   return plan;
 }
 

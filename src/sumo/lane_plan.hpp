@@ -9,7 +9,9 @@
 namespace signalsim::sumo {
 
 struct LanePlan {
-  std::vector<int> lanes;                      ///< planned lane index per edge
+  std::vector<int> lanes;                      ///< lane index per edge the ego enters it on
+  std::vector<int> exit_lanes;                 ///< planned lane per edge: the one it leaves on (the
+                                               ///< connection's from-lane; last edge: see below)
   std::vector<const NetConnection*> links;     ///< per gap i (edge i -> i+1): the connection taken
   int lane_changes = 0;                        ///< total lane changes the plan needs
 };
@@ -23,7 +25,12 @@ struct LanePlan {
 /// cost_i(l) = min_m cost(l, m) + cost_{i+1}(m); the last edge costs 0. Ties: the lowest (rightmost)
 /// lane. The connection taken in gap i is l -> m if it exists, else the one to m whose from-lane is
 /// closest to l (ties: the rightmost). `lanes` is empty when no lane sequence exists.
+///
+/// `required_exit` (empty, or one entry per edge, -1 = free): a requested lane change on edge i to
+/// lane r = required_exit[i]. The ego then leaves edge i on lane r (gap i uses a connection from r;
+/// on the last edge it ends on r) and does not enter it on r (the change happens on edge i).
 LanePlan plan_lanes(const std::vector<std::vector<bool>>& usable,
-                    const std::vector<std::vector<const NetConnection*>>& links);
+                    const std::vector<std::vector<const NetConnection*>>& links,
+                    const std::vector<int>& required_exit = {});
 
 }  // namespace signalsim::sumo

@@ -114,7 +114,8 @@ Lanelet lanelet_of(const NetEdge& edge, const NetLane& lane) {
 
 }  // namespace
 
-RoutePlan build_route(const NetIndex& net, const std::vector<std::string>& edges) {
+RoutePlan build_route(const NetIndex& net, const std::vector<std::string>& edges,
+                      const std::vector<int>& required_exit) {
   if (edges.empty()) throw RouteError("the route has no edges");
 
   // Every route edge exists and is a normal edge.
@@ -148,7 +149,7 @@ RoutePlan build_route(const NetIndex& net, const std::vector<std::string>& edges
     }
   }
 
-  const LanePlan plan = plan_lanes(usable, links);
+  const LanePlan plan = plan_lanes(usable, links, required_exit);
   if (plan.lanes.size() != route.size()) {
     throw RouteError("route " + quoted(edges.front()) + " ... " + quoted(edges.back()) +
                      ": no lane sequence connects the route edges");
@@ -164,7 +165,7 @@ RoutePlan build_route(const NetIndex& net, const std::vector<std::string>& edges
 
   for (std::size_t i = 0; i < route.size(); ++i) {
     const NetEdge& edge = *route[i];
-    const NetLane& lane = edge.lanes[static_cast<std::size_t>(plan.lanes[i])];
+    const NetLane& lane = edge.lanes[static_cast<std::size_t>(plan.exit_lanes[i])];
     const auto edge_ring = net.roundabout_of_edge(edge.id);
 
     Lanelet normal = lanelet_of(edge, lane);
@@ -238,7 +239,8 @@ RoutePlan build_route(const NetIndex& net, const std::vector<std::string>& edges
 
   RoutePlan out;
   out.map = RouteMap(std::move(lanelets));
-  out.lane_per_edge = plan.lanes;
+  out.lane_per_edge = plan.exit_lanes;
+  out.entry_lane_per_edge = plan.lanes;
   out.lane_changes = plan.lane_changes;
   return out;
 }

@@ -19,7 +19,13 @@ class RouteError : public std::runtime_error {
 
 struct RoutePlan {
   RouteMap map;                    ///< normal and internal lanelets, contiguous in s from 0
-  std::vector<int> lane_per_edge;  ///< planned lane index on each route edge (same order as the edges)
+  /// Planned lane index on each route edge (same order as the edges): the lane with the connection
+  /// to the next edge (the lanelet's lane); on the last edge the lane the ego enters on, or the
+  /// requested one.
+  std::vector<int> lane_per_edge;
+  /// The lane the ego enters each edge on (the previous connection's to-lane; first edge: the best
+  /// depart lane). Where it differs from lane_per_edge, the ego changes lanes on that edge.
+  std::vector<int> entry_lane_per_edge;
   int lane_changes = 0;            ///< lane changes the plan needs (0 when one lane sequence connects all)
 };
 
@@ -29,6 +35,8 @@ struct RoutePlan {
 /// Turn directions, roundabout roles (with Lanelet::leaves_ring_at_end on ring lanelets), params,
 /// lights and stop offsets per spec SUMO §3.
 /// Throws RouteError.
-RoutePlan build_route(const NetIndex& net, const std::vector<std::string>& edges);
+/// `required_exit`: requested lane changes (see plan_lanes).
+RoutePlan build_route(const NetIndex& net, const std::vector<std::string>& edges,
+                      const std::vector<int>& required_exit = {});
 
 }  // namespace signalsim::sumo

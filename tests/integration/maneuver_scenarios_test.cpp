@@ -153,6 +153,111 @@ TEST(ManeuverScenario, EarlyLaneChangeThenLeftTurnTwoStretches) {
   EXPECT_GE(189.60 - before.s_front, before.speed * kSearchTime + 30.0);
 }
 
+// ---- Lane changes on later edges --------------------------------------------------------------
+
+// The last lane the ego was on while on `edge`.
+std::string last_lane_on(const ManeuverRun& r, const std::string& edge) {
+  std::string lane;
+  for (const TimelineRow& row : r.record.rows)
+    if (row.edge == edge) lane = row.lane;
+  return lane;
+}
+
+TEST(ManeuverScenario, RequestedLaneChangeOnTheSecondEdge) {
+  const ManeuverRun r = run("lane_change_second_edge");
+  ASSERT_TRUE(r.record.arrived);
+  ASSERT_EQ(r.lateral.segments.size(), 1u);
+  const LateralSegment& seg = r.lateral.segments.front();
+  EXPECT_EQ(seg.edge, "out_N");
+  EXPECT_EQ(seg.reference_lane, "out_N_1");  // the requested lane is the planned lane of out_N
+  expect_tracks_plan(r, -kLaneWidth);        // enters out_N on out_N_0 (straight from in_S_0)
+  const std::size_t after = expect_lane_change_stretch(r, Blinker::Left);
+  for (std::size_t i = after; i < r.record.rows.size(); ++i) EXPECT_EQ(r.record.rows[i].blinker, Blinker::None);
+  EXPECT_EQ(last_lane_on(r, "in_S"), "in_S_0");
+  EXPECT_EQ(last_lane_on(r, "out_N"), "out_N_1");
+  EXPECT_EQ(r.record.off_route_steps, 0);
+  EXPECT_EQ(r.record.collisions, 0);
+}
+
+TEST(ManeuverScenario, LaneChangeTheRouteNeedsThenLeftTurn) {
+  const ManeuverRun r = run("route_lane_change_then_left");
+  ASSERT_TRUE(r.record.arrived);
+  ASSERT_EQ(r.lateral.segments.size(), 1u);
+  const LateralSegment& seg = r.lateral.segments.front();
+  EXPECT_EQ(seg.edge, "in_W");
+  EXPECT_EQ(seg.reference_lane, "in_W_1");
+  const ShiftLine& line = seg.plan.lines().front();
+  // The default length (in_W is long enough not to shrink it).
+  EXPECT_NEAR(line.s_end - line.s_start, kDefaultLaneChangeLength, 1e-9);
+  expect_tracks_plan(r, -kLaneWidth);
+  // On before the ego reaches in_W (the module runs once its shift is ahead within the path).
+  const std::size_t after = expect_lane_change_stretch(r, Blinker::Left);
+  const long first_on = first_step(r, Blinker::Left, RequestSource::LaneChange);
+  ASSERT_GE(first_on, 0);
+  EXPECT_NE(r.record.rows[static_cast<std::size_t>(first_on)].edge, "in_W");
+  const long turn = first_step(r, Blinker::Left, RequestSource::Intersection, after);
+  ASSERT_GT(turn, static_cast<long>(after));
+  for (const TimelineRow& row : r.record.rows) EXPECT_NE(row.blinker, Blinker::Right);
+  EXPECT_EQ(last_lane_on(r, "w_far"), "w_far_0");
+  EXPECT_EQ(last_lane_on(r, "in_W"), "in_W_1");
+  EXPECT_EQ(r.record.off_route_steps, 0);
+  EXPECT_EQ(r.record.collisions, 0);
+}
+
+TEST(ManeuverScenario, RequestedLaneChangeOnAnEdgeOffTheRouteIsRejected) {
+  Scenario s = load_scenario(std::string(SIGNALSIM_SOURCE_DIR) + "/scenarios/lane_change_second_edge.yaml");
+  s.lane_change->edge = "out_W";
+  const sumo::NetIndex net = sumo::NetIndex::load(s.net);
+  EXPECT_THROW(plan_route(s, net), InputError);
+}
+
+// ---- Lane change inside a two-lane roundabout, before its exit -----------------------------------
+
+// Common checks: entered on the inner lane, the shift on ring_EN to the outer lane, right from the
+// lane change; returns the first step after the lane-change stretch.
+std::size_t expect_ring_lane_change(const ManeuverRun& r) {
+  EXPECT_TRUE(r.record.arrived);
+  EXPECT_EQ(r.lateral.segments.size(), 1u);
+  const LateralSegment& seg = r.lateral.segments.front();
+  EXPECT_EQ(seg.edge, "ring_EN");
+  EXPECT_EQ(seg.reference_lane, "ring_EN_0");
+  expect_tracks_plan(r, kLaneWidth);  // from the inner lane (one lane left) to the outer one
+  EXPECT_EQ(last_lane_on(r, "in_S"), "in_S_1");
+  EXPECT_EQ(last_lane_on(r, "ring_SE"), "ring_SE_1");
+  EXPECT_EQ(last_lane_on(r, "ring_EN"), "ring_EN_0");
+  EXPECT_EQ(r.record.off_route_steps, 0);
+  EXPECT_EQ(r.record.collisions, 0);
+  for (const TimelineRow& row : r.record.rows) EXPECT_NE(row.blinker, Blinker::Left);
+  return expect_lane_change_stretch(r, Blinker::Right);
+}
+
+TEST(ManeuverScenario, RoundaboutLaneChangeBeforeExitThenExitSignal) {
+  const ManeuverRun r = run("roundabout_two_lane_change_before_exit");
+  const std::size_t after = expect_ring_lane_change(r);
+  const auto& rows = r.record.rows;
+  // de: the exit request starts on the exit lanelet only, after a gap.
+  const long exit = first_step(r, Blinker::Right, RequestSource::RoundaboutExit, after);
+  ASSERT_GT(exit, static_cast<long>(after));
+  for (std::size_t i = after; i < static_cast<std::size_t>(exit); ++i) EXPECT_EQ(rows[i].blinker, Blinker::None);
+  EXPECT_EQ(rows[static_cast<std::size_t>(exit)].lane, ":RN_2_0");
+}
+
+TEST(ManeuverScenario, RoundaboutLaneChangeWinsOverTheExitSignalUntilItsPathEnds) {
+  const ManeuverRun r = run("roundabout_two_lane_change_exit_from_previous");
+  const std::size_t after = expect_ring_lane_change(r);
+  const auto& rows = r.record.rows;
+  ASSERT_LT(after, rows.size());
+  // The exit request (from the previous exit) takes over at once: no gap.
+  EXPECT_EQ(rows[after].blinker, Blinker::Right);
+  EXPECT_EQ(rows[after].blinker_source, RequestSource::RoundaboutExit);
+  EXPECT_EQ(rows[after].edge, "ring_EN");
+  std::size_t i = after;
+  for (; i < rows.size() && rows[i].blinker == Blinker::Right; ++i)
+    EXPECT_EQ(rows[i].blinker_source, RequestSource::RoundaboutExit);
+  ASSERT_LT(i, rows.size());
+  EXPECT_EQ(rows[i].edge, "out_N");
+}
+
 // ---- Avoidance (spec TSD §8.2 "Avoidance", §8.1) ----------------------------------------------
 
 constexpr double kMaxPrepareTime = 3.0;  // avoidance max_prepare_time

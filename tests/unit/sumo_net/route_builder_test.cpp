@@ -166,10 +166,12 @@ TEST(RouteBuilderParams, StopOffset) {
 TEST(RouteBuilderLanePlan, LeftTurnAfterFeederNeedsOneLaneChange) {
   // w_far reaches only w_in_0 (crossing.con.xml); the left turn to n_out leaves from w_in_1.
   const RoutePlan plan = build_route(crossing(), {"w_far", "w_in", "n_out"});
-  EXPECT_THAT(plan.lane_per_edge, ElementsAre(0, 0, 1));
+  // Planned lanes (the lanelets): the ones with the connection onward; the ego enters w_in on lane 0.
+  EXPECT_THAT(plan.lane_per_edge, ElementsAre(0, 1, 1));
+  EXPECT_THAT(plan.entry_lane_per_edge, ElementsAre(0, 0, 1));
   EXPECT_EQ(plan.lane_changes, 1);
   // The turn lanelets are those of the connection from the lane after the change.
-  EXPECT_THAT(lane_ids(plan), ElementsAre("w_far_0", ":W_1_0", "w_in_0", ":C_18_0", ":C_26_0", "n_out_1"));
+  EXPECT_THAT(lane_ids(plan), ElementsAre("w_far_0", ":W_1_0", "w_in_1", ":C_18_0", ":C_26_0", "n_out_1"));
   expect_contiguous(crossing(), plan);
   ASSERT_TRUE(plan.map.at(2).traffic_light.has_value());
   EXPECT_EQ(plan.map.at(2).traffic_light->link_index, 18);
@@ -182,6 +184,19 @@ TEST(RouteBuilderLanePlan, StraightAfterFeederKeepsTheRightLane) {
   EXPECT_THAT(plan.lane_per_edge, ElementsAre(0, 0, 0));
   EXPECT_EQ(plan.lane_changes, 0);
   EXPECT_THAT(lane_ids(plan), ElementsAre("w_far_0", ":W_1_0", "w_in_0", ":C_16_0", "e_out_0"));
+}
+
+TEST(RouteBuilderLanePlan, RequestedLaneChangeLeavesTheEdgeOnTheRequestedLane) {
+  // Straight w_far -> w_in -> e_out keeps lane 0; a lane change requested on w_in to lane 1 makes the
+  // ego enter w_in on lane 0 and leave it on lane 1 (the straight connection from w_in_1).
+  const RoutePlan plan = build_route(crossing(), {"w_far", "w_in", "e_out"}, {-1, 1, -1});
+  EXPECT_THAT(plan.lane_per_edge, ElementsAre(0, 1, 1));
+  EXPECT_THAT(plan.entry_lane_per_edge, ElementsAre(0, 0, 1));
+  EXPECT_EQ(plan.lane_changes, 1);
+  // On the last edge: entered on another lane, ends on the requested one.
+  const RoutePlan last = build_route(crossing(), {"w_far", "w_in", "e_out"}, {-1, -1, 1});
+  EXPECT_THAT(last.lane_per_edge, ElementsAre(0, 0, 1));
+  EXPECT_THAT(last.entry_lane_per_edge, ElementsAre(0, 0, 0));
 }
 
 TEST(RouteBuilderLanePlan, TiesTakeTheRightmostLane) {
