@@ -49,6 +49,8 @@ struct Lanelet {
   double stop_offset = 0.0;            ///< `<stopOffset>` applying to this lane's end [m]
 
   double s_end() const { return s_start + length; }
+  /// Route s of the stop line at this lane's end: the end moved upstream by <stopOffset> (spec SUMO §2).
+  double stop_line_s() const { return s_end() - stop_offset; }
   /// Route position s -> position along the shape, scaling SUMO's length onto the shape length.
   double shape_position(double s) const;
   Pose pose_at(double s) const;

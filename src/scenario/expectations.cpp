@@ -111,7 +111,7 @@ ExpectationResult check(const ExpectLateralFollowsPlan& e, const RouteMap&, cons
 // Route s of the stop line of the first approach to `light`, if the route meets it.
 std::optional<double> stop_line_of(const std::string& light, const RouteMap& route) {
   for (const Lanelet& l : route.lanelets())
-    if (!l.is_internal && l.traffic_light && l.traffic_light->tls_id == light) return l.s_end() - l.stop_offset;
+    if (!l.is_internal && l.traffic_light && l.traffic_light->tls_id == light) return l.stop_line_s();
   return std::nullopt;
 }
 

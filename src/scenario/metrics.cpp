@@ -125,7 +125,7 @@ std::vector<LightMetrics> measure_lights(const RouteMap& route, const RunRecord&
     LightMetrics m;
     m.id = l.traffic_light->tls_id;
     m.link_index = l.traffic_light->link_index;
-    m.stop_line_s = round3(l.s_end() - l.stop_offset);
+    m.stop_line_s = round3(l.stop_line_s());
     std::size_t k = from_row;  // the first row at or beyond the stop line
     while (k < rows.size() && rows[k].s_front < m.stop_line_s) ++k;
     m.reached = k < rows.size() && k > 0;

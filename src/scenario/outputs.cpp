@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "scenario/metrics.hpp"
+#include "sumo/sumo_session.hpp"
 
 namespace signalsim {
 namespace fs = std::filesystem;
@@ -120,8 +121,7 @@ void write_run_outputs(const std::string& dir, const Scenario& scenario, const s
     right += r.blinker == Blinker::Right;
     hazard += r.blinker == Blinker::Hazard;
     if (r.sumo_signals >= 0) {
-      const int expected = r.blinker == Blinker::Left ? 2 : r.blinker == Blinker::Right ? 1 : r.blinker == Blinker::Hazard ? 4 : 0;
-      mismatches += (r.sumo_signals & 7) != expected;
+      mismatches += (r.sumo_signals & sumo::kBlinkerMask) != signal_mask(r.blinker);
     }
   }
   counts["steps_left"] = left;

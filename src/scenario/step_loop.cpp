@@ -27,16 +27,6 @@ Blinker blinker_of(const TurnSignalDecision& d) {
   return Blinker::None;
 }
 
-int signal_mask(Blinker b) {
-  switch (b) {
-    case Blinker::Left: return sumo::kBlinkerLeft;
-    case Blinker::Right: return sumo::kBlinkerRight;
-    case Blinker::Hazard: return sumo::kBlinkerEmergency;
-    case Blinker::None: break;
-  }
-  return 0;
-}
-
 bool is_red(char state) { return state == 'r' || state == 'u'; }
 
 sumo::SessionConfig session_config(const Scenario& scenario, const sumo::RoutePlan& plan, const LateralPlan& lateral) {
@@ -117,6 +107,16 @@ void record_event(RunRecord& record, const TimelineRow& row, std::string kind, s
 }
 
 }  // namespace
+
+int signal_mask(Blinker b) {
+  switch (b) {
+    case Blinker::Left: return sumo::kBlinkerLeft;
+    case Blinker::Right: return sumo::kBlinkerRight;
+    case Blinker::Hazard: return sumo::kBlinkerEmergency;
+    case Blinker::None: break;
+  }
+  return 0;
+}
 
 RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, const sumo::NetIndex& net) {
   const RouteMap& route = plan.map;

@@ -72,7 +72,7 @@ std::vector<ApproachLight> approach_lights(const NetIndex& net, const RouteMap& 
     light.link_index = lanelet.traffic_light->link_index;
     if (const NetLane* lane = net.lane(lanelet.lane_id)) light.lane_index = lane->index;
     light.direction = i + 1 < route.size() ? route.at(i + 1).turn_direction : TurnDirection::None;
-    light.s_stop_line = lanelet.s_end() - lanelet.stop_offset;
+    light.s_stop_line = lanelet.stop_line_s();
     if (const NetEdge* edge = net.edge(lanelet.edge_id)) {
       for (const NetLane& lane : edge->lanes)
         for (const NetConnection& c : net.connections_from_lane(lane.id))
