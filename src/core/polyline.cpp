@@ -1,7 +1,6 @@
 #include "core/polyline.hpp"
 
 #include <algorithm>
-#include <limits>
 
 namespace signalsim {
 
@@ -36,24 +35,6 @@ double Polyline::heading_at(double s) const {
   if (points_.size() < 2) return 0.0;
   const std::size_t i = segment_at(std::clamp(s, 0.0, length()));
   return azimuth(points_[i], points_[i + 1]);
-}
-
-double Polyline::project(Vec2 p) const {
-  if (points_.size() < 2) return 0.0;
-  double best_s = 0.0;
-  double best_d2 = std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i + 1 < points_.size(); ++i) {
-    const Vec2 d = points_[i + 1] - points_[i];
-    const double len2 = dot(d, d);
-    const double t = len2 > 0.0 ? std::clamp(dot(p - points_[i], d) / len2, 0.0, 1.0) : 0.0;
-    const Vec2 q = points_[i] + t * d;
-    const double d2 = dot(p - q, p - q);
-    if (d2 < best_d2) {
-      best_d2 = d2;
-      best_s = cumulative_[i] + t * (cumulative_[i + 1] - cumulative_[i]);
-    }
-  }
-  return best_s;
 }
 
 void Polyline::append(const Polyline& other) {

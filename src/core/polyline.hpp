@@ -24,13 +24,9 @@ class Polyline {
   Vec2 point_at(double s) const;
   /// Heading of the segment containing s (the last segment at the end). 0 for < 2 points.
   double heading_at(double s) const;
-  Pose pose_at(double s) const { return {point_at(s), heading_at(s)}; }
 
   /// Index of the segment [i, i+1] containing arc length s (clamped).
   std::size_t segment_at(double s) const;
-
-  /// Arc length of the orthogonal projection of p onto the polyline (nearest segment).
-  double project(Vec2 p) const;
 
   /// Appends other, skipping its first point when it coincides with our last one.
   void append(const Polyline& other);

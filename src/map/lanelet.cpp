@@ -1,6 +1,5 @@
 #include "map/lanelet.hpp"
 
-#include <algorithm>
 
 namespace signalsim {
 
@@ -23,12 +22,5 @@ std::string_view to_string(RoundaboutRole r) {
   }
   return "none";
 }
-
-double Lanelet::shape_position(double s) const {
-  const double along = std::clamp(s - s_start, 0.0, length);
-  return length > 0.0 ? along * shape.length() / length : 0.0;
-}
-
-Pose Lanelet::pose_at(double s) const { return shape.pose_at(shape_position(s)); }
 
 }  // namespace signalsim

@@ -51,9 +51,6 @@ struct Lanelet {
   double s_end() const { return s_start + length; }
   /// Route s of the stop line at this lane's end: the end moved upstream by <stopOffset> (spec SUMO §2).
   double stop_line_s() const { return s_end() - stop_offset; }
-  /// Route position s -> position along the shape, scaling SUMO's length onto the shape length.
-  double shape_position(double s) const;
-  Pose pose_at(double s) const;
 };
 
 }  // namespace signalsim

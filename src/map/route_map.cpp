@@ -62,9 +62,4 @@ std::optional<double> RouteMap::s_of(const std::string& lane_id, const std::stri
   return lanelets_[*index].s_start + std::min(lane_pos, lanelets_[*index].length);
 }
 
-Pose RouteMap::pose_at(double s) const {
-  if (lanelets_.empty()) return {};
-  return lanelets_[index_at(s)].pose_at(s);
-}
-
 }  // namespace signalsim

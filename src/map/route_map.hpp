@@ -49,9 +49,6 @@ class RouteMap {
   std::optional<double> s_of(const std::string& lane_id, const std::string& edge_id, double lane_pos,
                              std::size_t hint_index = 0) const;
 
-  /// Net position of a route position.
-  Pose pose_at(double s) const;
-
  private:
   std::vector<Lanelet> lanelets_;
   std::vector<double> starts_;

@@ -19,21 +19,6 @@ const ParameterSpec* find_spec(const std::string& name) {
 
 int line_of(const YAML::Node& node) { return node.Mark().line >= 0 ? node.Mark().line + 1 : 0; }
 
-std::string describe(const ParameterValue& v) {
-  return std::visit(
-      [](const auto& x) -> std::string {
-        using T = std::decay_t<decltype(x)>;
-        if constexpr (std::is_same_v<T, bool>) return x ? "true" : "false";
-        else if constexpr (std::is_same_v<T, std::string>) return "\"" + x + "\"";
-        else {
-          std::ostringstream out;
-          out << x;
-          return out.str();
-        }
-      },
-      v);
-}
-
 // Converts a scalar to the spec's type, or explains why not.
 ParameterValue convert(const ParameterSpec& spec, const YAML::Node& node, const std::string& origin) {
   const int line = line_of(node);
@@ -187,7 +172,5 @@ TrafficLightJudgeParameters traffic_light_parameters(const ParameterSet& set) {
   p.delay_response_time = set.number("delay_response_time");
   return p;
 }
-
-std::string describe_parameter(const ParameterValue& v) { return describe(v); }
 
 }  // namespace signalsim

@@ -57,9 +57,6 @@ class ParameterSet {
   std::map<std::string, std::string> origins_;
 };
 
-/// A value as text (strings quoted), for messages and summaries.
-std::string describe_parameter(const ParameterValue& value);
-
 /// The judge's parameters from a resolved set.
 TrafficLightJudgeParameters traffic_light_parameters(const ParameterSet& set);
 
