@@ -270,22 +270,21 @@ RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, co
 
     // plan: lane limits, and a jerk-limited stop when a judge asks for one.
     double speed = plan_speed_under_limits(route, s_front, observed.speed, dt, limits);
-    std::optional<StopLevel> stop_level;
-    if (stopping) {
-      const double to_go = *stopping->result.stop_point_distance;
+    // A jerk-limited stop `to_go` ahead lowers the speed; returns the level when it constrains it.
+    const auto limit_for_stop = [&](double to_go) -> std::optional<StopLevel> {
       const StopCommand stop = plan_stop({observed.speed, observed.accel, to_go, dt}, stop_params);
+      std::optional<StopLevel> level;
       if (stop.braking || stop.commanded_velocity < speed) {
         speed = std::min(speed, stop.commanded_velocity);
-        stop_level = stop.level;
+        level = stop.level;
       }
       if (to_go < kSettleDistance) speed = 0.0;  // within 2 cm: come to rest (coarse steps never settle)
-    }
-    if (pull_over_goal) {  // the pull-over goal: a jerk-limited stop with base_link at the goal
-      const double to_go = pull_over_goal->goal_s - ego.s_base;
-      const StopCommand stop = plan_stop({observed.speed, observed.accel, to_go, dt}, stop_params);
-      if (stop.braking || stop.commanded_velocity < speed) speed = std::min(speed, stop.commanded_velocity);
-      if (to_go < kSettleDistance) speed = 0.0;
-    }
+      return level;
+    };
+    std::optional<StopLevel> stop_level;
+    if (stopping) stop_level = limit_for_stop(*stopping->result.stop_point_distance);
+    // The pull-over goal: a jerk-limited stop with base_link at the goal (its level is not recorded).
+    if (pull_over_goal) limit_for_stop(pull_over_goal->goal_s - ego.s_base);
     session.set_emergency_braking(stop_level == StopLevel::Emergency);
 
     // apply, step.
