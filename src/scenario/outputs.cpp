@@ -111,10 +111,13 @@ void write_run_outputs(const std::string& dir, const Scenario& scenario, const s
   counts["arrived"] = record.arrived;
   counts["collisions"] = record.collisions;
   counts["off_route_steps"] = record.off_route_steps;
-  std::size_t blinker_events = 0;
-  for (const TimelineEvent& e : record.events) blinker_events += e.kind == "blinker";
+  std::size_t blinker_events = 0, light_events = 0;
+  for (const TimelineEvent& e : record.events) {
+    blinker_events += e.kind == "blinker";
+    light_events += e.kind == "light";
+  }
   counts["blinker_events"] = blinker_events;
-  counts["light_events"] = record.events.size() - blinker_events;
+  counts["light_events"] = light_events;
   std::size_t left = 0, right = 0, hazard = 0, mismatches = 0;
   for (const TimelineRow& r : record.rows) {
     left += r.blinker == Blinker::Left;
@@ -146,6 +149,22 @@ void write_run_outputs(const std::string& dir, const Scenario& scenario, const s
   for (const TimelineEvent& e : record.events) emergency += e.kind == "light" && e.to == "emergency_stop";
   lights["emergency_stops"] = emergency;
   summary["lights"] = lights;
+  // Each lane change as executed (spec TSD §8.2): blinker, approval, prepare, lateral motion.
+  nlohmann::ordered_json lane_changes = nlohmann::ordered_json::array();
+  const auto rounded = [](const std::optional<double>& v) -> nlohmann::ordered_json {
+    return v ? nlohmann::ordered_json(std::stod(fixed(*v, 3))) : nlohmann::ordered_json(nullptr);
+  };
+  for (const LaneChangeRecord& lc : record.lane_changes)
+    lane_changes.push_back({{"edge", lc.edge},
+                            {"phase", lc.phase},
+                            {"shift", std::stod(fixed(lc.shift, 3))},
+                            {"blinker_on_time", rounded(lc.blinker_on_time)},
+                            {"approval_time", rounded(lc.approval_time)},
+                            {"approval_s_base", rounded(lc.approval_s_base)},
+                            {"prepare_duration", rounded(lc.prepare_duration)},
+                            {"lateral_start_s", rounded(lc.start)},
+                            {"lateral_end_s", rounded(lc.end)}});
+  summary["lane_changes"] = lane_changes;
   summary["metrics"] = metrics_json(scenario, plan.map, record);
   nlohmann::ordered_json expectations = nlohmann::ordered_json::array();
   for (const ExpectationResult& r : results)

@@ -94,6 +94,9 @@ void ParameterSet::check_consistency(const std::string& origin) const {
     throw InputError(origin, 0,
                      "restart_suppression.min_behind_distance_to_stop is greater than "
                      "restart_suppression.max_behind_distance_to_stop");
+  // The lane change's prepare duration lies in [min, max] (spec TSD §8.2).
+  if (number("min_prepare_duration") > number("max_prepare_duration"))
+    throw InputError(origin, 0, "min_prepare_duration is greater than max_prepare_duration");
 }
 
 void ParameterSet::apply_node(const YAML::Node& node, const std::string& prefix, const std::string& origin) {
@@ -152,6 +155,25 @@ TurnSignalParameters turn_signal_parameters(const ParameterSet& set, double base
   p.turn_signal_remaining_distance_to_bound_threshold =
       set.number("turn_signal_remaining_distance_to_bound_threshold");
   p.turn_signal_on_swerving = set.boolean("turn_signal_on_swerving");
+  return p;
+}
+
+BehaviorSignalParameters behavior_parameters(const ParameterSet& set, const TurnSignalParameters& decider,
+                                             double vehicle_length, double vehicle_width) {
+  BehaviorSignalParameters p = behavior_signal_parameters(decider);
+  p.rear_overhang = vehicle_length - decider.base_link_to_front;
+  p.vehicle_width = vehicle_width;
+  p.min_length_for_turn_signal_activation = set.number("min_length_for_turn_signal_activation");
+  p.max_prepare_duration = set.number("max_prepare_duration");
+  p.min_prepare_duration = set.number("min_prepare_duration");
+  p.min_lane_changing_velocity = set.number("min_lane_changing_velocity");
+  p.max_longitudinal_acc = set.number("max_longitudinal_acc");
+  p.lane_change_required_end_at_boundary = set.boolean("lane_change_required_end_at_boundary");
+  p.max_prepare_time = set.number("max_prepare_time");
+  p.turn_signal_on_centerline_start = set.text("turn_signal_on_centerline_start");
+  p.minimum_shift_length = set.number("minimum_shift_length");
+  p.th_distance_to_middle_of_the_road = set.number("th_distance_to_middle_of_the_road");
+  p.prepare_time_before_start = set.number("prepare_time_before_start");
   return p;
 }
 

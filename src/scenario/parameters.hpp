@@ -10,6 +10,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "traffic_light/traffic_light_judge.hpp"
+#include "turn_signal/behavior_signal.hpp"
 #include "turn_signal/turn_signal_parameters.hpp"
 
 namespace signalsim {
@@ -59,6 +60,11 @@ class ParameterSet {
 
 /// The judge's parameters from a resolved set.
 TrafficLightJudgeParameters traffic_light_parameters(const ParameterSet& set);
+
+/// The behaviour modules' parameters (spec TSD §8.2) from a resolved set: the decider's shared values
+/// plus the module parameters of the schema and the ego's footprint.
+BehaviorSignalParameters behavior_parameters(const ParameterSet& set, const TurnSignalParameters& decider,
+                                             double vehicle_length, double vehicle_width);
 
 /// The decider's parameters from a resolved set.
 TurnSignalParameters turn_signal_parameters(const ParameterSet& set, double base_link_to_front);

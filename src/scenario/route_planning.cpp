@@ -29,10 +29,9 @@ std::vector<LateralSegment> plan_lane_changes(const Scenario& scenario, const su
   std::vector<LateralSegment> out;
   const double b2f = scenario.ego.base_link_to_front;
   const auto& edges = scenario.ego.route;
-  const std::optional<LaneChangeManeuver>& requested = scenario.lane_change;
-  if (requested && !requested->edge.empty() &&
-      std::find(edges.begin(), edges.end(), requested->edge) == edges.end())
-    fail(scenario, "maneuvers: lane_change: edge '" + requested->edge + "' is not on the ego's route");
+  for (const LaneChangeManeuver& m : scenario.lane_changes)
+    if (!m.edge.empty() && std::find(edges.begin(), edges.end(), m.edge) == edges.end())
+      fail(scenario, "maneuvers: lane_change: edge '" + m.edge + "' is not on the ego's route");
   for (std::size_t i = 0; i < edges.size() && i < plan.lane_per_edge.size(); ++i) {
     const auto index = plan.map.find_edge(edges[i]);
     const sumo::NetEdge* edge = net.edge(edges[i]);
@@ -49,11 +48,21 @@ std::vector<LateralSegment> plan_lane_changes(const Scenario& scenario, const su
               << edge->lanes.size() << " lanes)";
       fail(scenario, out_msg.str());
     }
-    const bool asked = requested && (requested->edge.empty() ? first : requested->edge == edges[i]);
+    // The lane change the scenario asks for on this edge (no `edge`: the first edge).
+    const LaneChangeManeuver* requested = nullptr;
+    for (const LaneChangeManeuver& m : scenario.lane_changes)
+      if (m.edge.empty() ? first : m.edge == edges[i]) {
+        if (requested) fail(scenario, "maneuvers: two lane_change maneuvers on the first edge '" + edges[i] + "'");
+        requested = &m;
+      }
+    const bool asked = requested != nullptr;
     if (entry == planned) {
       if (asked)
-        fail(scenario, "maneuvers: lane_change: the ego departs on the planned lane " + lanelet.lane_id +
-                           " of the first edge; set ego.depart_lane to another lane");
+        fail(scenario, first && requested->edge.empty()
+                           ? "maneuvers: lane_change: the ego departs on the planned lane " + lanelet.lane_id +
+                                 " of the first edge; set ego.depart_lane to another lane"
+                           : "maneuvers: lane_change on '" + edges[i] + "': the ego already enters it on lane " +
+                                 lanelet.lane_id + " (to_lane)");
       continue;
     }
     LateralSegment seg;
@@ -103,7 +112,12 @@ std::vector<LateralSegment> plan_lane_changes(const Scenario& scenario, const su
       fail(scenario, out_msg.str());
     }
     seg.first_line_id = 100 + i;
-    seg.plan = ShiftPlan({ShiftLine{m.at, m.at + m.length, offset, 0.0}});
+    seg.plan = ShiftPlan({ShiftLine{m.at, m.at + m.length, offset, 0.0}});  // nominal: started at `at`
+    seg.lane_change.earliest_start = m.at;
+    seg.lane_change.latest_start = lanelet.s_end() - b2f - m.length;
+    seg.lane_change.length = m.length;
+    seg.lane_change.shift_start = offset;
+    seg.lane_change.approval_delay = m.approval_delay;
     out.push_back(std::move(seg));
   }
   return out;
@@ -242,13 +256,15 @@ LateralPlan plan_lateral(const Scenario& scenario, const sumo::RoutePlan& plan, 
 
 std::vector<int> required_exit_lanes(const Scenario& scenario) {
   std::vector<int> out;
-  if (!scenario.lane_change || scenario.lane_change->edge.empty()) return out;
-  out.assign(scenario.ego.route.size(), -1);
-  for (std::size_t i = 0; i < out.size(); ++i)
-    if (scenario.ego.route[i] == scenario.lane_change->edge) {
-      out[i] = scenario.lane_change->to_lane;
-      break;
-    }
+  for (const LaneChangeManeuver& m : scenario.lane_changes) {
+    if (m.edge.empty()) continue;
+    out.resize(scenario.ego.route.size(), -1);
+    for (std::size_t i = 0; i < out.size(); ++i)
+      if (scenario.ego.route[i] == m.edge) {
+        out[i] = m.to_lane;
+        break;
+      }
+  }
   return out;
 }
 
@@ -258,9 +274,11 @@ sumo::RoutePlan plan_route(const Scenario& scenario, const sumo::NetIndex& net) 
     plan = prepare_route(sumo::build_route(net, scenario.ego.route, required_exit_lanes(scenario)), scenario.params);
   } catch (const sumo::RouteError& e) {
     std::string hint;
-    if (scenario.lane_change && !scenario.lane_change->edge.empty())
-      hint = " (with the requested lane change to lane " + std::to_string(scenario.lane_change->to_lane) + " on '" +
-             scenario.lane_change->edge + "': it must be reachable from another lane and lead on)";
+    for (const LaneChangeManeuver& m : scenario.lane_changes)
+      if (!m.edge.empty())
+        hint += (hint.empty() ? " (with the requested lane change to lane " : "; to lane ") + std::to_string(m.to_lane) +
+                " on '" + m.edge + "'";
+    if (!hint.empty()) hint += ": each must be reachable from another lane and lead on)";
     throw InputError(scenario.path, 0, std::string("ego.route: ") + e.what() + hint);
   }
   // What SUMO would otherwise clamp or reject only after it started.

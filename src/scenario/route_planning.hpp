@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "planning/lane_change_execution.hpp"
 #include "planning/shift_line.hpp"
 #include "scenario/scenario.hpp"
 #include "sumo/net_index.hpp"
@@ -29,7 +30,10 @@ struct LateralSegment {
   LateralKind kind = LateralKind::LaneChange;
   std::string edge;            ///< the edge the plan is driven on
   std::string reference_lane;  ///< its planned lane: offsets are measured from its centre
+  /// The lateral plan; for a lane change the nominal one (lateral motion from its earliest start),
+  /// the executed line is decided at approval (lane_change).
   ShiftPlan plan;
+  LaneChangeTiming lane_change;  ///< lane change only
   /// Lane change: lateral position of the lane boundary the ego crosses (the adjacent lane's boundary) [m].
   double boundary = 0.0;
   double left_half_width = 1.6;   ///< of the reference lane [m] (lane-bound test)

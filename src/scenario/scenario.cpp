@@ -330,15 +330,20 @@ Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrid
       if (kind != "lane_change")
         throw InputError(path, yaml_line(item.begin()->first),
                          where + ": unknown maneuver '" + kind + "' (known: lane_change, avoid, pull_out, pull_over)");
-      if (s.lane_change) throw InputError(path, yaml_line(item), where + ": at most one lane_change");
       YamlFields fields(item.begin()->second, path, where + ".lane_change");
       LaneChangeManeuver m;
       m.edge = fields.text_or("edge", "");
       if (!m.edge.empty()) m.to_lane = static_cast<int>(fields.required_number("to_lane", 0.0, 63.0));
       m.at = fields.required_number("at", 0.0, 1e6);
       m.length = fields.number("length", kDefaultLaneChangeLength, 1.0, 10000.0);
+      m.approval_delay = fields.number("approval_delay", 0.0, 0.0, 3600.0);
       fields.finish();
-      s.lane_change = m;
+      for (const LaneChangeManeuver& other : s.lane_changes)
+        if (other.edge == m.edge)
+          throw InputError(path, yaml_line(item), where + ": a second lane_change on " +
+                                                      (m.edge.empty() ? std::string("the first edge") : "edge '" + m.edge + "'") +
+                                                      " (at most one per edge)");
+      s.lane_changes.push_back(m);
     }
   }
 

@@ -38,11 +38,19 @@ struct EgoSpec {
 /// kDefaultLaneChangeLength long.
 /// With `edge` (and `to_lane`) it is a requested lane change on that route edge: the lane plan
 /// leaves `edge` on `to_lane` and enters it on another lane (sumo::plan_lanes' required exit).
+/// Several lane changes are allowed, at most one per edge.
+/// The lateral motion starts after the module's prepare segment (planning/lane_change_execution.hpp):
+/// `at` is the earliest start; the blinker comes on max(v * turn_signal_search_time,
+/// turn_signal_minimum_search_distance) before it; approval comes `approval_delay` seconds after the
+/// blinker (and once the target lane is clear); the lateral motion then starts
+/// max(max_prepare_duration - blinker-on time, min_prepare_duration) * v further on.
 struct LaneChangeManeuver {
   std::string edge;   ///< empty: the first edge, from ego.depart_lane
   int to_lane = -1;   ///< with `edge`: the lane the ego is on at the end of `edge`
-  double at = -1.0;      ///< route s of base_link where the lateral motion starts [m]; < 0: default
+  double at = -1.0;      ///< base_link's earliest start of the lateral motion [m] (route s; on `edge`
+                         ///< with `edge`); < 0: default
   double length = 50.0;  ///< [m] of route s over which the ego shifts one lane
+  double approval_delay = 0.0;  ///< [s] after the blinker came on (an operator's RTC approval)
 };
 inline constexpr double kDefaultLaneChangeLead = 20.0;    ///< [m]
 inline constexpr double kDefaultLaneChangeLength = 50.0;  ///< [m]
@@ -162,7 +170,7 @@ struct Scenario {
   PerceptionModelParameters perception;  ///< `perception:`; seeded with `seed`; all faults off by default
   std::map<std::string, double> light_offsets;  ///< `light_offsets: {tls: seconds}` program shifts
   ParameterSet params;                  ///< defaults, params.files, the country, params.set, overrides
-  std::optional<LaneChangeManeuver> lane_change;  ///< from `maneuvers` (at most one lane_change)
+  std::vector<LaneChangeManeuver> lane_changes;   ///< from `maneuvers` (at most one per edge)
   std::vector<ObstacleSpec> obstacles;
   std::vector<AvoidManeuver> avoids;              ///< from `maneuvers`
   std::optional<PullOutManeuver> pull_out;        ///< from `maneuvers` (at most one)

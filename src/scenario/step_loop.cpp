@@ -6,11 +6,11 @@
 
 #include "planning/speed_limit_planner.hpp"
 #include "planning/stop/jerk_limited_stop.hpp"
+#include "scenario/behavior_stage.hpp"
 #include "scenario/light_stage.hpp"
 #include "scenario/route_planning.hpp"
 #include "sumo/approach_lights.hpp"
 #include "sumo/sumo_session.hpp"
-#include "turn_signal/behavior_modules.hpp"
 #include "turn_signal/turn_signal_decider.hpp"
 
 namespace signalsim {
@@ -18,7 +18,6 @@ namespace {
 
 constexpr double kRestSpeed = 0.01;       // [m/s] below this the ego counts as at rest for stop errors
 constexpr double kSettleDistance = 0.02;  // [m] this close to the stop point the ego is brought to rest
-constexpr double kPathBackward = 5.0;     // [m] behind base_link: the behaviour modules' path start
 
 Blinker blinker_of(const TurnSignalDecision& d) {
   if (d.hazard == HazardLights::Enable) return Blinker::Hazard;
@@ -129,10 +128,24 @@ RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, co
   RunRecord record;
   record.base_link_to_front = b2f;
   const LateralPlan lateral = plan_lateral(scenario, plan, net);
-  const BehaviorSignalParameters behavior_params = behavior_signal_parameters(decider.parameters());
-  BehaviorModules modules;
-  const double path_forward = scenario.params.number("forward_path_length");  // behaviour module path ahead of base_link
+  BehaviorStageConfig behavior_config;
+  behavior_config.path_forward = scenario.params.number("forward_path_length");
+  behavior_config.route_length = route.length();
+  behavior_config.vehicle_length = scenario.ego.length;
+  behavior_config.gaps = {scenario.params.number("lane_change_safety_rear_gap"),
+                          scenario.params.number("lane_change_safety_front_gap")};
+  BehaviorStage behavior_stage(
+      lateral, behavior_parameters(scenario.params, decider.parameters(), scenario.ego.length, kObstacleWidth),
+      behavior_config);
   sumo::SumoSession session(session_config(scenario, plan, lateral));
+  // A lane change's target lane: the other vehicles on it, in route s (asked only while one waits).
+  const auto target_lane_traffic = [&](const LateralSegment& seg) {
+    std::vector<OccupiedSpan> spans;
+    const double lane_start = route.at(seg.route_index).s_start;
+    for (const sumo::SumoSession::LaneVehicle& v : session.vehicles_on_lane(seg.reference_lane))
+      spans.push_back({lane_start + v.pos - v.length, lane_start + v.pos});
+    return spans;
+  };
   // Arrow bulbs from every program SUMO loaded (additional files may replace the net's program).
   std::vector<sumo::ApproachLight> approaches = sumo::approach_lights(net, route);
   for (sumo::ApproachLight& a : approaches) a.has_arrow = sumo::shows_arrow(session.program_states(a.tls_id), a);
@@ -150,9 +163,10 @@ RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, co
   JudgeDecision previous_decision = JudgeDecision::None;
 
   bool departed = false;  // the ego has moved (start planner: has_departed)
+  bool hold_braking = false;  // braking for a lane change's hold point (not yet approved)
   double backed_up = 0.0;  // [m] emulated backward driving done so far
   const LateralSegment* pull_over_goal = nullptr;
-  for (const LateralSegment& seg : lateral.segments)
+  for (const LateralSegment& seg : behavior_stage.plan().segments)
     if (seg.kind == LateralKind::PullOver) pull_over_goal = &seg;
 
   sumo::EgoState observed = session.ego();
@@ -169,90 +183,22 @@ RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, co
     if (observed.speed > kRestSpeed) departed = true;
 
     // lateral plan: measured against the planned lane while the ego is on a segment's edge.
-    const LateralSegment* segment = lateral.on_edge(observed.edge);
+    const LateralSegment* segment = behavior_stage.plan().on_edge(observed.edge);
     const double lateral_offset =
         segment ? session.lateral_offset_from(segment->reference_lane) : observed.lateral_offset;
-    std::optional<double> planned_offset;
-    // While backing up (before the pull out) the ego holds its road-side offset.
-    const auto plan_at = [&](const LateralSegment& seg, double s) {
-      return backing ? seg.plan.lines().front().shift_start : seg.plan.offset_at(s);
-    };
-    if (segment) planned_offset = plan_at(*segment, ego.s_base);
 
-    // behaviour modules (spec TSD §8), each while Autoware would run it (see each block); merged in
-    // Autoware's order with OVERWRITE / USE_PRIOR_INFO (spec TSD §6.4) by merge_behavior_requests.
-    LaneChangeSignal::Input lane_change;
-    AvoidanceSignal::Input avoidance;
-    PullOutSignal::Input pull_out;
-    PullOverSignal::Input pull_over;
-    const auto module_signal = [&](const LateralSegment& seg, double path_back) {
-      BehaviorSignalInput in;
-      in.path_front = std::max(0.0, ego.s_base - kPathBackward);
-      in.path_back = path_back;
-      in.current_shift_length = segment == &seg ? lateral_offset : 0.0;
-      in.route_start = 0.0;
-      in.lane.left_half_width = seg.left_half_width;
-      in.lane.right_half_width = seg.right_half_width;
-      // The yaw relative to the lane: the plan's (SUMO follows it exactly, see planned_offset).
-      if (segment == &seg) in.ego_relative_yaw = std::atan(seg.plan.heading_at(ego.s_base));
-      return in;
-    };
-    BehaviorRequests requests;
-    requests.now = observed.time;
-    for (const LateralSegment& seg : lateral.segments) {
-      // The lane-change module runs from when its shift starts within the module path (also before
-      // the ego reaches the edge) until base_link passes the shift end.
-      if (seg.kind == LateralKind::LaneChange && !requests.lane_change &&
-          seg.plan.lines().front().s_start <= ego.s_base + path_forward &&
-          ego.s_base <= seg.plan.lines().front().s_end) {
-        const ShiftLine& line = seg.plan.lines().front();
-        lane_change.phase = LaneChangeSignal::Phase::Running;
-        lane_change.direction = line.relative_shift() > 0 ? TurnIndicator::EnableLeft : TurnIndicator::EnableRight;
-        lane_change.lane_changing_start = line.s_start;
-        lane_change.lane_changing_end = line.s_end;
-        lane_change.boundary_crossing = line.s_at_offset(seg.boundary);
-        requests.lane_change = &lane_change;
-      }
-      // The avoidance runs once its whole plan lies within the module path (Autoware registers
-      // shift lines only for objects within the path), until its last line is behind base_link.
-      const double path_back = std::min(route.length(), ego.s_base + path_forward);
-      if (seg.kind == LateralKind::Avoidance && !requests.avoidance && seg.plan.lines().back().s_end >= ego.s_base &&
-          seg.plan.lines().back().s_end <= path_back) {
-        for (std::size_t k = 0; k < seg.plan.lines().size(); ++k) {
-          const ShiftLine& line = seg.plan.lines()[k];
-          avoidance.shift_lines.push_back({seg.first_line_id + k, line.s_start, line.s_end, line.shift_start, line.shift_end});
-        }
-        avoidance.planned_shift_at_ego = segment == &seg ? *planned_offset : 0.0;
-        avoidance.signal = module_signal(seg, path_back);
-        requests.avoidance = &avoidance;
-      }
-      // The start planner runs from departure until base_link passes the pull-out end.
-      if (seg.kind == LateralKind::PullOut && segment == &seg && ego.s_base <= seg.plan.lines().back().s_end) {
-        const ShiftLine& line = seg.plan.lines().front();
-        pull_out.pull_out_start = line.s_start;
-        pull_out.pull_out_end = line.s_end;
-        pull_out.shift_at_start = line.shift_start;
-        pull_out.shift_at_end = line.shift_end;
-        pull_out.driving_forward = !backing;
-        pull_out.override_ego_stopped_check = !departed;  // [SP]: not yet departed
-        pull_out.closest_lanelet = seg.route_index;
-        pull_out.signal = module_signal(seg, path_back);
-        requests.pull_out = &pull_out;
-      }
-      // The goal planner runs once the pull-over path lies within the module path.
-      if (seg.kind == LateralKind::PullOver && seg.goal_s <= path_back) {
-        const ShiftLine& line = seg.plan.lines().front();
-        pull_over.path_decided = true;
-        pull_over.pull_over_start = line.s_start;
-        pull_over.pull_over_end = line.s_end;
-        pull_over.shift_at_start = line.shift_start;
-        pull_over.shift_at_end = line.shift_end;
-        pull_over.closest_lanelet = seg.route_index;
-        pull_over.signal = module_signal(seg, path_back);
-        requests.pull_over = &pull_over;
-      }
-    }
-    const TurnSignalInfo behavior = merge_behavior_requests(modules, requests, ego, behavior_params);
+    // behaviour modules (spec TSD §8) and the lane changes' phases (scenario/behavior_stage).
+    BehaviorStage::Observation behavior_observation;
+    behavior_observation.now = observed.time;
+    behavior_observation.ego = ego;
+    behavior_observation.backing = backing;
+    behavior_observation.departed = departed;
+    behavior_observation.segment = segment;
+    behavior_observation.lateral_offset = lateral_offset;
+    const BehaviorStage::Result behavior_step = behavior_stage.step(behavior_observation, target_lane_traffic);
+    const TurnSignalInfo& behavior = behavior_step.behavior;
+    std::optional<double> planned_offset;
+    if (segment) planned_offset = behavior_stage.planned_offset(*segment, ego.s_base, backing);
 
     // decide: blinker (spec TSD) and light (spec TLJ).
     const TurnSignalDecision decision = decider.decide(route, ego, behavior);
@@ -285,13 +231,24 @@ RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, co
     if (stopping) stop_level = limit_for_stop(*stopping->result.stop_point_distance);
     // The pull-over goal: a jerk-limited stop with base_link at the goal (its level is not recorded).
     if (pull_over_goal) limit_for_stop(pull_over_goal->goal_s - ego.s_base);
+    // A lane change not yet approved: base_link comes to rest before its last possible start. The
+    // hold constrains the speed from the step where a normal stop must begin (as if not braking
+    // yet: slowing for a curve ahead does not start it), then until approval.
+    if (!behavior_step.hold_distance) {
+      hold_braking = false;
+    } else {
+      if (!hold_braking) hold_braking = plan_stop({observed.speed, 0.0, *behavior_step.hold_distance, dt}, stop_params).braking;
+      if (hold_braking) limit_for_stop(*behavior_step.hold_distance);
+    }
     session.set_emergency_braking(stop_level == StopLevel::Emergency);
 
     // apply, step.
     if (backing) speed = 0.0;
     session.command(signal_mask(blinker), speed);
     // The plan's offset where base_link will be after the step (normal lanes of the plan's edge only).
-    if (segment) session.command_lateral_offset(plan_at(*segment, ego.s_base + speed * dt), segment->reference_lane);
+    if (segment)
+      session.command_lateral_offset(behavior_stage.planned_offset(*segment, ego.s_base + speed * dt, backing),
+                                     segment->reference_lane);
     if (backing) {
       const double back = std::min(kBackwardSpeed * dt, lateral.backward - backed_up);
       session.move_back(back);
@@ -338,6 +295,8 @@ RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, co
                    std::string(to_string(row.blinker_source)));
       previous_blinker = blinker;
     }
+    for (const BehaviorStage::Transition& t : behavior_step.transitions)
+      record_event(record, row, "lane_change", to_string(t.from), to_string(t.to), t.edge);
     if (row.tl_decision != previous_decision) {
       record_event(record, row, "light", std::string(to_string(previous_decision)),
                    std::string(to_string(row.tl_decision)), row.tl_id);
@@ -354,6 +313,7 @@ RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, co
     observed = session.ego();
   }
   record.collisions = session.ego_collisions();
+  record.lane_changes = behavior_stage.lane_change_records();
   return record;
 }
 

@@ -60,10 +60,22 @@ struct RedLightViolation {
   double s_front = 0.0;
 };
 
+/// One lane change as executed (spec TSD §8.2): its blinker, its approval and its lateral motion.
+struct LaneChangeRecord {
+  std::string edge;
+  std::string phase;                       ///< the last phase reached (behavior_stage to_string)
+  std::optional<double> blinker_on_time;   ///< [s] the module's blinker timestamp at approval
+  std::optional<double> approval_time;     ///< [s]
+  std::optional<double> approval_s_base;   ///< [m] base_link at approval
+  std::optional<double> prepare_duration;  ///< [s] the module's prepare duration at approval
+  std::optional<double> start, end;        ///< [m] base_link s of the lateral motion
+  double shift = 0.0;                      ///< [m] lateral, left positive
+};
+
 struct TimelineEvent {
   double time = 0.0;
   double s_front = 0.0;
-  std::string kind;              ///< "blinker" or "light"
+  std::string kind;              ///< "blinker", "light" or "lane_change" (phases, source = edge)
   std::string from, to;
   std::string source;
 };
@@ -79,6 +91,7 @@ struct RunRecord {
   std::vector<TimelineEvent> events;
   std::vector<LightStop> stops;
   std::vector<RedLightViolation> red_violations;
+  std::vector<LaneChangeRecord> lane_changes;
   bool arrived = false;          ///< the ego reached the end of its route
   int off_route_steps = 0;       ///< steps on a lane not on the planned route (route position held)
   int collisions = 0;

@@ -315,6 +315,19 @@ void SumoSession::command_lateral_offset(double target_offset_next_step, const s
   }
 }
 
+std::vector<SumoSession::LaneVehicle> SumoSession::vehicles_on_lane(const std::string& lane_id) const {
+  try {
+    std::vector<LaneVehicle> out;
+    for (const std::string& id : libsumo::Lane::getLastStepVehicleIDs(lane_id)) {
+      if (id == kEgo) continue;
+      out.push_back({id, libsumo::Vehicle::getLanePosition(id), libsumo::Vehicle::getLength(id)});
+    }
+    return out;
+  } catch (const std::exception& e) {
+    throw SumoError("SUMO cannot list the vehicles on lane '" + lane_id + "': " + e.what());
+  }
+}
+
 std::string SumoSession::light_state(const std::string& tls_id) const {
   try {
     return libsumo::TrafficLight::getRedYellowGreenState(tls_id);

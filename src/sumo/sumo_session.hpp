@@ -124,6 +124,16 @@ class SumoSession {
   /// for the step. Throws SumoError when the ego would leave the start of its lane.
   void move_back(double distance);
 
+  /// Another vehicle on a lane: its front's lane position and its length [m].
+  struct LaneVehicle {
+    std::string id;
+    double pos = 0.0;
+    double length = 0.0;
+  };
+  /// The vehicles other than the ego whose lane is `lane_id` now (Lane::getLastStepVehicleIDs, in
+  /// SUMO's order). Throws SumoError for an unknown lane.
+  std::vector<LaneVehicle> vehicles_on_lane(const std::string& lane_id) const;
+
   /// Live state of a light: one character per link index (spec SUMO §2).
   std::string light_state(const std::string& tls_id) const;
 

@@ -73,23 +73,69 @@ long first_step(const ManeuverRun& r, Blinker b, RequestSource source, std::size
   return -1;
 }
 
+// The line the ego executed for lane change `k` (fixed at approval), from the run record.
+ShiftLine executed_line(const ManeuverRun& r, std::size_t k = 0) {
+  const LaneChangeRecord& lc = r.record.lane_changes.at(k);
+  EXPECT_EQ(lc.phase, "done");
+  return {lc.start.value(), lc.end.value(), -lc.shift, 0.0};
+}
+
+// spec TSD §8.2 prepare segment: approved at `approval_time` with the module's blinker on since
+// `blinker_on_time`, the lateral motion starts v * max(4 s - blinker-on time, 2 s) after base_link's
+// approval position (never before the maneuver's earliest start, never after its latest start), and
+// the planned offset holds the original lane until then.
+void expect_prepare_rule(const ManeuverRun& r, std::size_t k = 0) {
+  const LaneChangeRecord& lc = r.record.lane_changes.at(k);
+  const LateralSegment* seg = r.lateral.on_edge(lc.edge);
+  ASSERT_NE(seg, nullptr);
+  ASSERT_TRUE(lc.approval_time && lc.blinker_on_time && lc.prepare_duration && lc.start);
+  const double on_time = *lc.approval_time - *lc.blinker_on_time;
+  EXPECT_GE(on_time, seg->lane_change.approval_delay - 1e-9);
+  const auto at_approval = std::find_if(r.record.rows.begin(), r.record.rows.end(), [&](const TimelineRow& row) {
+    return std::abs(row.time - *lc.approval_time) < 1e-6;
+  });
+  ASSERT_NE(at_approval, r.record.rows.end());
+  // Below min_lane_changing_velocity (2.78 m/s) the floor is the time to reach it at 1 m/s^2.
+  const double floor = at_approval->speed < 2.78 ? std::max(2.78 - at_approval->speed, 2.0) : 2.0;
+  EXPECT_NEAR(*lc.prepare_duration, std::max(4.0 - on_time, floor), 1e-9);
+  EXPECT_NEAR(*lc.approval_s_base, s_base(r, *at_approval), 1e-9);
+  const double prepared = *lc.approval_s_base + at_approval->speed * *lc.prepare_duration;
+  const double expected = std::min(std::max(seg->lane_change.earliest_start, prepared), seg->lane_change.latest_start);
+  EXPECT_NEAR(*lc.start, expected, 1e-9);
+  EXPECT_NEAR(*lc.end - *lc.start, seg->lane_change.length, 1e-9);
+  // The first step with the module's blinker on is the module's timestamp.
+  const auto first_on = std::find_if(r.record.rows.begin(), r.record.rows.end(), [&](const TimelineRow& row) {
+    return row.blinker_source == RequestSource::LaneChange && row.edge != "" && row.time >= *lc.blinker_on_time - 1e-6;
+  });
+  ASSERT_NE(first_on, r.record.rows.end());
+  EXPECT_NEAR(first_on->time, *lc.blinker_on_time, 1e-6);
+  // The original lane until the lateral motion starts.
+  for (const TimelineRow& row : r.record.rows)
+    if (row.planned_offset && row.edge == lc.edge && s_base(r, row) <= *lc.start) {
+      EXPECT_NEAR(*row.planned_offset, -lc.shift, 1e-9) << "s_front " << row.s_front;
+    }
+}
+
 // The lane-change blinker turns on exactly at the first step with the front within the prep
-// distance of the lane-changing start, and stays on (from the lane change) until base_link passes
-// the lane-changing end; returns the index of the first step after it.
-std::size_t expect_lane_change_stretch(const ManeuverRun& r, Blinker b) {
-  const ShiftLine& line = r.lateral.segments.front().plan.lines().front();
+// distance of the earliest start of the lateral motion, and stays on (from the lane change) until
+// base_link passes the end of the executed lateral motion; returns the index of the first step
+// after it.
+std::size_t expect_lane_change_stretch(const ManeuverRun& r, Blinker b, std::size_t k = 0, std::size_t from = 0) {
+  const LateralSegment* seg = r.lateral.on_edge(r.record.lane_changes.at(k).edge);
+  const ShiftLine line = executed_line(r, k);
+  expect_prepare_rule(r, k);
   const auto& rows = r.record.rows;
-  std::size_t i = 0;
+  std::size_t i = from;
   for (; i < rows.size(); ++i) {
     const double prep = std::max(rows[i].speed * kSearchTime, kMinSearchDistance);
-    if (line.s_start - rows[i].s_front <= prep) break;
+    if (seg->lane_change.earliest_start - rows[i].s_front <= prep) break;
     EXPECT_EQ(rows[i].blinker, Blinker::None) << "too early at s_front " << rows[i].s_front;
   }
   if (i >= rows.size()) {
     ADD_FAILURE() << "the lane change never came within reach";
     return i;
   }
-  EXPECT_GT(i, 0u) << "the scenario should start out of reach";
+  EXPECT_GT(i, from) << "the scenario should start out of reach";
   for (; i < rows.size() && s_base(r, rows[i]) <= line.s_end; ++i) {
     EXPECT_EQ(rows[i].blinker, b) << "s_front " << rows[i].s_front;
     EXPECT_EQ(rows[i].blinker_source, RequestSource::LaneChange) << "s_front " << rows[i].s_front;
@@ -120,11 +166,11 @@ TEST(ManeuverScenario, LaneChangeThenLeftTurnTheLeftTurnWaitsForTheLaneChangeEnd
   expect_tracks_plan(r, -kLaneWidth);  // departs on in_S_0, the left turn needs in_S_1
   const std::size_t after = expect_lane_change_stretch(r, Blinker::Left);
   // The intersection's own request would have started earlier: 3 v + 30 before the turn lane at
-  // 189.60 (s_front ~118, see intersection_left.yaml); the lane-change path ends at base_link 120.
+  // 189.60 (s_front ~118, see intersection_left.yaml); the lane-change path ends at base_link ~127.
   const long turn = first_step(r, Blinker::Left, RequestSource::Intersection);
   ASSERT_GE(turn, 0);
   EXPECT_EQ(static_cast<std::size_t>(turn), after) << "the left turn takes over right after the lane change";
-  EXPECT_GT(s_base(r, r.record.rows[static_cast<std::size_t>(turn)]), r.lateral.segments.front().plan.lines().front().s_end);
+  EXPECT_GT(s_base(r, r.record.rows[static_cast<std::size_t>(turn)]), executed_line(r).s_end);
   const double turn_search = r.record.rows[static_cast<std::size_t>(turn)].speed * kSearchTime + 30.0;
   EXPECT_LT(189.60 - r.record.rows[static_cast<std::size_t>(turn)].s_front, turn_search)
       << "the intersection request was already within reach when the lane change ended";
@@ -141,7 +187,8 @@ TEST(ManeuverScenario, EarlyLaneChangeThenLeftTurnTwoStretches) {
   EXPECT_EQ(rows.front().blinker, Blinker::Left);
   EXPECT_EQ(rows.front().blinker_source, RequestSource::LaneChange);
   std::size_t i = 0;
-  for (; i < rows.size() && s_base(r, rows[i]) <= r.lateral.segments.front().plan.lines().front().s_end; ++i)
+  expect_prepare_rule(r);
+  for (; i < rows.size() && s_base(r, rows[i]) <= executed_line(r).s_end; ++i)
     EXPECT_EQ(rows[i].blinker_source, RequestSource::LaneChange);
   const long turn = first_step(r, Blinker::Left, RequestSource::Intersection, i);
   ASSERT_GT(turn, static_cast<long>(i)) << "a gap without blinker between the two stretches";
@@ -206,7 +253,110 @@ TEST(ManeuverScenario, LaneChangeTheRouteNeedsThenLeftTurn) {
 
 TEST(ManeuverScenario, RequestedLaneChangeOnAnEdgeOffTheRouteIsRejected) {
   Scenario s = load_scenario(std::string(SIGNALSIM_SOURCE_DIR) + "/scenarios/lane_change_second_edge.yaml");
-  s.lane_change->edge = "out_W";
+  s.lane_changes.at(0).edge = "out_W";
+  const sumo::NetIndex net = sumo::NetIndex::load(s.net);
+  EXPECT_THROW(plan_route(s, net), InputError);
+}
+
+// ---- Approval and the prepare segment (spec TSD §8.2 calc_actual_prepare_duration) -------------
+
+TEST(ManeuverScenario, ImmediateApprovalPreparesFourSeconds) {
+  const ManeuverRun r = run("lane_change_right");
+  const LaneChangeRecord& lc = r.record.lane_changes.at(0);
+  EXPECT_NEAR(*lc.approval_time, *lc.blinker_on_time, 1e-9) << "approved in the step its blinker came on";
+  EXPECT_NEAR(*lc.prepare_duration, 4.0, 1e-9);
+  EXPECT_GT(*lc.start, r.lateral.segments.front().lane_change.earliest_start) << "4 s reach beyond `at`";
+}
+
+TEST(ManeuverScenario, LateApprovalShortensThePrepareSegment) {
+  const ManeuverRun r = run("lane_change_approval_delay");
+  ASSERT_TRUE(r.record.arrived);
+  expect_tracks_plan(r, kLaneWidth);
+  const std::size_t after = expect_lane_change_stretch(r, Blinker::Right);
+  for (std::size_t i = after; i < r.record.rows.size(); ++i) EXPECT_EQ(r.record.rows[i].blinker, Blinker::None);
+  const LaneChangeRecord& lc = r.record.lane_changes.at(0);
+  // Approved at the first step 1.5 s after the blinker came on: prepare 4 - 1.5 = 2.5 s.
+  EXPECT_NEAR(*lc.approval_time - *lc.blinker_on_time, 1.5, 1e-6);
+  EXPECT_NEAR(*lc.prepare_duration, 2.5, 1e-6);
+  // The same lane change approved at once starts its lateral motion earlier in s only because the
+  // ego accelerates meanwhile; in time both start about 4 s after the blinker came on.
+  const ManeuverRun immediate = run("lane_change_right");
+  EXPECT_GT(*lc.start, *immediate.record.lane_changes.at(0).start);
+  EXPECT_EQ(last_lane_on(r, "in_S"), "in_S_0");
+  EXPECT_EQ(r.record.collisions, 0);
+}
+
+TEST(ManeuverScenario, LaneChangeWaitsUntilTheTargetLaneIsClear) {
+  const ManeuverRun r = run("lane_change_waits_for_gap");
+  ASSERT_TRUE(r.record.arrived);
+  expect_tracks_plan(r, kLaneWidth);
+  expect_lane_change_stretch(r, Blinker::Right);
+  const LaneChangeRecord& lc = r.record.lane_changes.at(0);
+  // Waited with the blinker on more than 2 s: the minimum prepare segment.
+  EXPECT_GT(*lc.approval_time - *lc.blinker_on_time, 2.0);
+  EXPECT_NEAR(*lc.prepare_duration, 2.0, 1e-9);
+  // Approved at the first step whose rear bumper is more than 10 m (rear gap) past the parked car's
+  // front (70 m on in_S, route s 70): not one step earlier.
+  const auto rear_gap = [&](const TimelineRow& row) { return row.s_front - r.scenario.ego.length - 10.0 - 70.0; };
+  const auto& rows = r.record.rows;
+  std::size_t k = 0;
+  while (k < rows.size() && std::abs(rows[k].time - *lc.approval_time) > 1e-6) ++k;
+  ASSERT_LT(k, rows.size());
+  ASSERT_GT(k, 0u);
+  EXPECT_GT(rear_gap(rows[k]), 0.0);
+  EXPECT_LE(rear_gap(rows[k - 1]), 0.0);
+  EXPECT_EQ(last_lane_on(r, "in_S"), "in_S_0");
+  EXPECT_EQ(r.record.collisions, 0);
+}
+
+TEST(ManeuverScenario, UnapprovedLaneChangeHoldsTheEgoAtItsLastStart) {
+  const ManeuverRun r = run("lane_change_hold_until_approved");
+  ASSERT_TRUE(r.record.arrived);
+  expect_tracks_plan(r, kLaneWidth);
+  expect_lane_change_stretch(r, Blinker::Right);
+  const LaneChangeRecord& lc = r.record.lane_changes.at(0);
+  const LateralSegment& seg = r.lateral.segments.front();
+  EXPECT_NEAR(seg.lane_change.latest_start, 189.60 - r.scenario.ego.base_link_to_front - 50.0, 1e-6);
+  // At rest before approval, base_link within 5 cm short of the hold point, never beyond it.
+  bool rested = false;
+  for (const TimelineRow& row : r.record.rows) {
+    if (row.time >= *lc.approval_time) break;
+    EXPECT_LE(s_base(r, row), seg.lane_change.latest_start + 1e-6) << row.time;
+    if (row.speed < 0.01 && row.time > 5.0) {
+      rested = true;
+      EXPECT_NEAR(s_base(r, row), seg.lane_change.latest_start, 0.05);
+    }
+  }
+  EXPECT_TRUE(rested);
+  EXPECT_NEAR(*lc.approval_time - *lc.blinker_on_time, 20.0, 1e-6);
+  EXPECT_NEAR(*lc.start, *lc.approval_s_base, 1e-9) << "from rest the lateral motion starts at once";
+  EXPECT_NEAR(*lc.start, seg.lane_change.latest_start, 0.05);
+  EXPECT_EQ(last_lane_on(r, "in_S"), "in_S_0");
+  EXPECT_EQ(r.record.off_route_steps, 0);
+}
+
+TEST(ManeuverScenario, TwoLaneChangesEachSignalAfresh) {
+  const ManeuverRun r = run("two_lane_changes");
+  ASSERT_TRUE(r.record.arrived);
+  ASSERT_EQ(r.record.lane_changes.size(), 2u);
+  EXPECT_EQ(r.record.lane_changes[0].edge, "in_S");
+  EXPECT_EQ(r.record.lane_changes[1].edge, "out_N");
+  const std::size_t after_first = expect_lane_change_stretch(r, Blinker::Right, 0);
+  const std::size_t after_second = expect_lane_change_stretch(r, Blinker::Left, 1, after_first);
+  for (std::size_t i = after_second; i < r.record.rows.size(); ++i) EXPECT_EQ(r.record.rows[i].blinker, Blinker::None);
+  // The module was reset: the second blinker has its own timestamp and a full 4 s prepare segment.
+  EXPECT_GT(*r.record.lane_changes[1].blinker_on_time, *r.record.lane_changes[0].end / 100.0);
+  EXPECT_NEAR(*r.record.lane_changes[1].prepare_duration, 4.0, 1e-9);
+  EXPECT_EQ(last_lane_on(r, "in_S"), "in_S_0");
+  EXPECT_EQ(last_lane_on(r, "out_N"), "out_N_1");
+  EXPECT_EQ(r.record.off_route_steps, 0);
+  EXPECT_EQ(r.record.collisions, 0);
+}
+
+TEST(ManeuverScenario, TwoLaneChangesOnTheFirstEdgeAreRejected) {
+  Scenario s = load_scenario(std::string(SIGNALSIM_SOURCE_DIR) + "/scenarios/two_lane_changes.yaml");
+  s.lane_changes.at(1).edge = "in_S";
+  s.lane_changes.at(1).to_lane = 0;
   const sumo::NetIndex net = sumo::NetIndex::load(s.net);
   EXPECT_THROW(plan_route(s, net), InputError);
 }

@@ -1,0 +1,48 @@
+#include "planning/lane_change_execution.hpp"
+
+#include <algorithm>
+
+namespace signalsim {
+
+double LaneChangeExecution::candidate_start(const Step& step) const {
+  // The prepare segment: v * prepare_duration on the original lane (spec TSD §8.2).
+  const double prepared = step.s_base + std::max(step.speed, 0.0) * step.prepare_duration;
+  const double start = std::min(std::max(timing_.earliest_start, prepared), timing_.latest_start);
+  return std::max(start, step.s_base);  // never behind base_link (only past the hold point)
+}
+
+ShiftLine LaneChangeExecution::line(const Step& step) const {
+  if (approved_) return *approved_;
+  return line_from(candidate_start(step));
+}
+
+bool LaneChangeExecution::target_lane_clear(const Step& step) const {
+  const double rear_bumper = step.s_base + step.base_link_to_front - step.vehicle_length;
+  const double from = rear_bumper - gaps_.rear;
+  const double to = line(step).s_end + step.base_link_to_front + gaps_.front;
+  return std::none_of(step.target_lane.begin(), step.target_lane.end(),
+                      [&](const OccupiedSpan& v) { return v.front >= from && v.rear <= to; });
+}
+
+std::optional<double> LaneChangeExecution::distance_to_hold_point(double s_base) const {
+  if (phase_ == LaneChangePhase::Running || phase_ == LaneChangePhase::Done) return std::nullopt;
+  return timing_.latest_start - s_base;
+}
+
+bool LaneChangeExecution::update(const Step& step) {
+  const LaneChangePhase before = phase_;
+  if (phase_ == LaneChangePhase::Pending && step.module_active) phase_ = LaneChangePhase::WaitingApproval;
+  if (phase_ == LaneChangePhase::WaitingApproval) {
+    const double blinker_on = step.blinker_on_since ? step.now - *step.blinker_on_since : 0.0;
+    if (blinker_on >= timing_.approval_delay - 1e-9 && target_lane_clear(step)) {
+      approved_ = line_from(candidate_start(step));  // the path is fixed from here on
+      approval_ = Approval{step.now, step.s_base, step.speed, step.prepare_duration, step.blinker_on_since};
+      phase_ = LaneChangePhase::Running;
+    }
+  }
+  if (phase_ == LaneChangePhase::Running && approved_ && step.s_base > approved_->s_end)
+    phase_ = LaneChangePhase::Done;
+  return phase_ != before;
+}
+
+}  // namespace signalsim

@@ -1,0 +1,118 @@
+// When a lane change's lateral motion starts: the phases of Autoware's lane-change module
+// (spec TSD §8.2 "Lane change") executed on the route coordinate s.
+//
+//   Pending          the module is not running yet (its blinker is off); the ego keeps its lane.
+//   WaitingApproval  the module signals (waiting-for-approval request); the ego keeps its lane. It is
+//                    approved at the first step where the approval delay has passed since the
+//                    blinker came on (an operator's RTC approval; 0 = automatic) and the target lane
+//                    is clear of other vehicles around the candidate path.
+//   Running          the path is fixed at approval: a prepare segment on the original lane of
+//                    v * prepare_duration, then the lateral motion over `length`.
+//   Done             base_link has passed the end of the lateral motion.
+//
+// prepare_duration is the module's calc_actual_prepare_duration: max(max_prepare_duration -
+// blinker-on time, min_prepare_duration) (spec TSD §8.2), so a blinker that has been on for a while
+// shortens the prepare segment. At a constant speed the lateral motion therefore starts
+// max(max_prepare, blinker-on time at approval + min_prepare) seconds after the blinker came on.
+//
+// signalsim bounds (the scenario's, not Autoware's): the lateral motion never starts before
+// `earliest_start` and never after `latest_start` (the last start that still ends with the front on
+// the edge; a later approval cuts the prepare segment short). While not yet running, the ego is
+// stopped at `latest_start` (Autoware stops before the end of the lane when it cannot change lanes).
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "planning/shift_line.hpp"
+
+namespace signalsim {
+
+/// The fixed facts of one lane change, decided when the scenario is planned.
+struct LaneChangeTiming {
+  double earliest_start = 0.0;  ///< [m] base_link s: the lateral motion starts here at the earliest
+  double latest_start = 0.0;    ///< [m] base_link s: the last start that still ends on the edge
+  double length = 50.0;         ///< [m] of s over which the ego moves one lane sideways
+  double shift_start = 0.0;     ///< [m] lateral offset of the original lane from the target lane's centre
+  double approval_delay = 0.0;  ///< [s] the earliest approval after the blinker came on
+};
+
+/// Where another vehicle occupies the target lane, in route s [m] (rear, front).
+struct OccupiedSpan {
+  double rear = 0.0;
+  double front = 0.0;
+};
+
+/// The safety margins of the approval's target-lane check (a stand-in for Autoware's RSS check).
+struct LaneChangeGaps {
+  double rear = 10.0;   ///< [m] kept free behind the ego's rear bumper
+  double front = 10.0;  ///< [m] kept free beyond the candidate path's end (front bumper there)
+};
+
+enum class LaneChangePhase { Pending, WaitingApproval, Running, Done };
+
+/// The phase machine of one lane change (see the file comment). A value type; no SUMO.
+class LaneChangeExecution {
+ public:
+  struct Step {
+    double now = 0.0;           ///< [s]
+    double s_base = 0.0;        ///< [m] base_link's route s
+    double speed = 0.0;         ///< [m/s]
+    bool module_active = false; ///< the lane-change module signals (LaneChangeSignal::active)
+    std::optional<double> blinker_on_since;  ///< [s] the module's blinker timestamp
+    double prepare_duration = 0.0;           ///< [s] the module's actual prepare duration now
+    double vehicle_length = 4.5;             ///< [m]
+    double base_link_to_front = 3.7;         ///< [m]
+    std::vector<OccupiedSpan> target_lane;   ///< other vehicles on the target lane
+  };
+
+  LaneChangeExecution() = default;
+  LaneChangeExecution(LaneChangeTiming timing, LaneChangeGaps gaps) : timing_(timing), gaps_(gaps) {}
+
+  /// Advances the phase for this step (at most one transition per step, in order). Returns true when
+  /// the phase changed.
+  bool update(const Step& step);
+
+  LaneChangePhase phase() const { return phase_; }
+  const LaneChangeTiming& timing() const { return timing_; }
+
+  /// The shift line the ego follows: fixed once running; before that the candidate path at `step`
+  /// (its start `s_base + v * prepare_duration`, bounded to [earliest_start, latest_start]).
+  ShiftLine line(const Step& step) const;
+  /// The fixed line (Running / Done); nullopt before approval.
+  const std::optional<ShiftLine>& approved_line() const { return approved_; }
+  /// What held at approval.
+  struct Approval {
+    double time = 0.0;                       ///< [s]
+    double s_base = 0.0;                     ///< [m]
+    double speed = 0.0;                      ///< [m/s]
+    double prepare_duration = 0.0;           ///< [s] the module's, at approval
+    std::optional<double> blinker_on_since;  ///< [s]
+  };
+  const std::optional<Approval>& approval() const { return approval_; }
+  std::optional<double> approval_time() const {
+    return approval_ ? std::optional<double>(approval_->time) : std::nullopt;
+  }
+
+  /// Before approval the ego must be at rest with base_link at latest_start at the latest: the
+  /// distance left to it [m]; nullopt once running.
+  std::optional<double> distance_to_hold_point(double s_base) const;
+
+  /// Is the target lane clear for the candidate line at `step`: no span overlaps
+  /// [rear bumper - gaps.rear, candidate end + base_link_to_front + gaps.front].
+  bool target_lane_clear(const Step& step) const;
+
+  /// The candidate's start at `step` (see line()).
+  double candidate_start(const Step& step) const;
+
+ private:
+  ShiftLine line_from(double start) const { return {start, start + timing_.length, timing_.shift_start, 0.0}; }
+
+  LaneChangeTiming timing_;
+  LaneChangeGaps gaps_;
+  LaneChangePhase phase_ = LaneChangePhase::Pending;
+  std::optional<ShiftLine> approved_;
+  std::optional<Approval> approval_;
+};
+
+}  // namespace signalsim
