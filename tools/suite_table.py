@@ -27,8 +27,11 @@ def main(out_dir: str, times_file: str) -> None:
     print(fmt.format(*("-" * w for w in widths)))
     for r in rows:
         print(fmt.format(*r))
-    failed = sum(1 for r in rows if r[1] != "passed")
-    print(f"\n{len(rows) - failed} passed, {failed} failed; outputs in {out_dir}/<scenario>/")
+    # no_expectations: the scenario has none, nothing was checked; neither passed nor failed.
+    count = {status: sum(1 for r in rows if r[1] == status) for status in ("passed", "failed", "no_expectations")}
+    errors = len(rows) - sum(count.values())
+    print(f"\n{count['passed']} passed, {count['failed']} failed, {count['no_expectations']} without expectations, "
+          f"{errors} error{'' if errors == 1 else 's'}; outputs in {out_dir}/<scenario>/")
 
 
 if __name__ == "__main__":

@@ -28,7 +28,8 @@ inline void add_batch_options(CLI::App* sub, BatchCliOptions& o, const std::stri
       ->check(CLI::PositiveNumber);
   if (with_resume)
     sub->add_flag("--resume", o.resume,
-                  "Keep the passed/failed rows of OUT/results.csv and run only the others (error rows run again)");
+                  "Keep the finished rows of OUT/results.csv (passed, failed, no_expectations) and run only the "
+                  "others (error rows run again)");
   sub->add_flag("--quiet,-q", o.quiet, "No progress output");
 }
 

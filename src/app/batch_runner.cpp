@@ -76,7 +76,7 @@ std::string describe_run(const RunSpec& run) {
 void read_summary(ResultRow& row, const RunSpec& run, const std::string& dir) {
   const auto summary = read_json_file((fs::path(dir) / "summary.json").string());
   const std::string status = summary.value("status", "");
-  if (status != "passed" && status != "failed") {
+  if (!is_finished_status(status)) {
     row.cells["status"] = "error";
     row.cells["error"] = summary.value("error", "summary.json status '" + status + "'");
     return;
@@ -160,7 +160,7 @@ class Progress {
       std::fflush(stdout);
       return;
     }
-    if (status != "passed") std::printf("\r\033[K%s\n", line.c_str());  // keep failures on screen
+    if (status != "passed") std::printf("\r\033[K%s\n", line.c_str());  // keep failures (and notices) on screen
     draw();
   }
 
@@ -195,12 +195,13 @@ class Progress {
 };
 
 void count(BatchResult& result) {
-  result.passed = result.failed = result.errors = 0;
+  result.passed = result.failed = result.no_expectations = result.errors = 0;
   for (const auto& [index, row] : result.rows) {
     const auto it = row.cells.find("status");
     const std::string status = it == row.cells.end() ? "" : it->second;
     if (status == "passed") ++result.passed;
     else if (status == "failed") ++result.failed;
+    else if (status == "no_expectations") ++result.no_expectations;
     else ++result.errors;
   }
 }
@@ -253,6 +254,10 @@ int BatchResult::exit_code() const {
   return failed + errors > 0 ? 1 : 0;
 }
 
+bool is_finished_status(const std::string& status) {
+  return status == "passed" || status == "failed" || status == "no_expectations";
+}
+
 int default_jobs() {
   const unsigned n = std::thread::hardware_concurrency();
   return n > 0 ? static_cast<int>(n) : 1;
@@ -282,7 +287,7 @@ BatchResult run_batch(const std::vector<RunSpec>& runs, const BatchSettings& set
                          "--resume: run " + std::to_string(index) +
                              " was not this run of this batch (other scenarios or values); use another --out");
       const auto status = row.cells.find("status");
-      if (status != row.cells.end() && (status->second == "passed" || status->second == "failed"))
+      if (status != row.cells.end() && is_finished_status(status->second))
         result.rows[index] = std::move(row);  // error rows are run again
     }
     result.skipped = result.rows.size();
@@ -339,6 +344,7 @@ BatchResult run_batch(const std::vector<RunSpec>& runs, const BatchSettings& set
 std::string batch_summary(const BatchResult& result, const std::string& out_dir) {
   std::string out = std::to_string(result.total) + " run" + (result.total == 1 ? "" : "s") + ": " +
                     std::to_string(result.passed) + " passed, " + std::to_string(result.failed) + " failed, " +
+                    std::to_string(result.no_expectations) + " without expectations, " +
                     std::to_string(result.errors) + " error" + (result.errors == 1 ? "" : "s");
   if (result.rows.size() < result.total) out += ", " + std::to_string(result.total - result.rows.size()) + " not run";
   if (result.skipped) out += " (" + std::to_string(result.skipped) + " from the earlier results.csv)";

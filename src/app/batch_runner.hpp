@@ -1,10 +1,12 @@
 // Runs many scenario runs in worker processes and keeps results.csv up to date (batch, sweep, check).
 //
-//   read OUT/results.csv when resuming: rows of passed/failed runs that match this batch are kept,
-//     error rows are dropped (run again); a row that does not match (another sweep) is an error
+//   read OUT/results.csv when resuming: rows of finished runs (passed, failed, no_expectations) that
+//     match this batch are kept, error rows are dropped (run again); a row that does not match
+//     (another sweep) is an error
 //   for each remaining run (by index): worker `signalsim run SCENARIO --out OUT/runs/NNNN-name
 //     --quiet --set ...` (process_pool), at most `jobs` at a time, each with the wall-clock timeout
-//   as each worker ends: a row from its exit code and RUNDIR/summary.json (status, expectations,
+//   as each worker ends: a row from its exit code and RUNDIR/summary.json (status passed, failed or
+//     no_expectations - a scenario without expectations, nothing checked, not a failure - expectations,
 //     "metrics"; computed from the run's files when summary.json has none), or an error row (exit
 //     code 2 with its stderr, a signal, a timeout, an unreadable summary);
 //     results.csv rewritten (tmp + rename) with every finished row, ordered by run index
@@ -34,12 +36,17 @@ struct BatchResult {
   ResultRows rows;                  ///< every finished row (kept and new), by run index
   std::size_t total = 0;            ///< runs in the batch
   std::size_t passed = 0, failed = 0, errors = 0;  ///< over all rows
+  std::size_t no_expectations = 0;  ///< rows of scenarios without expectations (not failures)
   std::size_t skipped = 0;          ///< rows kept from an earlier results.csv
   bool interrupted = false;
   double wall = 0.0;                ///< [s]
   /// 130 interrupted, 1 a run failed or errored, else 0.
   int exit_code() const;
 };
+
+/// True for the statuses of a run that finished (passed, failed, no_expectations): --resume keeps
+/// such rows; anything else ("error") is run again.
+bool is_finished_status(const std::string& status);
 
 /// Default number of worker processes: the number of cores.
 int default_jobs();
@@ -51,7 +58,8 @@ BatchResult run_batch(const std::vector<RunSpec>& runs, const BatchSettings& set
 /// OUT/results.csv
 std::string results_path(const std::string& out_dir);
 
-/// One line: "18 runs: 16 passed, 1 failed, 1 error in 3.2 s; results: out/x/results.csv".
+/// One line: "18 runs: 15 passed, 1 failed, 1 without expectations, 1 error in 3.2 s; results:
+/// out/x/results.csv".
 std::string batch_summary(const BatchResult& result, const std::string& out_dir);
 
 }  // namespace signalsim::app

@@ -2,8 +2,9 @@
 // `batch`) and compares its events.csv with DIR/<scenario file stem>.events.csv: the same events in
 // the same order (kind, from, to, source), each within --tolerance metres of s_front and one step
 // (or --time-tolerance) of time. A run error or a differing event is a regression (exit 1); with
-// --expectations a failed expectation is one too (else it is noted). --update rewrites the golden
-// files from the runs; --junit writes JUnit XML.
+// --expectations a failed expectation is one too (else it is noted). A scenario without expectations
+// (status no_expectations) is checked on its events only and says so; it is not a failure. --update
+// rewrites the golden files from the runs; --junit writes JUnit XML.
 #include <unistd.h>
 
 #include <cstdio>
@@ -74,7 +75,10 @@ JUnitCase check_one(const RunSpec& run, const ResultRow* row, const CheckOptions
   }
   const std::string failed_expectations =
       cell(*row, "status") == "failed" ? "expectations failed: " + cell(*row, "failed_expectations") : "";
-  const std::string note = failed_expectations.empty() ? "" : " (note: " + failed_expectations + ")";
+  const std::string note = !failed_expectations.empty() ? " (note: " + failed_expectations + ")"
+                           : cell(*row, "status") == "no_expectations"
+                               ? " (note: the scenario has no expectations: only its events are checked)"
+                               : "";
   const auto expectations_verdict = o.expectations && !failed_expectations.empty() ? JUnitCase::Result::Failed
                                                                                    : JUnitCase::Result::Passed;
 
@@ -148,8 +152,10 @@ Command add_check_command(CLI::App& app) {
                 cases.push_back(check_one(run, row == result.rows.end() ? nullptr : &row->second, *o, settings.out_dir));
                 failed += cases.back().result != JUnitCase::Result::Passed;
               }
-              std::printf("check: %zu scenario%s, %zu passed, %zu failed%s\n", cases.size(), cases.size() == 1 ? "" : "s",
-                          cases.size() - failed, failed, o->update ? " (golden files updated)" : "");
+              // Scenarios without expectations pass on their events alone: counted apart, not failed.
+              std::printf("check: %zu scenario%s, %zu passed, %zu failed; %zu without expectations%s\n", cases.size(),
+                          cases.size() == 1 ? "" : "s", cases.size() - failed, failed, result.no_expectations,
+                          o->update ? " (golden files updated)" : "");
               if (!o->junit.empty()) {
                 if (const fs::path parent = fs::path(o->junit).parent_path(); !parent.empty())
                   fs::create_directories(parent);

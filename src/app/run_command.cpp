@@ -49,9 +49,7 @@ int run(const RunOptions& options) {
     const RunRecord record = run_scenario(*scenario, plan, net);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const auto results = evaluate_expectations(*scenario, plan.map, record);
-    bool all = true;
-    for (const auto& r : results) all = all && r.passed;
-    const RunStatus status = all ? RunStatus::Passed : RunStatus::Failed;
+    const RunStatus status = run_status(results);
     write_run_outputs(options.out_dir, *scenario, plan, record, results, status);
     if (!options.quiet) {
       std::printf("%s: %s (%zu steps, %.1f s simulated, %zu events, %.2f s wall)\n", scenario->name.c_str(),
@@ -59,9 +57,11 @@ int run(const RunOptions& options) {
                   record.rows.empty() ? 0.0 : record.rows.back().time, record.events.size(), wall);
       for (const auto& r : results)
         std::printf("  [%s] %s: %s\n", r.passed ? "ok" : "FAIL", r.description.c_str(), r.detail.c_str());
+      if (status == RunStatus::NoExpectations)
+        std::printf("  the scenario has no expectations (expect:): nothing was checked\n");
     }
     if (options.plot) run_plot_tool({options.out_dir});  // a failed plot is reported, the run's verdict stands
-    return all ? 0 : kExitFailed;
+    return status == RunStatus::Failed ? kExitFailed : 0;
   } catch (const InputError& e) {
     return fail(options, scenario, e.what());
   } catch (const sumo::NetError& e) {

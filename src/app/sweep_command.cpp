@@ -28,6 +28,7 @@ Command add_sweep_command(CLI::App& app) {
               const Sweep sweep = load_sweep(o->file);
               std::vector<RunSpec> runs = expand_sweep(sweep);
               check_sweep_runs(sweep, runs);
+              check_sweep_plot(sweep, runs);  // a plot: no run can give is refused before any run
               const std::string default_out = sweep.out.empty() ? "out/" + sweep.name : sweep.out;
               BatchSettings settings = to_settings(o->batch, default_out, sweep.timeout.value_or(300.0));
               settings.swept = swept_keys(sweep);

@@ -47,9 +47,17 @@ std::string_view to_string(RunStatus status) {
   switch (status) {
     case RunStatus::Passed: return "passed";
     case RunStatus::Failed: return "failed";
+    case RunStatus::NoExpectations: return "no_expectations";
     case RunStatus::Error: break;
   }
   return "error";
+}
+
+RunStatus run_status(const std::vector<ExpectationResult>& results) {
+  if (results.empty()) return RunStatus::NoExpectations;
+  for (const ExpectationResult& r : results)
+    if (!r.passed) return RunStatus::Failed;
+  return RunStatus::Passed;
 }
 
 void write_timeline_csv(const std::string& path, const std::vector<TimelineRow>& rows) {

@@ -12,9 +12,14 @@
 
 namespace signalsim {
 
-/// Outcome of a run as the summary and the exit code see it.
-enum class RunStatus { Passed, Failed, Error };
+/// Outcome of a run as the summary and the exit code see it: "passed" (every expectation held),
+/// "failed" (one did not; exit code 1), "no_expectations" (the scenario has none, so nothing was
+/// checked; exit code 0, not a failure), "error" (exit code 2).
+enum class RunStatus { Passed, Failed, NoExpectations, Error };
 std::string_view to_string(RunStatus status);
+
+/// The status of a finished run from its expectation results: NoExpectations when there are none.
+RunStatus run_status(const std::vector<ExpectationResult>& results);
 
 void write_timeline_csv(const std::string& path, const std::vector<TimelineRow>& rows);
 void write_events_csv(const std::string& path, const std::vector<TimelineEvent>& events);

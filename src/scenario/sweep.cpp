@@ -1,8 +1,12 @@
 #include "scenario/sweep.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <memory>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -11,8 +15,10 @@
 
 #include "scenario/input_error.hpp"
 #include "scenario/metrics.hpp"
+#include "scenario/route_planning.hpp"
 #include "scenario/scenario.hpp"
 #include "scenario/yaml_fields.hpp"
+#include "sumo/net_index.hpp"
 
 namespace signalsim {
 namespace fs = std::filesystem;
@@ -96,6 +102,85 @@ std::string set_item(const std::string& key, const std::string& value) {
   return key + "=" + out.c_str();
 }
 
+std::string joined(const std::vector<std::string>& items, const std::string& separator = ", ") {
+  std::string out;
+  for (const std::string& item : items) out += (out.empty() ? "" : separator) + item;
+  return out;
+}
+
+// --- what a plot: may show -------------------------------------------------------------------------
+// The results.csv columns that hold numbers (see results.csv in README and metrics.hpp's
+// flatten_metrics): the run-level metrics and the outcome counts; per section and per light the
+// numeric fields. The other fields hold text or true/false, which a heat map cannot show.
+const std::vector<std::string>& numeric_run_columns() {
+  static const std::vector<std::string> columns = {
+      "max_decel",           "max_jerk",           "collisions",         "blinker_events", "flickers", "missed_signals",
+      "red_light_violations", "expectations_passed", "expectations_total", "wall_time"};
+  return columns;
+}
+const std::vector<std::string>& section_kinds() {  // SignalSection::kind
+  static const std::vector<std::string> kinds = {"turn", "roundabout_entry", "roundabout_exit"};
+  return kinds;
+}
+const std::vector<std::string>& numeric_section_fields() {
+  static const std::vector<std::string> fields = {"lead_distance", "lead_time", "time_on", "flickers"};
+  return fields;
+}
+const std::vector<std::string>& other_section_fields() {
+  static const std::vector<std::string> fields = {"id", "blinker", "missed"};
+  return fields;
+}
+const std::vector<std::string>& numeric_light_fields() {
+  static const std::vector<std::string> fields = {"stop_position_error"};
+  return fields;
+}
+const std::vector<std::string>& other_light_fields() {
+  static const std::vector<std::string> fields = {"id", "state_at_line", "red_light_violation", "decision", "zone",
+                                                  "emergency_stop"};
+  return fields;
+}
+
+// "<kind><n>.<field>" (n from 1, no leading zero), as flatten_metrics names section and light cells.
+struct MetricColumn {
+  std::string kind;
+  int number = 0;
+  std::string field;
+};
+std::optional<MetricColumn> parse_metric_column(const std::string& column) {
+  const auto dot = column.find('.');
+  if (dot == std::string::npos || dot == 0) return std::nullopt;
+  const std::string item = column.substr(0, dot);
+  std::size_t digits = item.size();
+  while (digits > 0 && std::isdigit(static_cast<unsigned char>(item[digits - 1]))) --digits;
+  const std::string number = item.substr(digits);
+  if (digits == 0 || number.empty() || number[0] == '0' || number.size() > 6) return std::nullopt;
+  return MetricColumn{item.substr(0, digits), std::stoi(number), column.substr(dot + 1)};
+}
+
+std::string numeric_columns_text() {
+  return "numeric columns: " + joined(numeric_run_columns()) + "; <kind><n>." + joined(numeric_section_fields(), "|") +
+         " with kind " + joined(section_kinds()) + "; light<n>." + joined(numeric_light_fields(), "|");
+}
+
+// The plot's x and y: swept keys or `scenario`, and not the same column.
+void check_plot_axes(const Sweep& s) {
+  const std::vector<std::string> keys = swept_keys(s);
+  const auto check = [&](const char* name, const std::string& column, int line) {
+    if (column.empty() || column == "scenario" || contains(keys, column)) return;
+    const std::string choices =
+        keys.empty() ? std::string("nothing is swept: only scenario") : "swept: " + joined(keys) + "; or scenario";
+    throw InputError(s.path, line, std::string("plot.") + name + ": '" + column + "' is not a swept key (" + choices + ")");
+  };
+  check("x", s.plot.x, s.plot.x_line);
+  check("y", s.plot.y, s.plot.y_line);
+  const std::string x = !s.plot.x.empty() ? s.plot.x : keys.empty() ? std::string("scenario") : keys.front();
+  if (!s.plot.y.empty() && s.plot.y == x)
+    throw InputError(s.path, s.plot.y_line,
+                     "plot.y: '" + x + "' is the x axis too" +
+                         (s.plot.x.empty() ? " (x defaults to the first swept key; give plot.x)" : "") +
+                         ": x and y must differ");
+}
+
 std::string describe_values(const RunSpec& run) {
   std::string out = fs::path(run.scenario).filename().string();
   for (const auto& [key, value] : run.values) out += " " + key + "=" + value;
@@ -157,6 +242,8 @@ Sweep load_sweep(const std::string& path) {
     const YAML::Node grid = top.node("grid");
     s.grid_line = top.line_of("grid");
     if (!grid.IsMap()) top.fail("grid", "expected a mapping of key: [values]");
+    if (grid.size() == 0)
+      top.fail("grid", "the mapping is empty: it sweeps nothing (give key: [values], or leave grid out)");
     for (const auto& entry : grid) {
       const std::string key = entry.first.Scalar();
       check_key(key, entry.first, path, "grid", seen);
@@ -171,9 +258,13 @@ Sweep load_sweep(const std::string& path) {
     else if (zip.IsSequence())
       for (const YAML::Node& g : zip) groups.push_back(g);
     else top.fail("zip", "expected a mapping of key: [values] (or a list of such mappings)");
+    if (groups.empty())
+      top.fail("zip", "the list is empty: it sweeps nothing (give mappings of key: [values], or leave zip out)");
     for (const YAML::Node& group : groups) {
-      if (!group.IsMap() || group.size() == 0)
-        throw InputError(path, yaml_line(group), "zip: expected a mapping of key: [values]");
+      if (!group.IsMap()) throw InputError(path, yaml_line(group), "zip: expected a mapping of key: [values]");
+      if (group.size() == 0)
+        throw InputError(path, yaml_line(group),
+                         "zip: the mapping is empty: it sweeps nothing (give key: [values], or leave it out)");
       std::vector<SweepAxis> axes;
       for (const auto& entry : group) {
         const std::string key = entry.first.Scalar();
@@ -203,13 +294,80 @@ Sweep load_sweep(const std::string& path) {
   if (top.has("out")) s.out = resolve_relative(path, top.text("out"));
   if (top.has("plot")) {
     YamlFields plot(top.node("plot"), path, "plot");
+    s.plot.metric_line = plot.line_of("metric");  // the line of plot: when a key is not given
+    s.plot.x_line = plot.line_of("x");
+    s.plot.y_line = plot.line_of("y");
     s.plot.metric = plot.text_or("metric", "");
     s.plot.x = plot.text_or("x", "");
     s.plot.y = plot.text_or("y", "");
     plot.finish();
+    // Checked here, not by tools/plot after every run finished.
+    if (!s.plot.metric.empty())
+      if (const std::string problem = plot_metric_problem(s.plot.metric); !problem.empty())
+        throw InputError(path, s.plot.metric_line, "plot.metric: " + problem);
+    check_plot_axes(s);
   }
   top.finish();
   return s;
+}
+
+std::string plot_metric_problem(const std::string& metric) {
+  if (contains(numeric_run_columns(), metric)) return "";
+  const std::optional<MetricColumn> column = parse_metric_column(metric);
+  if (!column) return "'" + metric + "' is not a results.csv metric column (" + numeric_columns_text() + ")";
+  const bool light = column->kind == "light";
+  if (!light && !contains(section_kinds(), column->kind))
+    return "'" + column->kind + "' in '" + metric + "' is not a section kind or light (" + joined(section_kinds()) +
+           ", light)";
+  const auto& numeric = light ? numeric_light_fields() : numeric_section_fields();
+  if (contains(numeric, column->field)) return "";
+  const std::string fields = joined(numeric, ", ");
+  if (contains(light ? other_light_fields() : other_section_fields(), column->field))
+    return "'" + metric + "' holds text or true/false, not numbers: a heat map cannot show it (numeric fields of " +
+           column->kind + "<n>: " + fields + ")";
+  return "'" + column->field + "' in '" + metric + "' is not a field of " + column->kind + "<n> (numeric fields: " +
+         fields + ")";
+}
+
+void check_sweep_plot(const Sweep& sweep, const std::vector<RunSpec>& runs) {
+  const std::optional<MetricColumn> column = parse_metric_column(sweep.plot.metric);
+  if (!column) return;  // empty (tools/plot chooses) or a run-level column every run has
+  // Sections and lights per route, from the same code that computes the metrics (an empty record:
+  // the route's sections and lights, no values).
+  std::map<std::string, std::shared_ptr<const sumo::NetIndex>> nets;
+  std::map<std::string, std::map<std::string, int>> counts_by_route;
+  std::map<std::string, int> most;
+  bool planned = false;
+  for (const RunSpec& run : runs) {
+    try {
+      const Scenario scenario = load_scenario(run.scenario, ScenarioOverrides{run.set});
+      std::string key = scenario.net;
+      for (const std::string& edge : scenario.ego.route) key += "\n" + edge;
+      for (const int lane : required_exit_lanes(scenario)) key += "\n" + std::to_string(lane);
+      auto [counts, fresh] = counts_by_route.try_emplace(key);
+      if (fresh) {
+        auto& net = nets[scenario.net];
+        if (!net) net = std::make_shared<const sumo::NetIndex>(sumo::NetIndex::load(scenario.net));
+        const RunMetrics metrics = compute_metrics(scenario, plan_route(scenario, *net).map, RunRecord{});
+        for (const SectionMetrics& section : metrics.sections) ++counts->second[section.section.kind];
+        counts->second["light"] = static_cast<int>(metrics.lights.size());
+        for (const auto& [kind, n] : counts->second) most[kind] = std::max(most[kind], n);
+      }
+      planned = true;
+      const auto it = counts->second.find(column->kind);
+      if (it != counts->second.end() && it->second >= column->number) return;
+    } catch (const std::exception&) {
+      // A route the net cannot drive: the run reports it as its own error.
+    }
+  }
+  if (!planned) return;
+  std::vector<std::string> have;
+  for (const std::string& kind : section_kinds()) have.push_back(std::to_string(most[kind]) + " " + kind);
+  have.push_back(std::to_string(most["light"]) + " light");
+  throw InputError(sweep.path, sweep.plot.metric_line,
+                   "plot.metric: no run's route has a " + column->kind + std::to_string(column->number) +
+                       ", so no run can give '" + sweep.plot.metric + "' (the most any route has: " + joined(have) +
+                       ")");
 }
 
 std::vector<std::string> swept_keys(const Sweep& sweep) {

@@ -39,6 +39,7 @@ struct SweepAxis {
 struct SweepPlot {
   std::string metric;  ///< a results.csv column; empty: the first *.lead_distance column
   std::string x, y;    ///< swept columns; empty: the first two swept keys (or scenario)
+  int metric_line = 0, x_line = 0, y_line = 0;  ///< where each was given (else the line of plot:)
 };
 
 struct Sweep {
@@ -68,9 +69,24 @@ struct RunSpec {
 };
 
 /// Reads and checks a sweep file. Throws InputError naming the file and line: malformed YAML, an
-/// unknown key, a value of the wrong shape, zip lists of different lengths, a key given twice, a
-/// reserved column name as key, a missing scenario path.
+/// unknown key, a value of the wrong shape, an empty grid/zip (or an empty list of values), zip lists
+/// of different lengths, a key given twice, a reserved column name as key, a missing scenario path,
+/// a plot: that cannot be drawn (see plot_metric_problem; x and y must be swept keys or `scenario`,
+/// and differ).
 Sweep load_sweep(const std::string& path);
+
+/// Why `metric` cannot be the plot: metric of a sweep, "" when it can: it must be a results.csv
+/// column that holds numbers - a run metric (max_decel, ...), expectations_passed/_total, wall_time,
+/// a section's `<kind><n>.<lead_distance|lead_time|time_on|flickers>` (kind turn, roundabout_entry,
+/// roundabout_exit; n from 1) or `light<n>.stop_position_error`. Text and true/false columns
+/// (turn1.blinker, light1.red_light_violation) are refused: a heat map of them shows no value.
+std::string plot_metric_problem(const std::string& metric);
+
+/// Checks the plot: metric against the runs before any of them starts: a section or light metric
+/// (`roundabout_exit1.lead_distance`, `light2.stop_position_error`) needs a run whose route has that
+/// section or light (routes built from the nets as the runs build them; no SUMO). Runs whose route
+/// cannot be built are left to fail on their own. Throws InputError at the line of plot.metric.
+void check_sweep_plot(const Sweep& sweep, const std::vector<RunSpec>& runs);
 
 /// Scenario files from paths: a file as given, a directory's *.yaml (sorted by name). Throws
 /// InputError for a missing path or an empty directory (`origin`/`line` name where it was given).

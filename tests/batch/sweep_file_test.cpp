@@ -113,6 +113,26 @@ TEST(SweepFile, ErrorsNameTheFileAndLine) {
   EXPECT_NE(load(s + "grid: [\n").find(at + "3: malformed YAML"), std::string::npos);
 }
 
+TEST(SweepFile, AnEmptyGridOrZipSweepsNothingAndIsRefused) {
+  TempDir dir;
+  const auto load = [&](const std::string& text) {
+    const std::string path = dir.write("bad.yaml", text);
+    return error_of([&] { load_sweep(path); });
+  };
+  const std::string s = scenarios_line();  // line 1
+  const std::string at = dir.path() + "/bad.yaml:";
+  EXPECT_EQ(load(s + "zip: []\n"),
+            at + "2: key 'zip': the list is empty: it sweeps nothing (give mappings of key: [values], or leave zip out)");
+  EXPECT_EQ(load(s + "zip:\n  - {}\n"),
+            at + "3: zip: the mapping is empty: it sweeps nothing (give key: [values], or leave it out)");
+  EXPECT_EQ(load(s + "zip: {}\n"),
+            at + "2: zip: the mapping is empty: it sweeps nothing (give key: [values], or leave it out)");
+  EXPECT_EQ(load(s + "zip:\n  - {seed: [1]}\n  - {ego.max_speed: []}\n"), at + "4: zip.ego.max_speed: the list is empty");
+  EXPECT_EQ(load(s + "grid: {}\n"),
+            at + "2: key 'grid': the mapping is empty: it sweeps nothing (give key: [values], or leave grid out)");
+  EXPECT_EQ(load(s + "grid:\n  country: [jp]\n  seed: []\n"), at + "4: grid.seed: the list is empty");
+}
+
 TEST(SweepFile, RunsAreCheckedAgainstTheScenarioAndPointAtTheValue) {
   TempDir dir;
   const auto check = [&](const std::string& text) {

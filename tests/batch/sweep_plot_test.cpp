@@ -1,0 +1,134 @@
+// A sweep file's plot: is checked before any run: its x and y name swept keys, its metric a numeric
+// results.csv column (the names flatten_metrics gives), which some run's route can produce.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "scenario/input_error.hpp"
+#include "scenario/metrics.hpp"
+#include "scenario/sweep.hpp"
+#include "test_files.hpp"
+
+namespace signalsim {
+namespace {
+
+using test::data_dir;
+using test::TempDir;
+
+template <typename F>
+std::string error_of(F f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+bool is_number(const std::string& text) {
+  try {
+    std::size_t used = 0;
+    (void)std::stod(text, &used);
+    return used == text.size();
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
+TEST(SweepPlot, TheMetricMustBeANumericColumnOfWhatFlattenMetricsWrites) {
+  // One section of each kind and one light with every field set: the columns results.csv can have.
+  RunMetrics m;
+  for (const char* kind : {"turn", "roundabout_entry", "roundabout_exit"}) {
+    SectionMetrics s;
+    s.section.kind = kind;
+    s.section.id = "J";
+    s.section.blinker = Blinker::Left;
+    s.reached = true;
+    s.lead_distance = 12.5;
+    s.lead_time = 1.5;
+    s.time_on = 4.0;
+    s.flickers = 1;
+    s.missed = false;
+    m.sections.push_back(s);
+  }
+  LightMetrics light;
+  light.id = "C";
+  light.reached = true;
+  light.state_at_line = "G";
+  light.red_light_violation = false;
+  light.stop_position_error = 0.02;
+  light.decision = "stop";
+  light.zone = "stoppable";
+  light.emergency_stop = false;
+  m.lights.push_back(light);
+  const auto cells = flatten_metrics(to_json(m));
+  ASSERT_EQ(cells.size(), 7u + 3u * 7u + 7u);
+  for (const auto& [column, text] : cells)  // accepted exactly when the cell holds a number
+    EXPECT_EQ(plot_metric_problem(column).empty(), is_number(text)) << column << " = " << text << ": "
+                                                                    << plot_metric_problem(column);
+  for (const char* column : {"expectations_passed", "expectations_total", "wall_time", "turn12.lead_distance"})
+    EXPECT_EQ(plot_metric_problem(column), "") << column;
+  for (const char* column : {"status", "run", "turn0.lead_distance", "turn01.lead_distance", ".lead_distance",
+                             "lane_change1.lead_distance", "turn1.lead"})
+    EXPECT_NE(plot_metric_problem(column), "") << column;
+  EXPECT_EQ(plot_metric_problem("turn1.blinker"),
+            "'turn1.blinker' holds text or true/false, not numbers: a heat map cannot show it (numeric fields of "
+            "turn<n>: lead_distance, lead_time, time_on, flickers)");
+}
+
+TEST(SweepPlot, BadPlotIsRefusedWhenTheFileIsRead) {
+  TempDir dir;
+  const auto load = [&](const std::string& text) {
+    const std::string path = dir.write("bad.yaml", "scenarios: " + data_dir() + "/turns.yaml\n" + text);
+    return error_of([&] { load_sweep(path); });
+  };
+  const std::string at = dir.path() + "/bad.yaml:";
+  const std::string grid = "grid:\n  country: [jp, de]\n  seed: [1, 2]\n";  // lines 2-4
+  EXPECT_EQ(load(grid + "plot: {metric: turn1.lead_time, x: seed, y: country}\n"), "");
+  EXPECT_EQ(load(grid + "plot: {x: scenario}\n"), "");
+  EXPECT_EQ(load(grid + "plot:\n  metric: turn1.lead_time\n  x: ego.max_speed\n"),
+            at + "7: plot.x: 'ego.max_speed' is not a swept key (swept: country, seed; or scenario)");
+  EXPECT_EQ(load(grid + "plot:\n  y: contry\n"), at + "6: plot.y: 'contry' is not a swept key (swept: country, seed; or scenario)");
+  EXPECT_EQ(load("plot: {x: seed}\n"), at + "2: plot.x: 'seed' is not a swept key (nothing is swept: only scenario)");
+  EXPECT_EQ(load(grid + "plot: {x: seed, y: seed}\n"), at + "5: plot.y: 'seed' is the x axis too: x and y must differ");
+  EXPECT_EQ(load(grid + "plot: {y: country}\n"),
+            at + "5: plot.y: 'country' is the x axis too (x defaults to the first swept key; give plot.x): x and y "
+                 "must differ");
+  EXPECT_EQ(load(grid + "plot:\n  x: seed\n  metric: turn1.missed\n"),
+            at + "7: plot.metric: 'turn1.missed' holds text or true/false, not numbers: a heat map cannot show it "
+                 "(numeric fields of turn<n>: lead_distance, lead_time, time_on, flickers)");
+  EXPECT_EQ(load("plot: {metric: light1.zne}\n"),
+            at + "2: plot.metric: 'zne' in 'light1.zne' is not a field of light<n> (numeric fields: stop_position_error)");
+  EXPECT_EQ(load("plot: {metric: exit1.lead_distance}\n"),
+            at + "2: plot.metric: 'exit' in 'exit1.lead_distance' is not a section kind or light (turn, "
+                 "roundabout_entry, roundabout_exit, light)");
+  EXPECT_EQ(load("plot: {metric: lead_distance}\n").rfind(at + "2: plot.metric: 'lead_distance' is not a results.csv metric column (numeric columns: max_decel, ", 0), 0u);
+}
+
+TEST(SweepPlot, AMetricNoRunsRouteHasIsRefusedBeforeAnyRun) {
+  TempDir dir;
+  const auto check = [&](const std::string& scenarios, const std::string& metric) {
+    const std::string path = dir.write("s.yaml", "scenarios: [" + scenarios + "]\ngrid: {seed: [1, 2]}\nplot:\n  metric: " + metric + "\n");
+    return error_of([&] {
+      const Sweep sweep = load_sweep(path);
+      auto runs = expand_sweep(sweep);
+      check_sweep_runs(sweep, runs);
+      check_sweep_plot(sweep, runs);
+    });
+  };
+  const std::string turns = data_dir() + "/turns.yaml", roundabout = data_dir() + "/roundabout_exit.yaml";
+  const std::string at = dir.path() + "/s.yaml:4: plot.metric: ";
+  // close_turns: a left turn at A and a right turn at B, no roundabout, no light.
+  EXPECT_EQ(check(turns, "turn2.lead_distance"), "");
+  EXPECT_EQ(check(turns, "max_decel"), "");
+  EXPECT_EQ(check(turns, "turn3.lead_distance"),
+            at + "no run's route has a turn3, so no run can give 'turn3.lead_distance' (the most any route has: 2 turn, "
+                 "0 roundabout_entry, 0 roundabout_exit, 0 light)");
+  EXPECT_EQ(check(turns, "roundabout_exit1.lead_distance").rfind(at + "no run's route has a roundabout_exit1", 0), 0u);
+  EXPECT_EQ(check(turns, "light1.stop_position_error").rfind(at + "no run's route has a light1", 0), 0u);
+  // One scenario that has it is enough (tools/plot draws the scenarios that have the metric).
+  EXPECT_EQ(check(turns + ", " + roundabout, "roundabout_exit1.lead_distance"), "");
+}
+
+}  // namespace
+}  // namespace signalsim
