@@ -4,9 +4,21 @@
 
 namespace signalsim {
 
+double LaneChangeExecution::prepare_distance(double speed, double accel, double max_speed, double duration) {
+  const double v0 = std::clamp(speed, 0.0, std::max(max_speed, 0.0));
+  if (duration <= 0.0) return 0.0;
+  if (accel == 0.0) return v0 * duration;
+  // Until the speed reaches its bound (max_speed accelerating, 0 braking), then constant.
+  const double bound = accel > 0.0 ? std::max(max_speed, v0) : 0.0;
+  const double t_bound = std::min(duration, (bound - v0) / accel);
+  const double ramp = v0 * t_bound + 0.5 * accel * t_bound * t_bound;
+  return ramp + bound * (duration - t_bound);
+}
+
 double LaneChangeExecution::candidate_start(const Step& step) const {
-  // The prepare segment: v * prepare_duration on the original lane (spec TSD §8.2).
-  const double prepared = step.s_base + std::max(step.speed, 0.0) * step.prepare_duration;
+  // The prepare segment on the original lane (spec TSD §8.2), driven in prepare_duration.
+  const double prepared =
+      step.s_base + prepare_distance(step.speed, step.accel, step.max_speed, step.prepare_duration);
   const double start = std::min(std::max(timing_.earliest_start, prepared), timing_.latest_start);
   return std::max(start, step.s_base);  // never behind base_link (only past the hold point)
 }

@@ -6,8 +6,10 @@
 //                    approved at the first step where the approval delay has passed since the
 //                    blinker came on (an operator's RTC approval; 0 = automatic) and the target lane
 //                    is clear of other vehicles around the candidate path.
-//   Running          the path is fixed at approval: a prepare segment on the original lane of
-//                    v * prepare_duration, then the lateral motion over `length`.
+//   Running          the path is fixed at approval: a prepare segment on the original lane (the
+//                    distance driven in prepare_duration at the current speed and acceleration,
+//                    Autoware's v*t + a*t^2/2, capped at the maximum speed and at standstill), then
+//                    the lateral motion over `length`.
 //   Done             base_link has passed the end of the lateral motion.
 //
 // prepare_duration is the module's calc_actual_prepare_duration: max(max_prepare_duration -
@@ -58,6 +60,8 @@ class LaneChangeExecution {
     double now = 0.0;           ///< [s]
     double s_base = 0.0;        ///< [m] base_link's route s
     double speed = 0.0;         ///< [m/s]
+    double accel = 0.0;         ///< [m/s^2] the ego's current acceleration (held over the prepare time)
+    double max_speed = 1e9;     ///< [m/s] the speed it accelerates to at most
     bool module_active = false; ///< the lane-change module signals (LaneChangeSignal::active)
     std::optional<double> blinker_on_since;  ///< [s] the module's blinker timestamp
     double prepare_duration = 0.0;           ///< [s] the module's actual prepare duration now
@@ -104,6 +108,10 @@ class LaneChangeExecution {
 
   /// The candidate's start at `step` (see line()).
   double candidate_start(const Step& step) const;
+
+  /// The distance driven in `duration` from `speed` at constant `accel`, the speed kept within
+  /// [0, max_speed] [m].
+  static double prepare_distance(double speed, double accel, double max_speed, double duration);
 
  private:
   ShiftLine line_from(double start) const { return {start, start + timing_.length, timing_.shift_start, 0.0}; }

@@ -76,6 +76,8 @@ BehaviorStage::Result BehaviorStage::step(const Observation& o, const TargetLane
       lc_step.now = o.now;
       lc_step.s_base = ego.s_base;
       lc_step.speed = ego.speed;
+      lc_step.accel = o.accel;
+      lc_step.max_speed = config_.max_speed;
       lc_step.vehicle_length = config_.vehicle_length;
       lc_step.base_link_to_front = params_.base_link_to_front;
       lc_step.prepare_duration = modules_.lane_change.actual_prepare_duration(o.now, ego.speed, params_);
@@ -174,6 +176,36 @@ std::vector<LaneChangeRecord> BehaviorStage::lane_change_records() const {
     }
     out.push_back(std::move(r));
   }
+  return out;
+}
+
+std::vector<ManeuverLine> maneuver_lines(const LateralPlan& plan, const std::vector<LaneChangeRecord>& executed,
+                                         double min_shift) {
+  std::vector<ManeuverLine> out;
+  const auto kind_of = [](LateralKind k) {
+    switch (k) {
+      case LateralKind::LaneChange: return "lane_change";
+      case LateralKind::Avoidance: return "avoidance";
+      case LateralKind::PullOut: return "pull_out";
+      case LateralKind::PullOver: return "pull_over";
+    }
+    return "?";
+  };
+  for (const LateralSegment& seg : plan.segments) {
+    for (ShiftLine line : seg.plan.lines()) {
+      if (seg.kind == LateralKind::LaneChange)
+        for (const LaneChangeRecord& r : executed)
+          if (r.edge == seg.edge && r.start && r.end) {
+            line.s_start = *r.start;
+            line.s_end = *r.end;
+          }
+      if (std::abs(line.relative_shift()) < min_shift) continue;
+      out.push_back({kind_of(seg.kind), seg.edge, line.s_start, line.s_end,
+                     line.relative_shift() > 0 ? Blinker::Left : Blinker::Right});
+    }
+  }
+  std::stable_sort(out.begin(), out.end(),
+                   [](const ManeuverLine& a, const ManeuverLine& b) { return a.s_start < b.s_start; });
   return out;
 }
 

@@ -31,6 +31,7 @@ struct BehaviorStageConfig {
   double path_forward = 300.0;   ///< [m] module path ahead of base_link (forward_path_length)
   double route_length = 0.0;     ///< [m]
   double vehicle_length = 4.5;   ///< [m]
+  double max_speed = 13.89;      ///< [m/s] the ego's (the lane change's prepare segment)
   LaneChangeGaps gaps;           ///< the lane-change approval's target-lane margins
 };
 
@@ -41,6 +42,7 @@ class BehaviorStage {
   struct Observation {
     double now = 0.0;
     EgoOnRoute ego;
+    double accel = 0.0;     ///< [m/s^2] measured
     bool backing = false;   ///< emulated backward driving (pull out): not driving forward
     bool departed = false;  ///< the ego has moved (start planner has_departed)
     const LateralSegment* segment = nullptr;  ///< plan().on_edge(the ego's edge)
@@ -81,6 +83,13 @@ class BehaviorStage {
   BehaviorModules modules_;
   std::vector<LaneChangeExecution> executions_;  ///< one per segment (used by lane changes only)
 };
+
+/// The lateral motions the metrics measure, ordered by start: each lane change's executed line (its
+/// nominal line, from the earliest start, while not approved: `executed` matched by edge), and each
+/// shift line of an avoidance, pull out or pull over moving at least `min_shift` metres sideways
+/// (turn_signal_shift_length_threshold: smaller shifts never ask for a blinker, spec TSD §8.1).
+std::vector<ManeuverLine> maneuver_lines(const LateralPlan& plan, const std::vector<LaneChangeRecord>& executed,
+                                         double min_shift);
 
 /// "pending", "waiting_approval", "running", "done".
 const char* to_string(LaneChangePhase phase);

@@ -279,8 +279,14 @@ RunMetrics compute_metrics(const Scenario& scenario, const RouteMap& route, cons
   const std::vector<Stretch> stretches = stretches_of(rows);
   for (std::size_t i = 0; i < stretches.size(); ++i) m.flickers += is_flicker(rows, stretches, i, scenario.step_length);
 
+  // The route's sections and the maneuvers' lateral motions (front bumper at base_link's start), by start.
+  std::vector<SignalSection> sections = signal_sections(route, scenario.params);
+  for (const ManeuverLine& line : record.maneuver_lines)
+    sections.push_back({line.kind, line.id, line.blinker, line.s_start + record.base_link_to_front, line.s_end, {}});
+  std::stable_sort(sections.begin(), sections.end(),
+                   [](const SignalSection& a, const SignalSection& b) { return a.s_start < b.s_start; });
   double window_from = -std::numeric_limits<double>::infinity();
-  for (const SignalSection& section : signal_sections(route, scenario.params)) {
+  for (const SignalSection& section : sections) {
     const double window_to = section.s_end + record.base_link_to_front;
     m.sections.push_back(measure(section, record, stretches, scenario.step_length, window_from, window_to));
     window_from = window_to;

@@ -11,8 +11,11 @@
 //                                 or left/right when the entry's exit_turn_signal_left/right lists
 //                                 the exit lanelet the route takes (spec TSD §5.2)
 //               roundabout_exit   an exit lanelet; expected blinker turn_signal_roundabout_on_exit
-//               (maneuver sections - lane change, avoidance, pull out/over - will come with the
-//               lateral maneuvers; they fit the same SectionMetrics)
+//               lane_change,      a maneuver's lateral motion (RunRecord::maneuver_lines): from the
+//               avoidance,        front bumper where base_link starts it until base_link ends it; the
+//               pull_out,         expected blinker is the direction of the motion. A lane change's
+//               pull_over         lead_time is its blinker's lead over the lateral motion (the
+//                                 prepare time, spec TSD §8.2). Sorted with the others by start.
 //   for each  the serving stretch of the expected blinker: the one on at the last step before the
 //               front reached s_start, else at the step it reached it, else the first one that began
 //               later while base_link was still in the section (a late blinker)
@@ -54,7 +57,7 @@ namespace signalsim {
 
 /// A stretch of the route that asks for a blinker.
 struct SignalSection {
-  std::string kind;                   ///< "turn", "roundabout_entry", "roundabout_exit"
+  std::string kind;                   ///< "turn", "roundabout_entry", "roundabout_exit", or a maneuver kind
   std::string id;                     ///< junction id (turns, roundabouts), else the first lane id
   Blinker blinker = Blinker::None;    ///< the blinker the section asks for (None: it asks for none)
   double s_start = 0.0;               ///< route s where the section starts [m]

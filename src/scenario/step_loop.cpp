@@ -132,6 +132,7 @@ RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, co
   behavior_config.path_forward = scenario.params.number("forward_path_length");
   behavior_config.route_length = route.length();
   behavior_config.vehicle_length = scenario.ego.length;
+  behavior_config.max_speed = scenario.ego.max_speed;
   behavior_config.gaps = {scenario.params.number("lane_change_safety_rear_gap"),
                           scenario.params.number("lane_change_safety_front_gap")};
   BehaviorStage behavior_stage(
@@ -191,6 +192,7 @@ RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, co
     BehaviorStage::Observation behavior_observation;
     behavior_observation.now = observed.time;
     behavior_observation.ego = ego;
+    behavior_observation.accel = observed.accel;
     behavior_observation.backing = backing;
     behavior_observation.departed = departed;
     behavior_observation.segment = segment;
@@ -314,6 +316,8 @@ RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, co
   }
   record.collisions = session.ego_collisions();
   record.lane_changes = behavior_stage.lane_change_records();
+  record.maneuver_lines = maneuver_lines(behavior_stage.plan(), record.lane_changes,
+                                         scenario.params.number("turn_signal_shift_length_threshold"));
   return record;
 }
 

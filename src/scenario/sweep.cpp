@@ -13,6 +13,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "scenario/behavior_stage.hpp"
 #include "scenario/input_error.hpp"
 #include "scenario/metrics.hpp"
 #include "scenario/route_planning.hpp"
@@ -119,7 +120,8 @@ const std::vector<std::string>& numeric_run_columns() {
   return columns;
 }
 const std::vector<std::string>& section_kinds() {  // SignalSection::kind
-  static const std::vector<std::string> kinds = {"turn", "roundabout_entry", "roundabout_exit"};
+  static const std::vector<std::string> kinds = {"turn",      "roundabout_entry", "roundabout_exit", "lane_change",
+                                                 "avoidance", "pull_out",         "pull_over"};
   return kinds;
 }
 const std::vector<std::string>& numeric_section_fields() {
@@ -348,7 +350,11 @@ void check_sweep_plot(const Sweep& sweep, const std::vector<RunSpec>& runs) {
       if (fresh) {
         auto& net = nets[scenario.net];
         if (!net) net = std::make_shared<const sumo::NetIndex>(sumo::NetIndex::load(scenario.net));
-        const RunMetrics metrics = compute_metrics(scenario, plan_route(scenario, *net).map, RunRecord{});
+        const sumo::RoutePlan plan = plan_route(scenario, *net);
+        RunRecord planned_only;  // the route's sections and the maneuvers' nominal lines, no values
+        planned_only.maneuver_lines = maneuver_lines(plan_lateral(scenario, plan, *net), {},
+                                                     scenario.params.number("turn_signal_shift_length_threshold"));
+        const RunMetrics metrics = compute_metrics(scenario, plan.map, planned_only);
         for (const SectionMetrics& section : metrics.sections) ++counts->second[section.section.kind];
         counts->second["light"] = static_cast<int>(metrics.lights.size());
         for (const auto& [kind, n] : counts->second) most[kind] = std::max(most[kind], n);
@@ -362,7 +368,8 @@ void check_sweep_plot(const Sweep& sweep, const std::vector<RunSpec>& runs) {
   }
   if (!planned) return;
   std::vector<std::string> have;
-  for (const std::string& kind : section_kinds()) have.push_back(std::to_string(most[kind]) + " " + kind);
+  for (const std::string& kind : section_kinds())  // the kinds some route has
+    if (most[kind] > 0) have.push_back(std::to_string(most[kind]) + " " + kind);
   have.push_back(std::to_string(most["light"]) + " light");
   throw InputError(sweep.path, sweep.plot.metric_line,
                    "plot.metric: no run's route has a " + column->kind + std::to_string(column->number) +

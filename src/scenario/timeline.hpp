@@ -72,6 +72,15 @@ struct LaneChangeRecord {
   double shift = 0.0;                      ///< [m] lateral, left positive
 };
 
+/// One lateral motion of a maneuver the metrics measure like a turn (metrics.hpp).
+struct ManeuverLine {
+  std::string kind;                 ///< "lane_change", "avoidance", "pull_out", "pull_over"
+  std::string id;                   ///< the edge it is driven on
+  double s_start = 0.0;             ///< [m] base_link s where the lateral motion starts
+  double s_end = 0.0;               ///< [m] where it ends
+  Blinker blinker = Blinker::None;  ///< the direction of the motion (left: moving left)
+};
+
 struct TimelineEvent {
   double time = 0.0;
   double s_front = 0.0;
@@ -92,6 +101,7 @@ struct RunRecord {
   std::vector<LightStop> stops;
   std::vector<RedLightViolation> red_violations;
   std::vector<LaneChangeRecord> lane_changes;
+  std::vector<ManeuverLine> maneuver_lines;  ///< route order (behavior_stage maneuver_lines)
   bool arrived = false;          ///< the ego reached the end of its route
   int off_route_steps = 0;       ///< steps on a lane not on the planned route (route position held)
   int collisions = 0;

@@ -80,7 +80,7 @@ printf 'scenarios: [%s]\ngrid:\n  country: [jp, de]\nplot: {metric: turn1.lead_d
 refused plot_x "4: plot.x: 'ego.max_speed' is not a swept key (swept: country; or scenario)"
 printf 'scenarios: [%s]\ngrid:\n  country: [jp, de]\nplot:\n  metric: roundabout_exit1.lead_distance\n' \
   "$data/turns.yaml" > "$work/plot_metric.yaml"
-refused plot_metric "5: plot.metric: no run's route has a roundabout_exit1, so no run can give 'roundabout_exit1.lead_distance' (the most any route has: 2 turn, 0 roundabout_entry, 0 roundabout_exit, 0 light)"
+refused plot_metric "5: plot.metric: no run's route has a roundabout_exit1, so no run can give 'roundabout_exit1.lead_distance' (the most any route has: 2 turn, 0 light)"
 printf 'scenarios: [%s]\nzip: []\n' "$data/turns.yaml" > "$work/zip.yaml"
 refused zip "2: key 'zip': the list is empty: it sweeps nothing (give mappings of key: [values], or leave zip out)"
 printf 'scenarios: [%s]\ngrid: {}\n' "$data/turns.yaml" > "$work/grid.yaml"

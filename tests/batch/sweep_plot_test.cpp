@@ -66,10 +66,12 @@ TEST(SweepPlot, TheMetricMustBeANumericColumnOfWhatFlattenMetricsWrites) {
   for (const auto& [column, text] : cells)  // accepted exactly when the cell holds a number
     EXPECT_EQ(plot_metric_problem(column).empty(), is_number(text)) << column << " = " << text << ": "
                                                                     << plot_metric_problem(column);
-  for (const char* column : {"expectations_passed", "expectations_total", "wall_time", "turn12.lead_distance"})
+  for (const char* column : {"expectations_passed", "expectations_total", "wall_time", "turn12.lead_distance",
+                             "lane_change1.lead_time", "avoidance2.lead_distance", "pull_out1.time_on",
+                             "pull_over1.flickers"})
     EXPECT_EQ(plot_metric_problem(column), "") << column;
   for (const char* column : {"status", "run", "turn0.lead_distance", "turn01.lead_distance", ".lead_distance",
-                             "lane_change1.lead_distance", "turn1.lead"})
+                             "lane_change1.prepare", "turn1.lead"})
     EXPECT_NE(plot_metric_problem(column), "") << column;
   EXPECT_EQ(plot_metric_problem("turn1.blinker"),
             "'turn1.blinker' holds text or true/false, not numbers: a heat map cannot show it (numeric fields of "
@@ -101,7 +103,7 @@ TEST(SweepPlot, BadPlotIsRefusedWhenTheFileIsRead) {
             at + "2: plot.metric: 'zne' in 'light1.zne' is not a field of light<n> (numeric fields: stop_position_error)");
   EXPECT_EQ(load("plot: {metric: exit1.lead_distance}\n"),
             at + "2: plot.metric: 'exit' in 'exit1.lead_distance' is not a section kind or light (turn, "
-                 "roundabout_entry, roundabout_exit, light)");
+                 "roundabout_entry, roundabout_exit, lane_change, avoidance, pull_out, pull_over, light)");
   EXPECT_EQ(load("plot: {metric: lead_distance}\n").rfind(at + "2: plot.metric: 'lead_distance' is not a results.csv metric column (numeric columns: max_decel, ", 0), 0u);
 }
 
@@ -123,7 +125,7 @@ TEST(SweepPlot, AMetricNoRunsRouteHasIsRefusedBeforeAnyRun) {
   EXPECT_EQ(check(turns, "max_decel"), "");
   EXPECT_EQ(check(turns, "turn3.lead_distance"),
             at + "no run's route has a turn3, so no run can give 'turn3.lead_distance' (the most any route has: 2 turn, "
-                 "0 roundabout_entry, 0 roundabout_exit, 0 light)");
+                 "0 light)");
   EXPECT_EQ(check(turns, "roundabout_exit1.lead_distance").rfind(at + "no run's route has a roundabout_exit1", 0), 0u);
   EXPECT_EQ(check(turns, "light1.stop_position_error").rfind(at + "no run's route has a light1", 0), 0u);
   // One scenario that has it is enough (tools/plot draws the scenarios that have the metric).

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "scenario/input_error.hpp"
+#include "scenario/metrics.hpp"
 #include "scenario/route_planning.hpp"
 #include "scenario/scenario.hpp"
 #include "scenario/step_loop.hpp"
@@ -81,8 +82,8 @@ ShiftLine executed_line(const ManeuverRun& r, std::size_t k = 0) {
 }
 
 // spec TSD §8.2 prepare segment: approved at `approval_time` with the module's blinker on since
-// `blinker_on_time`, the lateral motion starts v * max(4 s - blinker-on time, 2 s) after base_link's
-// approval position (never before the maneuver's earliest start, never after its latest start), and
+// `blinker_on_time`, the lateral motion starts max(4 s - blinker-on time, 2 s) of driving after
+// base_link's approval position (never before the maneuver's earliest start, never after its latest start), and
 // the planned offset holds the original lane until then.
 void expect_prepare_rule(const ManeuverRun& r, std::size_t k = 0) {
   const LaneChangeRecord& lc = r.record.lane_changes.at(k);
@@ -99,7 +100,10 @@ void expect_prepare_rule(const ManeuverRun& r, std::size_t k = 0) {
   const double floor = at_approval->speed < 2.78 ? std::max(2.78 - at_approval->speed, 2.0) : 2.0;
   EXPECT_NEAR(*lc.prepare_duration, std::max(4.0 - on_time, floor), 1e-9);
   EXPECT_NEAR(*lc.approval_s_base, s_base(r, *at_approval), 1e-9);
-  const double prepared = *lc.approval_s_base + at_approval->speed * *lc.prepare_duration;
+  // Driven in the prepare time at the speed and acceleration of the approval step (unit-tested).
+  const double prepared = *lc.approval_s_base + LaneChangeExecution::prepare_distance(
+                                                    at_approval->speed, at_approval->accel,
+                                                    r.scenario.ego.max_speed, *lc.prepare_duration);
   const double expected = std::min(std::max(seg->lane_change.earliest_start, prepared), seg->lane_change.latest_start);
   EXPECT_NEAR(*lc.start, expected, 1e-9);
   EXPECT_NEAR(*lc.end - *lc.start, seg->lane_change.length, 1e-9);
@@ -166,7 +170,7 @@ TEST(ManeuverScenario, LaneChangeThenLeftTurnTheLeftTurnWaitsForTheLaneChangeEnd
   expect_tracks_plan(r, -kLaneWidth);  // departs on in_S_0, the left turn needs in_S_1
   const std::size_t after = expect_lane_change_stretch(r, Blinker::Left);
   // The intersection's own request would have started earlier: 3 v + 30 before the turn lane at
-  // 189.60 (s_front ~118, see intersection_left.yaml); the lane-change path ends at base_link ~127.
+  // 189.60 (s_front ~118, see intersection_left.yaml); the lane-change path ends at base_link ~135.
   const long turn = first_step(r, Blinker::Left, RequestSource::Intersection);
   ASSERT_GE(turn, 0);
   EXPECT_EQ(static_cast<std::size_t>(turn), after) << "the left turn takes over right after the lane change";
@@ -351,6 +355,38 @@ TEST(ManeuverScenario, TwoLaneChangesEachSignalAfresh) {
   EXPECT_EQ(last_lane_on(r, "out_N"), "out_N_1");
   EXPECT_EQ(r.record.off_route_steps, 0);
   EXPECT_EQ(r.record.collisions, 0);
+}
+
+// The metrics measure each lateral motion like a turn: the blinker's lead over it is the prepare
+// time (4 s when approved at once, and still 4 s when approved 1.5 s late; the wait plus 2 s after a
+// long wait).
+TEST(ManeuverScenario, LaneChangeMetricsLeadTimeIsThePrepareTime) {
+  const auto lane_change_section = [](const ManeuverRun& r, std::size_t n) {
+    const sumo::NetIndex net = sumo::NetIndex::load(r.scenario.net);
+    const RunMetrics m = compute_metrics(r.scenario, plan_route(r.scenario, net).map, r.record);
+    std::vector<SectionMetrics> found;
+    for (const SectionMetrics& s : m.sections)
+      if (s.section.kind == "lane_change") found.push_back(s);
+    EXPECT_EQ(found.size(), n);
+    return found;
+  };
+  const double step = 0.1;
+  const ManeuverRun at_once = run("lane_change_right");
+  const auto a = lane_change_section(at_once, 1);
+  EXPECT_EQ(a.at(0).section.blinker, Blinker::Right);
+  EXPECT_FALSE(*a.at(0).missed);
+  EXPECT_NEAR(*a.at(0).lead_time, 4.0, step);
+  const ManeuverRun late = run("lane_change_approval_delay");
+  EXPECT_NEAR(*lane_change_section(late, 1).at(0).lead_time, 4.0, step);
+  const ManeuverRun gap = run("lane_change_waits_for_gap");
+  const LaneChangeRecord& lc = gap.record.lane_changes.at(0);
+  // (It was braking for the hold point at approval and accelerates again: the 2 s segment planned
+  // with the braking is driven a little faster.)
+  EXPECT_NEAR(*lane_change_section(gap, 1).at(0).lead_time, *lc.approval_time - *lc.blinker_on_time + 2.0, 0.5);
+  const auto two = lane_change_section(run("two_lane_changes"), 2);
+  EXPECT_EQ(two.at(0).section.blinker, Blinker::Right);
+  EXPECT_EQ(two.at(1).section.blinker, Blinker::Left);
+  EXPECT_NEAR(*two.at(1).lead_time, 4.0, step);
 }
 
 TEST(ManeuverScenario, TwoLaneChangesOnTheFirstEdgeAreRejected) {

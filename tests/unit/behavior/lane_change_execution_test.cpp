@@ -148,5 +148,25 @@ TEST(LaneChangeExecution, TheFixedLineDoesNotMoveAfterApproval) {
   EXPECT_DOUBLE_EQ(fixed.s_start, 140.0);
 }
 
+TEST(LaneChangeExecution, PrepareDistanceFollowsSpeedAndAcceleration) {
+  EXPECT_DOUBLE_EQ(LaneChangeExecution::prepare_distance(10.0, 0.0, 20.0, 4.0), 40.0);
+  EXPECT_DOUBLE_EQ(LaneChangeExecution::prepare_distance(10.0, 1.0, 20.0, 4.0), 48.0);  // v t + a t^2 / 2
+  // Capped at the maximum speed: 2 s to reach 12, then 12 m/s.
+  EXPECT_DOUBLE_EQ(LaneChangeExecution::prepare_distance(10.0, 1.0, 12.0, 4.0), 22.0 + 24.0);
+  // Braking to rest within the duration: v^2 / 2|a|.
+  EXPECT_DOUBLE_EQ(LaneChangeExecution::prepare_distance(4.0, -2.0, 20.0, 4.0), 4.0);
+  EXPECT_DOUBLE_EQ(LaneChangeExecution::prepare_distance(0.0, 1.0, 20.0, 2.0), 2.0);
+  EXPECT_DOUBLE_EQ(LaneChangeExecution::prepare_distance(5.0, 1.0, 20.0, 0.0), 0.0);
+}
+
+TEST(LaneChangeExecution, AcceleratingEgoPreparesFurther) {
+  LaneChangeExecution lc(timing(), {});
+  auto s = step_at(5.0, 70.0, 10.0, 5.0, 4.0);
+  s.accel = 1.0;
+  s.max_speed = 30.0;
+  lc.update(s);
+  EXPECT_DOUBLE_EQ(lc.approved_line()->s_start, 70.0 + 48.0);
+}
+
 }  // namespace
 }  // namespace signalsim
