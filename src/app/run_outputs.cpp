@@ -7,6 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "scenario/behavior_stage.hpp"
 #include "scenario/metrics.hpp"
 #include "scenario/route_planning.hpp"
 #include "scenario/sweep.hpp"
@@ -140,15 +141,20 @@ std::vector<TimelineRow> read_timeline_csv(const std::string& path) {
 nlohmann::ordered_json metrics_from_run_dir(const std::string& run_dir, const std::string& scenario_file,
                                             const std::vector<std::string>& set) {
   // Routes are rebuilt once per (net, edges): a sweep runs the same route many times.
-  static std::map<std::string, std::shared_ptr<const RouteMap>> routes;
+  struct Route {
+    std::shared_ptr<const sumo::NetIndex> net;
+    sumo::RoutePlan plan;
+  };
+  static std::map<std::string, std::shared_ptr<const Route>> routes;
   const Scenario scenario = load_scenario(scenario_file, ScenarioOverrides{set});
   std::string key = scenario.net;
   for (const std::string& edge : scenario.ego.route) key += "\n" + edge;
   for (int lane : required_exit_lanes(scenario)) key += "\n" + std::to_string(lane);
   auto& route = routes[key];
   if (!route) {
-    const sumo::NetIndex net = sumo::NetIndex::load(scenario.net);
-    route = std::make_shared<const RouteMap>(sumo::build_route(net, scenario.ego.route, required_exit_lanes(scenario)).map);
+    auto net = std::make_shared<const sumo::NetIndex>(sumo::NetIndex::load(scenario.net));
+    sumo::RoutePlan plan = sumo::build_route(*net, scenario.ego.route, required_exit_lanes(scenario));
+    route = std::make_shared<const Route>(Route{std::move(net), std::move(plan)});
   }
   const fs::path dir(run_dir);
   RunRecord record;
@@ -178,7 +184,18 @@ nlohmann::ordered_json metrics_from_run_dir(const std::string& run_dir, const st
       for (const auto& v : lights["red_light_violations"])
         record.red_violations.push_back({v.value("light", ""), v.value("time", 0.0), v.value("s_front", 0.0)});
   }
-  return metrics_json(scenario, *route, record);
+  // The maneuvers' lateral motions: the plan's lines, each lane change's as summary.json recorded it.
+  if (summary.contains("lane_changes") && summary["lane_changes"].is_array())
+    for (const auto& lc : summary["lane_changes"]) {
+      LaneChangeRecord r;
+      r.edge = lc.value("edge", "");
+      if (lc.contains("lateral_start_s") && lc["lateral_start_s"].is_number()) r.start = lc["lateral_start_s"].get<double>();
+      if (lc.contains("lateral_end_s") && lc["lateral_end_s"].is_number()) r.end = lc["lateral_end_s"].get<double>();
+      record.lane_changes.push_back(std::move(r));
+    }
+  record.maneuver_lines = maneuver_lines(plan_lateral(scenario, route->plan, *route->net), record.lane_changes,
+                                         scenario.params.number("turn_signal_shift_length_threshold"));
+  return metrics_json(scenario, route->plan.map, record);
 }
 
 }  // namespace signalsim::app

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <map>
 #include <tuple>
@@ -265,11 +267,19 @@ std::vector<SignalSection> signal_sections(const RouteMap& route, const Paramete
 RunMetrics compute_metrics(const Scenario& scenario, const RouteMap& route, const RunRecord& record) {
   RunMetrics m;
   const auto& rows = record.rows;
+  // The acceleration as timeline.csv has it (%.3f), so that metrics recomputed from the files
+  // (batch's fallback) are the run's own: the jerk divides its rounding by the step.
+  const auto written = [](double v) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.3f", v);
+    return std::strtod(buf, nullptr);
+  };
   double min_accel = 0.0, max_jerk = 0.0;
   for (std::size_t i = 0; i < rows.size(); ++i) {
-    min_accel = std::min(min_accel, rows[i].accel);
+    min_accel = std::min(min_accel, written(rows[i].accel));
     if (i > 0 && rows[i].time > rows[i - 1].time)
-      max_jerk = std::max(max_jerk, std::abs(rows[i].accel - rows[i - 1].accel) / (rows[i].time - rows[i - 1].time));
+      max_jerk = std::max(max_jerk, std::abs(written(rows[i].accel) - written(rows[i - 1].accel)) /
+                                        (rows[i].time - rows[i - 1].time));
   }
   m.max_decel = round3(-min_accel);
   m.max_jerk = round3(max_jerk);
