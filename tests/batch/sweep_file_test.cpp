@@ -9,22 +9,13 @@ namespace signalsim {
 namespace {
 
 using test::data_dir;
+using test::error_of;
 using test::TempDir;
 
 std::string scenarios_line() {
   return "scenarios: [" + data_dir() + "/turns.yaml, " + data_dir() + "/roundabout_exit.yaml]\n";
 }
 
-// The message of the InputError `f` throws ("" when it throws none).
-template <typename F>
-std::string error_of(F f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
 
 TEST(SweepFile, GridIsACartesianProductFirstKeySlowestScenariosOutermost) {
   TempDir dir;

@@ -13,17 +13,9 @@ namespace signalsim {
 namespace {
 
 using test::data_dir;
+using test::error_of;
 using test::TempDir;
 
-template <typename F>
-std::string error_of(F f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
 
 bool is_number(const std::string& text) {
   try {

@@ -1,4 +1,4 @@
-// Helpers for the batch unit tests: temporary files and the test data folder.
+// Helpers for the batch unit tests: temporary files, the test data folder, input-error messages.
 #pragma once
 
 #include <filesystem>
@@ -6,7 +6,20 @@
 #include <string>
 #include <unistd.h>
 
+#include "scenario/input_error.hpp"
+
 namespace signalsim::test {
+
+/// The message of the InputError `f` throws ("" when it throws none).
+template <typename F>
+std::string error_of(F f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
 
 inline std::string data_dir() { return std::string(SIGNALSIM_SOURCE_DIR) + "/tests/batch/data"; }
 
