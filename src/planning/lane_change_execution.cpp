@@ -37,13 +37,18 @@ bool LaneChangeExecution::target_lane_clear(const Step& step) const {
 }
 
 std::optional<double> LaneChangeExecution::distance_to_hold_point(double s_base) const {
-  if (phase_ == LaneChangePhase::Running || phase_ == LaneChangePhase::Done) return std::nullopt;
-  return timing_.latest_start - s_base;
+  if (phase_ != LaneChangePhase::WaitingApproval) return std::nullopt;
+  return timing_.latest_start - timing_.hold_margin - s_base;
 }
 
 bool LaneChangeExecution::update(const Step& step) {
   const LaneChangePhase before = phase_;
+  if (step.blinker_on_since) blinker_on_since_ = step.blinker_on_since;
   if (phase_ == LaneChangePhase::Pending && step.module_active) phase_ = LaneChangePhase::WaitingApproval;
+  // Past the last start without approval: the lateral motion could not end on its edge any more.
+  if ((phase_ == LaneChangePhase::Pending || phase_ == LaneChangePhase::WaitingApproval) &&
+      step.s_base > timing_.latest_start + kLatestStartTolerance)
+    phase_ = LaneChangePhase::Missed;
   if (phase_ == LaneChangePhase::WaitingApproval) {
     const double blinker_on = step.blinker_on_since ? step.now - *step.blinker_on_since : 0.0;
     if (blinker_on >= timing_.approval_delay - 1e-9 && target_lane_clear(step)) {

@@ -11,6 +11,8 @@
 //                    Autoware's v*t + a*t^2/2, capped at the maximum speed and at standstill), then
 //                    the lateral motion over `length`.
 //   Done             base_link has passed the end of the lateral motion.
+//   Missed           not approved before base_link passed the last possible start: the lane change
+//                    can no longer end on its edge and is given up (never executed half).
 //
 // prepare_duration is the module's calc_actual_prepare_duration: max(max_prepare_duration -
 // blinker-on time, min_prepare_duration) (spec TSD §8.2), so a blinker that has been on for a while
@@ -19,8 +21,9 @@
 //
 // signalsim bounds (the scenario's, not Autoware's): the lateral motion never starts before
 // `earliest_start` and never after `latest_start` (the last start that still ends with the front on
-// the edge; a later approval cuts the prepare segment short). While not yet running, the ego is
-// stopped at `latest_start` (Autoware stops before the end of the lane when it cannot change lanes).
+// the edge; a later approval cuts the prepare segment short). While waiting for approval the ego is
+// brought to rest at the hold point, `hold_margin` before `latest_start` (room for the prepare
+// segment from rest), as Autoware stops before the end of the lane when it cannot change lanes.
 #pragma once
 
 #include <optional>
@@ -37,6 +40,7 @@ struct LaneChangeTiming {
   double length = 50.0;         ///< [m] of s over which the ego moves one lane sideways
   double shift_start = 0.0;     ///< [m] lateral offset of the original lane from the target lane's centre
   double approval_delay = 0.0;  ///< [s] the earliest approval after the blinker came on
+  double hold_margin = 0.0;     ///< [m] the hold point lies this far before latest_start
 };
 
 /// Where another vehicle occupies the target lane, in route s [m] (rear, front).
@@ -51,7 +55,7 @@ struct LaneChangeGaps {
   double front = 10.0;  ///< [m] kept free beyond the candidate path's end (front bumper there)
 };
 
-enum class LaneChangePhase { Pending, WaitingApproval, Running, Done };
+enum class LaneChangePhase { Pending, WaitingApproval, Running, Done, Missed };
 
 /// The phase machine of one lane change (see the file comment). A value type; no SUMO.
 class LaneChangeExecution {
@@ -60,7 +64,7 @@ class LaneChangeExecution {
     double now = 0.0;           ///< [s]
     double s_base = 0.0;        ///< [m] base_link's route s
     double speed = 0.0;         ///< [m/s]
-    double accel = 0.0;         ///< [m/s^2] the ego's current acceleration (held over the prepare time)
+    double accel = 0.0;         ///< [m/s^2] the acceleration the prepare segment is driven with
     double max_speed = 1e9;     ///< [m/s] the speed it accelerates to at most
     bool module_active = false; ///< the lane-change module signals (LaneChangeSignal::active)
     std::optional<double> blinker_on_since;  ///< [s] the module's blinker timestamp
@@ -98,9 +102,17 @@ class LaneChangeExecution {
     return approval_ ? std::optional<double>(approval_->time) : std::nullopt;
   }
 
-  /// Before approval the ego must be at rest with base_link at latest_start at the latest: the
-  /// distance left to it [m]; nullopt once running.
+  /// While waiting for approval the ego must come to rest with base_link at the hold point
+  /// (latest_start - hold_margin) at the latest: the distance left to it [m]; nullopt in every
+  /// other phase (pending: the module does not signal yet and may be approved at once).
   std::optional<double> distance_to_hold_point(double s_base) const;
+
+  /// The module's blinker timestamp as last seen (kept when never approved).
+  std::optional<double> blinker_on_since() const { return blinker_on_since_; }
+
+  /// base_link may pass latest_start by this much (stopping tolerance) before the lane change counts
+  /// as missed [m].
+  static constexpr double kLatestStartTolerance = 0.05;
 
   /// Is the target lane clear for the candidate line at `step`: no span overlaps
   /// [rear bumper - gaps.rear, candidate end + base_link_to_front + gaps.front].
@@ -121,6 +133,7 @@ class LaneChangeExecution {
   LaneChangePhase phase_ = LaneChangePhase::Pending;
   std::optional<ShiftLine> approved_;
   std::optional<Approval> approval_;
+  std::optional<double> blinker_on_since_;
 };
 
 }  // namespace signalsim

@@ -16,6 +16,7 @@ const char* to_string(LaneChangePhase phase) {
     case LaneChangePhase::WaitingApproval: return "waiting_approval";
     case LaneChangePhase::Running: return "running";
     case LaneChangePhase::Done: return "done";
+    case LaneChangePhase::Missed: return "missed";
   }
   return "?";
 }
@@ -69,14 +70,20 @@ BehaviorStage::Result BehaviorStage::step(const Observation& o, const TargetLane
 
   for (std::size_t i = 0; i < plan_.segments.size(); ++i) {
     const LateralSegment& seg = plan_.segments[i];
-    if (seg.kind == LateralKind::LaneChange && !current_lc && executions_[i].phase() != LaneChangePhase::Done &&
+    const bool finished = executions_[i].phase() == LaneChangePhase::Done || executions_[i].phase() == LaneChangePhase::Missed;
+    if (seg.kind == LateralKind::LaneChange && !current_lc && !finished &&
         seg.lane_change.earliest_start <= ego.s_base + config_.path_forward) {
       current_lc = &executions_[i];
       current_lc_segment = &seg;
       lc_step.now = o.now;
       lc_step.s_base = ego.s_base;
       lc_step.speed = ego.speed;
-      lc_step.accel = o.accel;
+      // The prepare segment is driven without braking (the ego does not brake for the lane change
+      // once approved; braking for the hold point ends with the approval), and below
+      // min_lane_changing_velocity at max_longitudinal_acc (the floor of the prepare time is the time
+      // to reach that speed, spec TSD §8.2).
+      lc_step.accel = ego.speed < params_.min_lane_changing_velocity ? params_.max_longitudinal_acc
+                                                                    : std::max(o.accel, 0.0);
       lc_step.max_speed = config_.max_speed;
       lc_step.vehicle_length = config_.vehicle_length;
       lc_step.base_link_to_front = params_.base_link_to_front;
@@ -144,10 +151,15 @@ BehaviorStage::Result BehaviorStage::step(const Observation& o, const TargetLane
     const LaneChangePhase before = current_lc->phase();
     if (current_lc->update(lc_step)) {
       // One transition per phase passed (pending -> waiting_approval -> running may be one step).
-      for (int p = static_cast<int>(before); p < static_cast<int>(current_lc->phase()); ++p)
-        result.transitions.push_back(
-            {current_lc_segment->edge, static_cast<LaneChangePhase>(p), static_cast<LaneChangePhase>(p + 1)});
-      if (current_lc->phase() == LaneChangePhase::Done) modules_.lane_change.reset();  // the next one starts afresh
+      LaneChangePhase from = before;
+      const LaneChangePhase to = current_lc->phase();
+      if (from == LaneChangePhase::Pending && to != LaneChangePhase::WaitingApproval) {
+        result.transitions.push_back({current_lc_segment->edge, from, LaneChangePhase::WaitingApproval});
+        from = LaneChangePhase::WaitingApproval;
+      }
+      result.transitions.push_back({current_lc_segment->edge, from, to});
+      // Done or given up: the next lane change starts afresh.
+      if (to == LaneChangePhase::Done || to == LaneChangePhase::Missed) modules_.lane_change.reset();
     }
     result.hold_distance = current_lc->distance_to_hold_point(ego.s_base);
   }
@@ -164,6 +176,7 @@ std::vector<LaneChangeRecord> BehaviorStage::lane_change_records() const {
     r.edge = seg.edge;
     r.phase = to_string(lc.phase());
     r.shift = -seg.lane_change.shift_start;
+    r.blinker_on_time = lc.blinker_on_since();
     if (const auto& a = lc.approval()) {
       r.blinker_on_time = a->blinker_on_since;
       r.approval_time = a->time;
@@ -193,12 +206,16 @@ std::vector<ManeuverLine> maneuver_lines(const LateralPlan& plan, const std::vec
   };
   for (const LateralSegment& seg : plan.segments) {
     for (ShiftLine line : seg.plan.lines()) {
-      if (seg.kind == LateralKind::LaneChange)
+      if (seg.kind == LateralKind::LaneChange) {
+        const LaneChangeRecord* record = nullptr;
         for (const LaneChangeRecord& r : executed)
-          if (r.edge == seg.edge && r.start && r.end) {
-            line.s_start = *r.start;
-            line.s_end = *r.end;
-          }
+          if (r.edge == seg.edge) record = &r;
+        if (record && !(record->start && record->end)) continue;  // never approved: nothing executed
+        if (record) {
+          line.s_start = *record->start;
+          line.s_end = *record->end;
+        }
+      }
       if (std::abs(line.relative_shift()) < min_shift) continue;
       out.push_back({kind_of(seg.kind), seg.edge, line.s_start, line.s_end,
                      line.relative_shift() > 0 ? Blinker::Left : Blinker::Right});

@@ -84,14 +84,15 @@ class BehaviorStage {
   std::vector<LaneChangeExecution> executions_;  ///< one per segment (used by lane changes only)
 };
 
-/// The lateral motions the metrics measure, ordered by start: each lane change's executed line (its
-/// nominal line, from the earliest start, while not approved: `executed` matched by edge), and each
+/// The lateral motions the metrics measure, ordered by start: each lane change's executed line
+/// (`executed` matched by edge; none for a lane change recorded without one, i.e. never approved; the
+/// nominal line from the earliest start for a lane change `executed` does not list), and each
 /// shift line of an avoidance, pull out or pull over moving at least `min_shift` metres sideways
 /// (turn_signal_shift_length_threshold: smaller shifts never ask for a blinker, spec TSD §8.1).
 std::vector<ManeuverLine> maneuver_lines(const LateralPlan& plan, const std::vector<LaneChangeRecord>& executed,
                                          double min_shift);
 
-/// "pending", "waiting_approval", "running", "done".
+/// "pending", "waiting_approval", "running", "done", "missed".
 const char* to_string(LaneChangePhase phase);
 
 }  // namespace signalsim

@@ -193,6 +193,14 @@ std::vector<ExpectationResult> evaluate_expectations(const Scenario& scenario, c
     r.description = describe(expectation);
     results.push_back(std::move(r));
   }
+  // Built in: a lane change the scenario needs but the ego gave up is a failure, asked for or not.
+  for (const LaneChangeRecord& lc : record.lane_changes)
+    if (lc.phase == "missed") {
+      std::ostringstream detail;
+      detail << "missed: not approved before base_link passed its last start";
+      if (lc.blinker_on_time) detail << " (blinker on since t=" << *lc.blinker_on_time << " s)";
+      results.push_back({"lane_change on " + lc.edge + " executed", false, detail.str()});
+    }
   return results;
 }
 

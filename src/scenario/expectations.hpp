@@ -13,7 +13,8 @@ namespace signalsim {
 /// that is not on the route. Call before running, so bad input never costs a simulation.
 void check_expectations_apply(const Scenario& scenario, const RouteMap& route);
 
-/// One result per expectation, in file order.
+/// One result per expectation, in file order, then one failed result per lane change the run
+/// missed (LaneChangeRecord phase "missed").
 std::vector<ExpectationResult> evaluate_expectations(const Scenario& scenario, const RouteMap& route,
                                                      const RunRecord& record);
 

@@ -118,6 +118,14 @@ std::vector<LateralSegment> plan_lane_changes(const Scenario& scenario, const su
     seg.lane_change.length = m.length;
     seg.lane_change.shift_start = offset;
     seg.lane_change.approval_delay = m.approval_delay;
+    // Hold point margin: the prepare segment from rest, driven at max_longitudinal_acc for the
+    // prepare time at standstill (the time to reach min_lane_changing_velocity, spec TSD §8.2).
+    const double acc = scenario.params.number("max_longitudinal_acc");
+    const double rest_prepare = acc < 1e-3 ? 0.0
+                                           : std::max(scenario.params.number("min_lane_changing_velocity") / acc,
+                                                      scenario.params.number("min_prepare_duration"));
+    seg.lane_change.hold_margin =
+        LaneChangeExecution::prepare_distance(0.0, acc, scenario.ego.max_speed, rest_prepare);
     out.push_back(std::move(seg));
   }
   return out;

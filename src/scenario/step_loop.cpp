@@ -226,7 +226,9 @@ RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, co
         speed = std::min(speed, stop.commanded_velocity);
         level = stop.level;
       }
-      if (to_go < kSettleDistance) speed = 0.0;  // within 2 cm: come to rest (coarse steps never settle)
+      // Within 2 cm: come to rest (coarse steps never settle), if the emergency deceleration can shed
+      // the speed in this step; past the point faster than that, the planner's braking stands.
+      if (to_go < kSettleDistance && observed.speed <= scenario.ego.emergency_decel * dt) speed = 0.0;
       return level;
     };
     std::optional<StopLevel> stop_level;
@@ -236,13 +238,14 @@ RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, co
     // A lane change not yet approved: base_link comes to rest before its last possible start. The
     // hold constrains the speed from the step where a normal stop must begin (as if not braking
     // yet: slowing for a curve ahead does not start it), then until approval.
+    std::optional<StopLevel> hold_level;
     if (!behavior_step.hold_distance) {
       hold_braking = false;
     } else {
       if (!hold_braking) hold_braking = plan_stop({observed.speed, 0.0, *behavior_step.hold_distance, dt}, stop_params).braking;
-      if (hold_braking) limit_for_stop(*behavior_step.hold_distance);
+      if (hold_braking) hold_level = limit_for_stop(*behavior_step.hold_distance);
     }
-    session.set_emergency_braking(stop_level == StopLevel::Emergency);
+    session.set_emergency_braking(stop_level == StopLevel::Emergency || hold_level == StopLevel::Emergency);
 
     // apply, step.
     if (backing) speed = 0.0;

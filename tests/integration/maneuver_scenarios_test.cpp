@@ -11,8 +11,10 @@
 #include <string>
 #include <vector>
 
+#include "scenario/expectations.hpp"
 #include "scenario/input_error.hpp"
 #include "scenario/metrics.hpp"
+#include "scenario/outputs.hpp"
 #include "scenario/route_planning.hpp"
 #include "scenario/scenario.hpp"
 #include "scenario/step_loop.hpp"
@@ -100,10 +102,12 @@ void expect_prepare_rule(const ManeuverRun& r, std::size_t k = 0) {
   const double floor = at_approval->speed < 2.78 ? std::max(2.78 - at_approval->speed, 2.0) : 2.0;
   EXPECT_NEAR(*lc.prepare_duration, std::max(4.0 - on_time, floor), 1e-9);
   EXPECT_NEAR(*lc.approval_s_base, s_base(r, *at_approval), 1e-9);
-  // Driven in the prepare time at the speed and acceleration of the approval step (unit-tested).
+  // Driven in the prepare time from the approval step's speed, at its acceleration when not braking,
+  // at 1 m/s^2 (max_longitudinal_acc) below 2.78 m/s (prepare_distance is unit-tested).
+  const double accel = at_approval->speed < 2.78 ? 1.0 : std::max(at_approval->accel, 0.0);
   const double prepared = *lc.approval_s_base + LaneChangeExecution::prepare_distance(
-                                                    at_approval->speed, at_approval->accel,
-                                                    r.scenario.ego.max_speed, *lc.prepare_duration);
+                                                    at_approval->speed, accel, r.scenario.ego.max_speed,
+                                                    *lc.prepare_duration);
   const double expected = std::min(std::max(seg->lane_change.earliest_start, prepared), seg->lane_change.latest_start);
   EXPECT_NEAR(*lc.start, expected, 1e-9);
   EXPECT_NEAR(*lc.end - *lc.start, seg->lane_change.length, 1e-9);
@@ -321,22 +325,84 @@ TEST(ManeuverScenario, UnapprovedLaneChangeHoldsTheEgoAtItsLastStart) {
   const LaneChangeRecord& lc = r.record.lane_changes.at(0);
   const LateralSegment& seg = r.lateral.segments.front();
   EXPECT_NEAR(seg.lane_change.latest_start, 189.60 - r.scenario.ego.base_link_to_front - 50.0, 1e-6);
+  // The hold point leaves room for the prepare segment from rest: 2.78 s at 1 m/s^2.
+  const double hold = seg.lane_change.latest_start - 0.5 * 2.78 * 2.78;
+  EXPECT_NEAR(seg.lane_change.hold_margin, 0.5 * 2.78 * 2.78, 1e-9);
   // At rest before approval, base_link within 5 cm short of the hold point, never beyond it.
   bool rested = false;
   for (const TimelineRow& row : r.record.rows) {
     if (row.time >= *lc.approval_time) break;
-    EXPECT_LE(s_base(r, row), seg.lane_change.latest_start + 1e-6) << row.time;
+    EXPECT_LE(s_base(r, row), hold + 1e-6) << row.time;
     if (row.speed < 0.01 && row.time > 5.0) {
       rested = true;
-      EXPECT_NEAR(s_base(r, row), seg.lane_change.latest_start, 0.05);
+      EXPECT_NEAR(s_base(r, row), hold, 0.05);
     }
   }
   EXPECT_TRUE(rested);
   EXPECT_NEAR(*lc.approval_time - *lc.blinker_on_time, 20.0, 1e-6);
-  EXPECT_NEAR(*lc.start, *lc.approval_s_base, 1e-9) << "from rest the lateral motion starts at once";
+  EXPECT_NEAR(*lc.prepare_duration, 2.78, 1e-9);
+  // From rest the prepare segment is 3.86 m: the lateral motion starts at the latest start.
+  EXPECT_NEAR(*lc.start, *lc.approval_s_base + 0.5 * 2.78 * 2.78, 1e-9);
   EXPECT_NEAR(*lc.start, seg.lane_change.latest_start, 0.05);
   EXPECT_EQ(last_lane_on(r, "in_S"), "in_S_0");
   EXPECT_EQ(r.record.off_route_steps, 0);
+}
+
+// A lane change approved at once never brakes the ego, even when its earliest start is its latest.
+TEST(ManeuverScenario, ImmediateApprovalDoesNotBrakeForTheHoldPoint) {
+  ManeuverRun r;
+  r.scenario = load_scenario(std::string(SIGNALSIM_SOURCE_DIR) + "/scenarios/lane_change_right.yaml");
+  r.scenario.lane_changes.at(0).at = 189.60 - r.scenario.ego.base_link_to_front - 50.0;
+  const sumo::NetIndex net = sumo::NetIndex::load(r.scenario.net);
+  const sumo::RoutePlan plan = plan_route(r.scenario, net);
+  r.lateral = plan_lateral(r.scenario, plan, net);
+  r.record = run_scenario(r.scenario, plan, net);
+  const LaneChangeRecord& lc = r.record.lane_changes.at(0);
+  ASSERT_EQ(lc.phase, "done");
+  EXPECT_NEAR(*lc.approval_time, *lc.blinker_on_time, 1e-9);
+  for (const TimelineRow& row : r.record.rows) {
+    if (row.time > *lc.approval_time) break;
+    EXPECT_GE(row.accel, 0.0) << row.time;
+  }
+  EXPECT_NEAR(*lc.start, r.lateral.segments.front().lane_change.latest_start, 1e-9) << "cut short to fit";
+  EXPECT_EQ(last_lane_on(r, "in_S"), "in_S_0");
+}
+
+// Departing too close to the last start to stop for it: the lane change is given up (missed), never
+// started half; the ego brakes as hard as it must (emergency) and keeps its lane.
+TEST(ManeuverScenario, ALaneChangeThatCanNoLongerEndOnItsEdgeIsMissed) {
+  ManeuverRun r;
+  r.scenario = load_scenario(std::string(SIGNALSIM_SOURCE_DIR) + "/scenarios/lane_change_hold_until_approved.yaml");
+  r.scenario.ego.depart_pos = 135.0;
+  r.scenario.ego.depart_speed = 13.89;
+  r.scenario.lane_changes.at(0).at = 131.3;
+  r.scenario.lane_changes.at(0).approval_delay = 5.0;
+  r.scenario.duration = 12.0;
+  const sumo::NetIndex net = sumo::NetIndex::load(r.scenario.net);
+  const sumo::RoutePlan plan = plan_route(r.scenario, net);
+  r.lateral = plan_lateral(r.scenario, plan, net);
+  r.record = run_scenario(r.scenario, plan, net);
+  const LaneChangeRecord& lc = r.record.lane_changes.at(0);
+  EXPECT_EQ(lc.phase, "missed");
+  EXPECT_FALSE(lc.approval_time);
+  EXPECT_FALSE(lc.start);
+  ASSERT_TRUE(lc.blinker_on_time) << "its blinker did come on";
+  bool missed_event = false;
+  for (const TimelineEvent& e : r.record.events) missed_event = missed_event || (e.kind == "lane_change" && e.to == "missed");
+  EXPECT_TRUE(missed_event);
+  for (const TimelineRow& row : r.record.rows) {
+    if (row.planned_offset) {
+      EXPECT_NEAR(*row.planned_offset, kLaneWidth, 1e-9) << "no lateral motion at " << row.time;
+    }
+    EXPECT_NE(row.lane, "in_S_0");
+  }
+  // No maneuver section for a lane change that never happened, and the run fails on it.
+  EXPECT_TRUE(r.record.maneuver_lines.empty());
+  const auto results = evaluate_expectations(r.scenario, plan.map, r.record);
+  ASSERT_FALSE(results.empty());
+  EXPECT_EQ(results.back().description, "lane_change on in_S executed");
+  EXPECT_FALSE(results.back().passed);
+  EXPECT_EQ(run_status(results), RunStatus::Failed);
 }
 
 TEST(ManeuverScenario, TwoLaneChangesEachSignalAfresh) {
@@ -348,8 +414,13 @@ TEST(ManeuverScenario, TwoLaneChangesEachSignalAfresh) {
   const std::size_t after_first = expect_lane_change_stretch(r, Blinker::Right, 0);
   const std::size_t after_second = expect_lane_change_stretch(r, Blinker::Left, 1, after_first);
   for (std::size_t i = after_second; i < r.record.rows.size(); ++i) EXPECT_EQ(r.record.rows[i].blinker, Blinker::None);
-  // The module was reset: the second blinker has its own timestamp and a full 4 s prepare segment.
-  EXPECT_GT(*r.record.lane_changes[1].blinker_on_time, *r.record.lane_changes[0].end / 100.0);
+  // The module was reset: the second blinker has its own timestamp, after the first lane change
+  // was done, and a full 4 s prepare segment.
+  double first_done = -1.0;
+  for (const TimelineEvent& e : r.record.events)
+    if (e.kind == "lane_change" && e.to == "done" && e.source == "in_S") first_done = e.time;
+  ASSERT_GT(first_done, 0.0);
+  EXPECT_GT(*r.record.lane_changes[1].blinker_on_time, first_done);
   EXPECT_NEAR(*r.record.lane_changes[1].prepare_duration, 4.0, 1e-9);
   EXPECT_EQ(last_lane_on(r, "in_S"), "in_S_0");
   EXPECT_EQ(last_lane_on(r, "out_N"), "out_N_1");

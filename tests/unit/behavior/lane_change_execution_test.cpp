@@ -148,6 +148,38 @@ TEST(LaneChangeExecution, TheFixedLineDoesNotMoveAfterApproval) {
   EXPECT_DOUBLE_EQ(fixed.s_start, 140.0);
 }
 
+TEST(LaneChangeExecution, NoHoldPointBeforeTheModuleSignals) {
+  LaneChangeTiming t = timing(5.0);
+  t.hold_margin = 3.86;
+  LaneChangeExecution lc(t, {});
+  EXPECT_FALSE(lc.distance_to_hold_point(250.0));  // pending: may still be approved at once
+  lc.update(step_at(0.0, 250.0, 5.0, 0.0, 2.0));
+  ASSERT_EQ(lc.phase(), LaneChangePhase::WaitingApproval);
+  EXPECT_DOUBLE_EQ(*lc.distance_to_hold_point(250.0), 300.0 - 3.86 - 250.0);
+}
+
+TEST(LaneChangeExecution, MissedPastTheLastStartWithoutApproval) {
+  LaneChangeExecution lc(timing(10.0), {});
+  lc.update(step_at(0.0, 290.0, 10.0, 0.0, 4.0));
+  ASSERT_EQ(lc.phase(), LaneChangePhase::WaitingApproval);
+  lc.update(step_at(0.5, 300.0 + LaneChangeExecution::kLatestStartTolerance, 10.0, 0.0, 4.0));
+  EXPECT_EQ(lc.phase(), LaneChangePhase::WaitingApproval);  // within the stopping tolerance
+  EXPECT_TRUE(lc.update(step_at(0.6, 300.06, 10.0, 0.0, 4.0)));
+  EXPECT_EQ(lc.phase(), LaneChangePhase::Missed);
+  EXPECT_FALSE(lc.distance_to_hold_point(300.06));
+  // Terminal: approval conditions later change nothing, and no line was ever fixed.
+  EXPECT_FALSE(lc.update(step_at(20.0, 310.0, 10.0, 0.0, 2.0)));
+  EXPECT_EQ(lc.phase(), LaneChangePhase::Missed);
+  EXPECT_FALSE(lc.approved_line());
+  EXPECT_DOUBLE_EQ(*lc.blinker_on_since(), 0.0);
+}
+
+TEST(LaneChangeExecution, PendingPastTheLastStartIsMissedToo) {
+  LaneChangeExecution lc(timing(), {});
+  EXPECT_TRUE(lc.update(step_at(0.0, 301.0, 10.0, std::nullopt, 4.0)));
+  EXPECT_EQ(lc.phase(), LaneChangePhase::Missed);
+}
+
 TEST(LaneChangeExecution, PrepareDistanceFollowsSpeedAndAcceleration) {
   EXPECT_DOUBLE_EQ(LaneChangeExecution::prepare_distance(10.0, 0.0, 20.0, 4.0), 40.0);
   EXPECT_DOUBLE_EQ(LaneChangeExecution::prepare_distance(10.0, 1.0, 20.0, 4.0), 48.0);  // v t + a t^2 / 2
