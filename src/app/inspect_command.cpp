@@ -50,7 +50,7 @@ Command add_inspect_command(CLI::App& app) {
   auto options = std::make_shared<InspectOptions>();
   CLI::App* sub = app.add_subcommand("inspect", "Show the lanelets along a route as the decider sees them");
   sub->add_option("net", options->net_path, "SUMO .net.xml (plain or gzip)")->required();
-  sub->add_option("--route", options->route, "Edge ids of a route");
+  sub->add_option("--route", options->route, "Edge ids of a route (space- or comma-separated)")->delimiter(',');
   sub->add_option("--country", options->country, "Apply a country preset (e.g. jp: exit-signal marking)");
   sub->add_option("--set", options->set, "Parameter override name=value; repeatable");
   return {sub, [options] { return inspect(*options); }};

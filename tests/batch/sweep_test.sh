@@ -66,4 +66,11 @@ if /usr/bin/python3 -c "import matplotlib" 2>/dev/null; then
 else
   echo "skip sweep --plot: /usr/bin/python3 has no matplotlib (python3-matplotlib)"
 fi
+# A picture that cannot be drawn fails the command (exit 3) although every run passed.
+SIGNALSIM_PLOT_TOOL=$work/no_such_plot_tool "$bin" sweep "$sweep" --out "$work/j1" --jobs 2 --resume --plot \
+  > "$work/noplot.log" 2>&1
+code=$?
+[ "$code" = 3 ] || fail "sweep --plot with a missing plot tool: exit code $code, expected 3 ($(cat "$work/noplot.log"))"
+grep -q "plotting failed" "$work/noplot.log" || fail "no 'plotting failed' message"
+echo "ok   sweep --plot fails with exit 3 when the picture cannot be drawn"
 echo "sweep_test passed"
