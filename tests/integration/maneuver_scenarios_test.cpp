@@ -276,6 +276,20 @@ TEST(ManeuverScenario, ImmediateApprovalPreparesFourSeconds) {
   EXPECT_GT(*lc.start, r.lateral.segments.front().lane_change.earliest_start) << "4 s reach beyond `at`";
 }
 
+// The prepare durations are parameters (a sweep over them must change the run).
+TEST(ManeuverScenario, MaxPrepareDurationIsAParameter) {
+  ManeuverRun r;
+  r.scenario = load_scenario(std::string(SIGNALSIM_SOURCE_DIR) + "/scenarios/lane_change_right.yaml",
+                             ScenarioOverrides{{"max_prepare_duration=3"}});
+  const sumo::NetIndex net = sumo::NetIndex::load(r.scenario.net);
+  const sumo::RoutePlan plan = plan_route(r.scenario, net);
+  r.lateral = plan_lateral(r.scenario, plan, net);
+  r.record = run_scenario(r.scenario, plan, net);
+  EXPECT_NEAR(*r.record.lane_changes.at(0).prepare_duration, 3.0, 1e-9);
+  const ManeuverRun defaults = run("lane_change_right");
+  EXPECT_LT(*r.record.lane_changes.at(0).start, *defaults.record.lane_changes.at(0).start);
+}
+
 TEST(ManeuverScenario, LateApprovalShortensThePrepareSegment) {
   const ManeuverRun r = run("lane_change_approval_delay");
   ASSERT_TRUE(r.record.arrived);
