@@ -335,9 +335,14 @@ void check_sweep_plot(const Sweep& sweep, const std::vector<RunSpec>& runs) {
   const std::optional<MetricColumn> column = parse_metric_column(sweep.plot.metric);
   if (!column) return;  // empty (tools/plot chooses) or a run-level column every run has
   // Sections and lights per route, from the same code that computes the metrics (an empty record:
-  // the route's sections and lights, no values).
+  // the route's sections and lights, no values). Maneuver sections belong to each run's scenario
+  // and overrides (maneuvers, depart lane, shift threshold), so they are counted per run.
+  struct RouteCounts {
+    sumo::RoutePlan plan;
+    std::map<std::string, int> counts;
+  };
   std::map<std::string, std::shared_ptr<const sumo::NetIndex>> nets;
-  std::map<std::string, std::map<std::string, int>> counts_by_route;
+  std::map<std::string, RouteCounts> by_route;
   std::map<std::string, int> most;
   bool planned = false;
   for (const RunSpec& run : runs) {
@@ -346,22 +351,23 @@ void check_sweep_plot(const Sweep& sweep, const std::vector<RunSpec>& runs) {
       std::string key = scenario.net;
       for (const std::string& edge : scenario.ego.route) key += "\n" + edge;
       for (const int lane : required_exit_lanes(scenario)) key += "\n" + std::to_string(lane);
-      auto [counts, fresh] = counts_by_route.try_emplace(key);
+      auto& net = nets[scenario.net];
+      if (!net) net = std::make_shared<const sumo::NetIndex>(sumo::NetIndex::load(scenario.net));
+      auto [route, fresh] = by_route.try_emplace(key);
       if (fresh) {
-        auto& net = nets[scenario.net];
-        if (!net) net = std::make_shared<const sumo::NetIndex>(sumo::NetIndex::load(scenario.net));
-        const sumo::RoutePlan plan = plan_route(scenario, *net);
-        RunRecord planned_only;  // the route's sections and the maneuvers' nominal lines, no values
-        planned_only.maneuver_lines = maneuver_lines(plan_lateral(scenario, plan, *net), {},
-                                                     scenario.params.number("turn_signal_shift_length_threshold"));
-        const RunMetrics metrics = compute_metrics(scenario, plan.map, planned_only);
-        for (const SectionMetrics& section : metrics.sections) ++counts->second[section.section.kind];
-        counts->second["light"] = static_cast<int>(metrics.lights.size());
-        for (const auto& [kind, n] : counts->second) most[kind] = std::max(most[kind], n);
+        route->second.plan = plan_route(scenario, *net);
+        const RunMetrics metrics = compute_metrics(scenario, route->second.plan.map, RunRecord{});
+        for (const SectionMetrics& section : metrics.sections) ++route->second.counts[section.section.kind];
+        route->second.counts["light"] = static_cast<int>(metrics.lights.size());
       }
+      std::map<std::string, int> counts = route->second.counts;
+      for (const ManeuverLine& line : maneuver_lines(plan_lateral(scenario, route->second.plan, *net), {},
+                                                     scenario.params.number("turn_signal_shift_length_threshold")))
+        ++counts[line.kind];
+      for (const auto& [kind, n] : counts) most[kind] = std::max(most[kind], n);
       planned = true;
-      const auto it = counts->second.find(column->kind);
-      if (it != counts->second.end() && it->second >= column->number) return;
+      const auto it = counts.find(column->kind);
+      if (it != counts.end() && it->second >= column->number) return;
     } catch (const std::exception&) {
       // A route the net cannot drive: the run reports it as its own error.
     }

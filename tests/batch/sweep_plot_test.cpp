@@ -99,6 +99,26 @@ TEST(SweepPlot, BadPlotIsRefusedWhenTheFileIsRead) {
   EXPECT_EQ(load("plot: {metric: lead_distance}\n").rfind(at + "2: plot.metric: 'lead_distance' is not a results.csv metric column (numeric columns: max_decel, ", 0), 0u);
 }
 
+// Maneuver sections belong to each run's scenario, not to its route: a run with the same route but
+// no lane change must not hide another run's lane change.
+TEST(SweepPlot, ManeuverSectionsAreCountedPerRunNotPerRoute) {
+  TempDir dir;
+  const std::string bundled = std::string(SIGNALSIM_SOURCE_DIR) + "/scenarios/";
+  const auto check = [&](const std::string& metric) {
+    const std::string path =
+        dir.write("s.yaml", "scenarios: [" + bundled + "intersection_straight.yaml, " + bundled +
+                                "lane_change_right.yaml]\ngrid: {seed: [1, 2]}\nplot:\n  metric: " + metric + "\n");
+    return error_of([&] {
+      const Sweep sweep = load_sweep(path);
+      auto runs = expand_sweep(sweep);
+      check_sweep_runs(sweep, runs);
+      check_sweep_plot(sweep, runs);
+    });
+  };
+  EXPECT_EQ(check("lane_change1.lead_time"), "");  // both run in_S -> out_N; only the second changes lanes
+  EXPECT_NE(check("lane_change2.lead_time").find("no run's route has a lane_change2"), std::string::npos);
+}
+
 TEST(SweepPlot, AMetricNoRunsRouteHasIsRefusedBeforeAnyRun) {
   TempDir dir;
   const auto check = [&](const std::string& scenarios, const std::string& metric) {
