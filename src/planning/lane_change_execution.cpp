@@ -4,6 +4,17 @@
 
 namespace signalsim {
 
+const char* to_string(LaneChangePhase phase) {
+  switch (phase) {
+    case LaneChangePhase::Pending: return "pending";
+    case LaneChangePhase::WaitingApproval: return "waiting_approval";
+    case LaneChangePhase::Running: return "running";
+    case LaneChangePhase::Done: return "done";
+    case LaneChangePhase::Missed: return "missed";
+  }
+  return "?";
+}
+
 double LaneChangeExecution::prepare_distance(double speed, double accel, double max_speed, double duration) {
   const double v0 = std::clamp(speed, 0.0, std::max(max_speed, 0.0));
   if (duration <= 0.0) return 0.0;
@@ -53,7 +64,7 @@ bool LaneChangeExecution::update(const Step& step) {
     const double blinker_on = step.blinker_on_since ? step.now - *step.blinker_on_since : 0.0;
     if (blinker_on >= timing_.approval_delay - 1e-9 && target_lane_clear(step)) {
       approved_ = line_from(candidate_start(step));  // the path is fixed from here on
-      approval_ = Approval{step.now, step.s_base, step.speed, step.prepare_duration, step.blinker_on_since};
+      approval_ = Approval{step.now, step.s_base, step.prepare_duration, step.blinker_on_since};
       phase_ = LaneChangePhase::Running;
     }
   }

@@ -57,6 +57,9 @@ struct LaneChangeGaps {
 
 enum class LaneChangePhase { Pending, WaitingApproval, Running, Done, Missed };
 
+/// "pending", "waiting_approval", "running", "done", "missed".
+const char* to_string(LaneChangePhase phase);
+
 /// The phase machine of one lane change (see the file comment). A value type; no SUMO.
 class LaneChangeExecution {
  public:
@@ -93,7 +96,6 @@ class LaneChangeExecution {
   struct Approval {
     double time = 0.0;                       ///< [s]
     double s_base = 0.0;                     ///< [m]
-    double speed = 0.0;                      ///< [m/s]
     double prepare_duration = 0.0;           ///< [s] the module's, at approval
     std::optional<double> blinker_on_since;  ///< [s]
   };

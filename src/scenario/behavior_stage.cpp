@@ -10,17 +10,6 @@ constexpr double kPathBackward = 5.0;  // [m] behind base_link: the behaviour mo
 
 }  // namespace
 
-const char* to_string(LaneChangePhase phase) {
-  switch (phase) {
-    case LaneChangePhase::Pending: return "pending";
-    case LaneChangePhase::WaitingApproval: return "waiting_approval";
-    case LaneChangePhase::Running: return "running";
-    case LaneChangePhase::Done: return "done";
-    case LaneChangePhase::Missed: return "missed";
-  }
-  return "?";
-}
-
 BehaviorStage::BehaviorStage(LateralPlan plan, const BehaviorSignalParameters& params,
                              const BehaviorStageConfig& config)
     : plan_(std::move(plan)), params_(params), config_(config) {

@@ -92,7 +92,4 @@ class BehaviorStage {
 std::vector<ManeuverLine> maneuver_lines(const LateralPlan& plan, const std::vector<LaneChangeRecord>& executed,
                                          double min_shift);
 
-/// "pending", "waiting_approval", "running", "done", "missed".
-const char* to_string(LaneChangePhase phase);
-
 }  // namespace signalsim
