@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <limits>
 #include <map>
 #include <tuple>
+
+#include "scenario/outputs.hpp"
 
 namespace signalsim {
 namespace {
@@ -267,13 +267,9 @@ std::vector<SignalSection> signal_sections(const RouteMap& route, const Paramete
 RunMetrics compute_metrics(const Scenario& scenario, const RouteMap& route, const RunRecord& record) {
   RunMetrics m;
   const auto& rows = record.rows;
-  // The acceleration as timeline.csv has it (%.3f), so that metrics recomputed from the files
-  // (batch's fallback) are the run's own: the jerk divides its rounding by the step.
-  const auto written = [](double v) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.3f", v);
-    return std::strtod(buf, nullptr);
-  };
+  // The acceleration as timeline.csv has it, so that metrics recomputed from the files (batch's
+  // fallback) are the run's own: the jerk divides its rounding by the step.
+  const auto written = [](double v) { return std::stod(fixed(v, 3)); };
   double min_accel = 0.0, max_jerk = 0.0;
   for (std::size_t i = 0; i < rows.size(); ++i) {
     min_accel = std::min(min_accel, written(rows[i].accel));

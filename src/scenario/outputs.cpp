@@ -25,14 +25,6 @@ void write_atomically(const std::string& path, const std::string& content) {
   fs::rename(tmp, path);
 }
 
-std::string fixed(double v, int decimals) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-  std::string s = buf;
-  if (s == "-0.000" || s == "-0.00" || s == "-0.0") s.erase(0, 1);  // deterministic zero
-  return s;
-}
-
 nlohmann::ordered_json parameters_json(const ParameterSet& set) {
   nlohmann::ordered_json out = nlohmann::ordered_json::object();
   for (const ParameterSpec& spec : parameter_schema()) {
@@ -42,6 +34,14 @@ nlohmann::ordered_json parameters_json(const ParameterSet& set) {
 }
 
 }  // namespace
+
+std::string fixed(double v, int decimals) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  std::string s = buf;
+  if (s == "-0.000" || s == "-0.00" || s == "-0.0") s.erase(0, 1);  // deterministic zero
+  return s;
+}
 
 std::string_view to_string(RunStatus status) {
   switch (status) {

@@ -21,6 +21,9 @@ std::string_view to_string(RunStatus status);
 /// The status of a finished run from its expectation results: NoExpectations when there are none.
 RunStatus run_status(const std::vector<ExpectationResult>& results);
 
+/// `v` with `decimals` decimals as the output files write it ("%.*f", never "-0.000").
+std::string fixed(double v, int decimals);
+
 void write_timeline_csv(const std::string& path, const std::vector<TimelineRow>& rows);
 void write_events_csv(const std::string& path, const std::vector<TimelineEvent>& events);
 
