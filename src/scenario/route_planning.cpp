@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "scenario/input_error.hpp"
+#include "turn_signal/behavior_modules.hpp"
 #include "turn_signal/exit_signal_marking.hpp"
 
 namespace signalsim {
@@ -29,6 +30,8 @@ std::vector<LateralSegment> plan_lane_changes(const Scenario& scenario, const su
   std::vector<LateralSegment> out;
   const double b2f = scenario.ego.base_link_to_front;
   const auto& edges = scenario.ego.route;
+  const BehaviorSignalParameters module_params = behavior_parameters(
+      scenario.params, turn_signal_parameters(scenario.params, b2f), scenario.ego.length, kObstacleWidth);
   for (const LaneChangeManeuver& m : scenario.lane_changes)
     if (!m.edge.empty() && std::find(edges.begin(), edges.end(), m.edge) == edges.end())
       fail(scenario, "maneuvers: lane_change: edge '" + m.edge + "' is not on the ego's route");
@@ -119,13 +122,10 @@ std::vector<LateralSegment> plan_lane_changes(const Scenario& scenario, const su
     seg.lane_change.shift_start = offset;
     seg.lane_change.approval_delay = m.approval_delay;
     // Hold point margin: the prepare segment from rest, driven at max_longitudinal_acc for the
-    // prepare time at standstill (the time to reach min_lane_changing_velocity, spec TSD §8.2).
-    const double acc = scenario.params.number("max_longitudinal_acc");
-    const double rest_prepare = acc < 1e-3 ? 0.0
-                                           : std::max(scenario.params.number("min_lane_changing_velocity") / acc,
-                                                      scenario.params.number("min_prepare_duration"));
-    seg.lane_change.hold_margin =
-        LaneChangeExecution::prepare_distance(0.0, acc, scenario.ego.max_speed, rest_prepare);
+    // module's shortest prepare time at standstill (spec TSD §8.2).
+    seg.lane_change.hold_margin = LaneChangeExecution::prepare_distance(
+        0.0, module_params.max_longitudinal_acc, scenario.ego.max_speed,
+        LaneChangeSignal::min_prepare_duration_at(0.0, module_params));
     out.push_back(std::move(seg));
   }
   return out;

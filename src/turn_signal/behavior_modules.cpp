@@ -90,18 +90,18 @@ void LaneChangeSignal::set_signal_activation_time(double now, bool reset_time) {
   }
 }
 
+double LaneChangeSignal::min_prepare_duration_at(double speed, const BehaviorSignalParameters& p) {
+  if (speed >= p.min_lane_changing_velocity) return p.min_prepare_duration;
+  constexpr double eps = 1e-3;
+  return p.max_longitudinal_acc < eps
+             ? p.max_prepare_duration
+             : std::max((p.min_lane_changing_velocity - speed) / p.max_longitudinal_acc, p.min_prepare_duration);
+}
+
 double LaneChangeSignal::actual_prepare_duration(double now, double speed,
                                                  const BehaviorSignalParameters& p) const {
   const double active_signal_duration = blinker_on_since_ ? now - *blinker_on_since_ : 0.0;
-  double min_prepare = p.min_prepare_duration;
-  if (speed < p.min_lane_changing_velocity) {
-    constexpr double eps = 1e-3;
-    min_prepare = p.max_longitudinal_acc < eps
-                      ? p.max_prepare_duration
-                      : std::max((p.min_lane_changing_velocity - speed) / p.max_longitudinal_acc,
-                                 p.min_prepare_duration);
-  }
-  return std::max(p.max_prepare_duration - active_signal_duration, min_prepare);
+  return std::max(p.max_prepare_duration - active_signal_duration, min_prepare_duration_at(speed, p));
 }
 
 TurnSignalInfo LaneChangeSignal::update(const TurnSignalInfo& previous, const Input& in, const EgoOnRoute& ego,

@@ -110,6 +110,10 @@ class LaneChangeSignal {
   /// (max_prepare_duration when the acceleration is ~0). blinker_on_time = now - timestamp, 0 if off.
   double actual_prepare_duration(double now, double speed, const BehaviorSignalParameters& params) const;
 
+  /// The floor of the prepare duration at `speed` (the min_prepare above): however long the blinker
+  /// has been on, the prepare segment lasts at least this long.
+  static double min_prepare_duration_at(double speed, const BehaviorSignalParameters& params);
+
   bool active() const { return active_; }
   std::optional<double> blinker_on_since() const { return blinker_on_since_; }
   void reset() {
