@@ -1,5 +1,6 @@
 // `signalsim run SCENARIO --out DIR`: one scenario, one SUMO, the three output files.
 #include <chrono>
+#include <filesystem>
 #include <cstdio>
 #include <iostream>
 #include <optional>
@@ -14,15 +15,23 @@
 #include "scenario/step_loop.hpp"
 #include "sumo/net_index.hpp"
 #include "sumo/route_builder.hpp"
+#include "sumo/sumo_log.hpp"
 #include "sumo/sumo_session.hpp"
+#include "scenario/session_setup.hpp"
 
 namespace signalsim::app {
 namespace {
+
+constexpr const char* kGuiScreenshot = "gui.png";  // --gui: the view at the first blinker
 
 struct RunOptions {
   std::string scenario_path;
   std::string out_dir = "out";
   ScenarioOverrides overrides;
+  bool gui = false;            ///< run in sumo-gui (libtraci)
+  int gui_delay_ms = 0;
+  std::string connect;         ///< HOST:PORT of a SUMO someone else started
+  int client_order = 1;
   bool quiet = false;
   bool plot = false;  ///< draw the run's pictures with tools/plot afterwards
 };
@@ -37,16 +46,50 @@ int fail(const RunOptions& options, const std::optional<Scenario>& scenario, con
   return report_bad_input(message);
 }
 
+// The back-end from --gui / --connect (at most one).
+RunContext run_context(const RunOptions& options) {
+  RunContext context;
+  context.out_dir = options.out_dir;
+  if (options.gui && !options.connect.empty())
+    throw InputError("--gui", 0, "--gui and --connect exclude each other (attach sumo-gui with --connect instead)");
+  if (options.gui) {
+    context.backend.kind = sumo::BackendKind::Gui;
+    context.backend.gui_delay_ms = options.gui_delay_ms;
+    context.backend.screenshot = (std::filesystem::path(options.out_dir) / kGuiScreenshot).string();
+  } else if (!options.connect.empty()) {
+    const auto colon = options.connect.rfind(':');
+    int port = 0;
+    const bool parsed = colon != std::string::npos && colon > 0 &&
+                        std::sscanf(options.connect.c_str() + colon + 1, "%d", &port) == 1 && port > 0 && port < 65536;
+    if (!parsed) throw InputError("--connect", 0, "'" + options.connect + "' is not HOST:PORT (e.g. 127.0.0.1:8813)");
+    context.backend.kind = sumo::BackendKind::Connect;
+    context.backend.host = options.connect.substr(0, colon);
+    context.backend.port = port;
+    context.backend.client_order = options.client_order;
+  }
+  return context;
+}
+
 int run(const RunOptions& options) {
   std::optional<Scenario> scenario;
   try {
     scenario = load_scenario(options.scenario_path, options.overrides);
+    const RunContext context = run_context(options);
     const sumo::NetIndex net = sumo::NetIndex::load(scenario->net);
-    const sumo::RoutePlan plan = plan_route(*scenario, net);
-    check_expectations_apply(*scenario, plan.map);
+    PlannedRun planned = plan_run(*scenario, net);
+    check_expectations_apply(planned.scenario, planned.plan.map);
+    std::filesystem::create_directories(options.out_dir);  // SUMO's log and outputs go there
 
     const auto start = std::chrono::steady_clock::now();
-    const RunRecord record = run_scenario(*scenario, plan, net);
+    RunRecord record;
+    sumo::RoutePlan plan;
+    {
+      StartedRun started = start_run(std::move(planned), net, context);
+      record = drive(started, net);
+      scenario = started.scenario;  // as run: a taken-over vehicle's values
+      plan = std::move(started.plan);
+    }  // SUMO closes here: its log is complete
+    if (!record.sumo.log.empty()) record.sumo.log_counts = sumo::count_sumo_log(record.sumo.log);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const auto results = evaluate_expectations(*scenario, plan.map, record);
     const RunStatus status = run_status(results);
@@ -85,6 +128,14 @@ Command add_run_command(CLI::App& app) {
                   "(turn_signal_search_time=2.5); repeatable");
   sub->add_flag("--quiet", options->quiet, "Print nothing on success");
   sub->add_flag("--plot", options->plot, "Draw PNGs of the run into OUT/plots with tools/plot");
+  sub->add_flag("--gui", options->gui,
+                "Run in sumo-gui (needs a display): the ego tracked in the view, a screenshot in OUT/gui.png");
+  sub->add_option("--gui-delay", options->gui_delay_ms, "With --gui: sumo-gui's delay between steps [ms]")
+      ->check(CLI::Range(0, 10000));
+  sub->add_option("--connect", options->connect,
+                  "Attach to a SUMO started with --remote-port (HOST:PORT); step in lock-step with its other clients");
+  sub->add_option("--client-order", options->client_order, "With --connect: this client's TraCI order (setOrder)")
+      ->check(CLI::Range(1, 1000));
   return {sub, [options] { return run(*options); }};
 }
 

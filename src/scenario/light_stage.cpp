@@ -71,4 +71,16 @@ std::vector<LightStep> TrafficLightStage::step(double now, double s_front, doubl
   return out;
 }
 
+bool light_decides_next_junction(const RouteMap& route, double s_front, const std::vector<LightStep>& lights) {
+  if (route.empty()) return false;
+  const std::size_t here = route.index_at(s_front);
+  if (route.at(here).is_internal) return false;  // inside a junction: its right of way is SUMO's
+  for (const LightStep& l : lights) {
+    if (l.light->route_index != here) continue;
+    const char c = l.own_state;
+    return c == 'r' || c == 'u' || c == 'y' || c == 'Y';
+  }
+  return false;
+}
+
 }  // namespace signalsim

@@ -51,4 +51,10 @@ class TrafficLightStage {
   double horizon_;
 };
 
+/// Whether the next junction the ego enters is a light showing the ego's link red or yellow: the ego
+/// is on a normal lanelet that is the approach of a light in `lights` (no other junction lies
+/// between), and that link is r, u, y or Y. Then SUMO's right of way must not apply (spec SUMO §4:
+/// it would hold a slow ego before the red line on its own); the judge decides.
+bool light_decides_next_junction(const RouteMap& route, double s_front, const std::vector<LightStep>& lights);
+
 }  // namespace signalsim

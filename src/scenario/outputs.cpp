@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "scenario/metrics.hpp"
+#include "scenario/take_over.hpp"
 #include "sumo/sumo_session.hpp"
 
 namespace signalsim {
@@ -30,6 +31,29 @@ nlohmann::ordered_json parameters_json(const ParameterSet& set) {
   for (const ParameterSpec& spec : parameter_schema()) {
     std::visit([&](const auto& v) { out[spec.name] = v; }, set.values().at(spec.name));
   }
+  return out;
+}
+
+// Which SUMO ran with which files and options, and what it said (counted from its log).
+nlohmann::ordered_json sumo_json(const Scenario& scenario, const RunSumoInfo& info) {
+  nlohmann::ordered_json out;
+  out["backend"] = std::string(sumo::to_string(info.backend));
+  if (!info.endpoint.empty()) out["endpoint"] = info.endpoint;
+  out["sumocfg"] = scenario.sumo.sumocfg;
+  out["route_files"] = scenario.sumo.route_files;
+  out["additional"] = scenario.additional;
+  out["options"] = info.args;
+  if (!scenario.sumo.sumocfg.empty())
+    out["sumocfg_used"] = {{"used", scenario.sumo.cfg_used},
+                           {"replaced_by_scenario", scenario.sumo.cfg_overridden},
+                           {"ignored", scenario.sumo.cfg_ignored}};
+  out["log"] = info.log.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(fs::path(info.log).filename().string());
+  if (info.log_counts.read)
+    out["messages"] = {{"warnings", info.log_counts.warnings},
+                       {"errors", info.log_counts.errors},
+                       {"teleports", info.log_counts.teleports},
+                       {"emergency_braking", info.log_counts.emergency_braking},
+                       {"collisions", info.log_counts.collisions}};
   return out;
 }
 
@@ -109,6 +133,25 @@ void write_run_outputs(const std::string& dir, const Scenario& scenario, const s
   summary["seed"] = scenario.seed;
   summary["step_length"] = scenario.step_length;
   summary["duration"] = scenario.duration;
+  const sumo::EgoVehicle& departed = record.sumo.ego;
+  nlohmann::ordered_json ego;
+  ego["id"] = departed.id.empty() ? std::string(sumo::kDefaultEgoId) : departed.id;
+  ego["taken_over"] = !scenario.ego.id.empty();
+  ego["type"] = departed.type;
+  ego["length"] = scenario.ego.length;
+  ego["width"] = departed.width;
+  ego["base_link_to_front"] = std::stod(fixed(scenario.ego.base_link_to_front, 3));
+  ego["max_speed"] = scenario.ego.max_speed;
+  ego["accel"] = scenario.ego.accel;
+  ego["decel"] = scenario.ego.decel;
+  ego["type_decel"] = departed.decel;
+  ego["emergency_decel"] = scenario.ego.emergency_decel;
+  ego["depart_time"] = std::stod(fixed(departed.depart_time, 3));
+  ego["depart_lane"] = departed.depart_lane;
+  ego["depart_pos"] = std::stod(fixed(departed.depart_pos, 3));
+  ego["depart_speed"] = std::stod(fixed(departed.depart_speed, 3));
+  ego["source"] = ego_sources(scenario, departed.type);
+  summary["ego"] = ego;
   summary["route"] = {{"edges", scenario.ego.route},
                       {"lanelets", plan.map.size()},
                       {"length", std::stod(fixed(plan.map.length(), 3))},
@@ -179,6 +222,7 @@ void write_run_outputs(const std::string& dir, const Scenario& scenario, const s
     expectations.push_back({{"expectation", r.description}, {"passed", r.passed}, {"detail", r.detail}});
   summary["expectations"] = expectations;
   summary["parameters"] = parameters_json(scenario.params);
+  summary["sumo"] = sumo_json(scenario, record.sumo);
   write_atomically((fs::path(dir) / "summary.json").string(), summary.dump(2) + "\n");
 }
 

@@ -6,6 +6,7 @@
 
 #include "scenario/countries.hpp"
 #include "scenario/input_error.hpp"
+#include "scenario/sumo_inputs.hpp"
 #include "scenario/yaml_fields.hpp"
 
 namespace signalsim {
@@ -129,7 +130,8 @@ PerceptionModelParameters parse_perception(const YAML::Node& node, const std::st
 
 // Top-level scenario keys; any other override key is a parameter name.
 bool is_scenario_key(const std::string& key) {
-  static const char* const keys[] = {"name", "description", "net", "additional", "step_length", "duration",
+  static const char* const keys[] = {"name", "description", "net", "sumocfg", "routes", "sumo_args", "additional",
+                                     "step_length", "duration",
                                      "seed", "country", "ego", "perception", "light_offsets", "params", "obstacles", "maneuvers",
                                      "expect"};
   for (const char* k : keys)
@@ -230,16 +232,7 @@ Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrid
   YamlFields top(root, path, "");
   s.name = top.text("name");
   s.description = top.text_or("description", "");
-  s.net = resolve_relative(path, top.text("net"));
-  if (!fs::is_regular_file(s.net)) top.fail("net", "net file '" + s.net + "' not found");
-  for (const std::string& a : top.text_list("additional")) {
-    s.additional.push_back(resolve_relative(path, a));
-    if (!fs::is_regular_file(s.additional.back()))
-      top.fail("additional", "file '" + s.additional.back() + "' not found");
-  }
-  s.step_length = top.number("step_length", 0.1, 0.001, 1.0);
-  s.duration = top.number("duration", 60.0, 0.001, 86400.0);
-  s.seed = top.integer("seed", 1, 0, 2147483647);
+  read_simulation_keys(top, path, s);
   // The timeline is kept in memory: cap the number of steps (about 0.5 kB each).
   if (s.duration / s.step_length > 2e6)
     top.fail("duration", "duration / step_length exceeds 2 000 000 steps; shorten the run or lengthen the step");
@@ -247,13 +240,18 @@ Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrid
 
   if (!top.has("ego")) throw InputError(path, 0, "missing required key 'ego'");
   YamlFields ego(top.node("ego"), path, "ego");
+  for (const char* key : {"id", "route", "depart_pos", "depart_speed", "max_speed", "length", "width",
+                          "base_link_to_front", "accel", "decel", "emergency_decel", "depart_lane"})
+    if (ego.has(key)) s.ego.given.insert(key);
+  s.ego.id = ego.text_or("id", "");
   s.ego.route = ego.text_list("route");
-  if (s.ego.route.empty()) ego.fail("route", "the route needs at least one edge");
+  if (s.ego.route.empty() && s.ego.id.empty()) ego.fail("route", "the route needs at least one edge");
   s.ego.depart_pos = ego.number("depart_pos", 0.0, 0.0, 1e6);
   s.ego.depart_speed = ego.number("depart_speed", 0.0, 0.0, 100.0);
   s.ego.max_speed = ego.number("max_speed", 13.89, 0.1, 100.0);
   s.ego.length = ego.number("length", 4.5, 0.5, 30.0);
-  s.ego.base_link_to_front = ego.number("base_link_to_front", 3.7, 0.0, 30.0);
+  s.ego.width = ego.number("width", 1.8, 0.3, 5.0);
+  s.ego.base_link_to_front = ego.number("base_link_to_front", kBaseLinkShare * s.ego.length, 0.0, 30.0);
   if (s.ego.base_link_to_front > s.ego.length)
     ego.fail("base_link_to_front", "is longer than the vehicle (ego.length)");
   s.ego.accel = ego.number("accel", 1.0, 0.1, 10.0);
@@ -261,6 +259,12 @@ Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrid
   s.ego.emergency_decel = ego.number("emergency_decel", 9.0, 1.0, 15.0);
   if (s.ego.depart_speed > s.ego.max_speed) ego.fail("depart_speed", "exceeds ego.max_speed");
   s.ego.depart_lane = ego.integer("depart_lane", -1, -1, 100);
+  // A taken-over vehicle departs as its route file says (spec: issue 10); the keys SUMO's definition
+  // already fixes may only repeat it (checked against SUMO once it departed, scenario/take_over).
+  if (!s.ego.id.empty())
+    for (const char* key : {"depart_pos", "depart_speed", "depart_lane"})
+      if (ego.has(key))
+        ego.fail(key, "vehicle '" + s.ego.id + "' (ego.id) departs as its route file says; remove ego." + key);
   ego.finish();
 
   const YAML::Node obstacles = top.node("obstacles");

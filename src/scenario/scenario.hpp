@@ -8,7 +8,10 @@
 #include <map>
 #include <optional>
 
+#include <set>
+
 #include "scenario/parameters.hpp"
+#include "sumo/sumo_options.hpp"
 #include "traffic_light/perception_model.hpp"
 
 namespace signalsim {
@@ -18,18 +21,43 @@ enum class Blinker { None, Left, Right, Hazard };
 std::string_view to_string(Blinker b);
 
 struct EgoSpec {
+  /// Take over this vehicle of the route files when it departs (its route, vType and departure are
+  /// SUMO's); empty: signalsim adds its own ego (id "ego") on `route`.
+  std::string id;
   std::vector<std::string> route;   ///< edge ids; each must connect to the next
   double depart_pos = 0.0;          ///< [m] on the first edge
   double depart_speed = 0.0;        ///< [m/s]
   double max_speed = 13.89;         ///< [m/s]
   double length = 4.5;              ///< [m]
-  double base_link_to_front = 3.7;  ///< rear-axle centre to front bumper [m]
+  double width = 1.8;               ///< [m] (SUMO's DEFAULT_VEHTYPE; a taken-over vehicle's from its vType)
+  /// Rear-axle centre to front bumper [m]. Default: kBaseLinkShare of the length (3.7 m of 4.5 m).
+  double base_link_to_front = 3.7;
   double accel = 1.0;               ///< comfortable acceleration [m/s^2] (Autoware normal set)
   double decel = 1.0;               ///< comfortable deceleration [m/s^2] (Autoware normal set)
   double emergency_decel = 9.0;     ///< the most the ego can brake [m/s^2] (SUMO passenger default)
   /// Lane index the ego departs on; -1 = the planned lane of the first edge. Another lane makes
   /// signalsim plan a lane change onto the planned lane on the first edge (see LaneChangeManeuver).
   int depart_lane = -1;
+  /// The keys the scenario (or --set) gave; the others are defaults, or SUMO's for a taken-over ego.
+  std::set<std::string> given;
+};
+/// base_link_to_front / length when the scenario gives no base_link_to_front: Autoware's default
+/// car has its rear axle 0.8 m ahead of the rear bumper on 4.5 m (3.7 m to the front).
+inline constexpr double kBaseLinkShare = 3.7 / 4.5;
+
+/// What SUMO is given beyond the net (issue 10): a user's .sumocfg, route files and SUMO options.
+struct SumoInputs {
+  std::string sumocfg;                        ///< the .sumocfg (resolved), empty when none
+  std::vector<std::string> route_files;       ///< SUMO -r: the sumocfg's, then `routes:`
+  std::vector<std::string> sumo_args;         ///< `sumo_args:` tokens as written (checked at load)
+  std::vector<sumo::SumoOption> cfg_options;  ///< the sumocfg's other options, passed on to SUMO
+  std::string cfg_dir;                        ///< the sumocfg's folder (its relative file names)
+  std::string scenario_dir;                   ///< the scenario's folder (relative names in sumo_args)
+  double begin = 0.0;                         ///< the sumocfg's begin [s]
+  std::optional<double> end;                  ///< the sumocfg's end [s]: the run ends there at the latest
+  /// For the summary: the sumocfg values the run used, those the scenario's own keys replaced, and
+  /// the options signalsim ignores because it sets them itself (each with the reason).
+  std::vector<std::string> cfg_used, cfg_overridden, cfg_ignored;
 };
 
 /// `maneuvers: [{lane_change: {at, length}}]`: the timing of the lane change from ego.depart_lane to
@@ -161,7 +189,8 @@ struct Scenario {
   std::string name;
   std::string description;
   std::string net;                      ///< absolute or relative to the cwd (resolved from the file)
-  std::vector<std::string> additional;  ///< resolved like `net`
+  std::vector<std::string> additional;  ///< resolved like `net`; the sumocfg's first
+  SumoInputs sumo;                      ///< `sumocfg:`, `routes:`, `sumo_args:`
   double step_length = 0.1;             ///< [s]
   double duration = 60.0;               ///< simulated seconds at most
   int seed = 1;

@@ -9,6 +9,7 @@
 #include "scenario/behavior_stage.hpp"
 #include "scenario/light_stage.hpp"
 #include "scenario/route_planning.hpp"
+#include "scenario/session_setup.hpp"
 #include "sumo/approach_lights.hpp"
 #include "sumo/sumo_session.hpp"
 #include "turn_signal/turn_signal_decider.hpp"
@@ -27,33 +28,6 @@ Blinker blinker_of(const TurnSignalDecision& d) {
 }
 
 bool is_red(char state) { return state == 'r' || state == 'u'; }
-
-sumo::SessionConfig session_config(const Scenario& scenario, const sumo::RoutePlan& plan, const LateralPlan& lateral) {
-  sumo::SessionConfig config;
-  config.net = scenario.net;
-  config.additional = scenario.additional;
-  config.step_length = scenario.step_length;
-  config.seed = scenario.seed;
-  config.route = scenario.ego.route;
-  config.depart_lane = plan.entry_lane_per_edge.empty() ? 0 : plan.entry_lane_per_edge.front();
-  if (scenario.ego.depart_lane >= 0) config.depart_lane = scenario.ego.depart_lane;
-  config.depart_pos = scenario.ego.depart_pos;
-  config.depart_speed = scenario.ego.depart_speed;
-  config.max_speed = scenario.ego.max_speed;
-  config.length = scenario.ego.length;
-  config.accel = scenario.ego.accel;
-  config.emergency_decel = scenario.ego.emergency_decel;
-  // SUMO never changes lanes on its own: signalsim drives every lane change (plan_lateral).
-  config.keep_planned_lanes = true;
-  if (lateral.active()) {
-    // signalsim drives the lane change (sublane offsets re-commanded every step, spec SUMO §4).
-    config.lateral_resolution = 0.1;
-    config.keep_planned_lanes = true;
-  }
-  config.depart_pos_lat = lateral.depart_offset;
-  for (const ObstacleSpec& o : scenario.obstacles) config.standing.push_back({o.id, o.edge, o.lane, o.pos, o.length});
-  return config;
-}
 
 // Records stops (rest position against the stop point) and red-light crossings as they happen.
 class LightOutcomes {
@@ -117,7 +91,17 @@ int signal_mask(Blinker b) {
   return 0;
 }
 
-RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, const sumo::NetIndex& net) {
+RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, const sumo::NetIndex& net,
+                       const RunContext& context) {
+  const StartedRun run = start_run(plan_run(scenario, plan), net, context);
+  return drive(run, net);
+}
+
+RunRecord drive(const StartedRun& run, const sumo::NetIndex& net) {
+  const Scenario& scenario = run.scenario;
+  const sumo::RoutePlan& plan = run.plan;
+  const LateralPlan& lateral = run.lateral;
+  sumo::SumoSession& session = *run.session;
   const RouteMap& route = plan.map;
   const double b2f = scenario.ego.base_link_to_front;
   const double dt = scenario.step_length;
@@ -127,7 +111,12 @@ RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, co
   TurnSignalDecider decider(turn_signal_parameters(scenario.params, b2f));
   RunRecord record;
   record.base_link_to_front = b2f;
-  const LateralPlan lateral = plan_lateral(scenario, plan, net);
+  record.sumo.backend = session.backend();
+  if (run.config.backend.kind == sumo::BackendKind::Connect)
+    record.sumo.endpoint = run.config.backend.host + ":" + std::to_string(run.config.backend.port);
+  record.sumo.ego = session.ego_vehicle();
+  record.sumo.args = run.config.extra_args;
+  record.sumo.log = run.config.log_file;
   BehaviorStageConfig behavior_config;
   behavior_config.path_forward = scenario.params.number("forward_path_length");
   behavior_config.route_length = route.length();
@@ -138,7 +127,6 @@ RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, co
   BehaviorStage behavior_stage(
       lateral, behavior_parameters(scenario.params, decider.parameters(), scenario.ego.length, kObstacleWidth),
       behavior_config);
-  sumo::SumoSession session(session_config(scenario, plan, lateral));
   // A lane change's target lane: the other vehicles on it, in route s (asked only while one waits).
   const auto target_lane_traffic = [&](const LateralSegment& seg) {
     std::vector<OccupiedSpan> spans;
@@ -215,6 +203,10 @@ RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, co
         stopping = &l;
     // The timeline describes that light, else the nearest one.
     const LightStep* shown = stopping ? stopping : (light_steps.empty() ? nullptr : &light_steps.front());
+
+    // SUMO's right of way would hold the ego at a red line on its own (spec SUMO §4, measured): while
+    // the next junction is a light showing the ego red or yellow, the judge alone decides there.
+    session.set_right_of_way(!light_decides_next_junction(route, s_front, light_steps));
 
     // plan: lane limits, and a jerk-limited stop when a judge asks for one.
     double speed = plan_speed_under_limits(route, s_front, observed.speed, dt, limits);

@@ -14,11 +14,18 @@
 
 #include "scenario/scenario.hpp"
 #include "scenario/timeline.hpp"
+#include "scenario/session_setup.hpp"
 #include "sumo/route_builder.hpp"
 
 namespace signalsim {
 
-/// Runs one scenario on its planned route. Throws sumo::SumoError when SUMO fails.
-RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, const sumo::NetIndex& net);
+/// Runs one scenario on its planned route, on the back-end `context` names (embedded libsumo by
+/// default). Throws sumo::SumoError when SUMO fails.
+RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, const sumo::NetIndex& net,
+                       const RunContext& context = {});
+
+/// The step loop on a run whose SUMO is started (session_setup.hpp start_run). Throws
+/// sumo::SumoError when SUMO fails.
+RunRecord drive(const StartedRun& run, const sumo::NetIndex& net);
 
 }  // namespace signalsim

@@ -9,6 +9,8 @@
 #include "traffic_light/traffic_light_judge.hpp"
 
 #include "scenario/scenario.hpp"
+#include "sumo/sumo_log.hpp"
+#include "sumo/sumo_session.hpp"
 #include "turn_signal/turn_signal_info.hpp"
 
 namespace signalsim {
@@ -95,6 +97,16 @@ struct ExpectationResult {
   std::string detail;            ///< why it failed, or what held
 };
 
+/// Which SUMO ran, the ego as it departed there, and what SUMO said (summary.json `sumo`, `ego`).
+struct RunSumoInfo {
+  sumo::BackendKind backend = sumo::BackendKind::Embedded;
+  std::string endpoint;             ///< connect: host:port
+  sumo::EgoVehicle ego;             ///< as SUMO had it at departure
+  std::vector<std::string> args;    ///< the options passed through (sumo_args, the sumocfg's)
+  std::string log;                  ///< SUMO's log file, empty when none
+  sumo::SumoLogCounts log_counts;   ///< counted after SUMO closed
+};
+
 struct RunRecord {
   std::vector<TimelineRow> rows;
   std::vector<TimelineEvent> events;
@@ -106,6 +118,7 @@ struct RunRecord {
   int off_route_steps = 0;       ///< steps on a lane not on the planned route (route position held)
   int collisions = 0;
   double base_link_to_front = 0.0;
+  RunSumoInfo sumo;
 };
 
 }  // namespace signalsim

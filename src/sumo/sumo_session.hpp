@@ -1,5 +1,10 @@
-// SumoSession: the one place that calls libsumo. Starts SUMO in-process, inserts the ego, steps,
-// observes and commands it. One session per process (libsumo is not re-entrant, spec SUMO §1).
+// SumoSession: what the step loop sees of SUMO, whatever SUMO it runs on. One interface, three
+// back-ends chosen at run time (spec SUMO §1):
+//   embedded  libsumo in this process (default; batch, sweep and check use it)
+//   gui       a sumo-gui this process starts and drives over TraCI (libtraci), the ego tracked
+//   connect   a sumo or sumo-gui someone else started, stepped in lock-step with its other clients
+// The per-step logic is written once (session_impl.hpp) and compiled against both libsumo and
+// libtraci; only starting and closing differ (session_embedded.cpp, session_traci.cpp).
 #pragma once
 
 #include <memory>
@@ -9,9 +14,8 @@
 
 namespace signalsim::sumo {
 
-class StderrCapture;
-
-/// A SUMO failure (load error, unknown id, ...). what() carries SUMO's own first error line.
+/// A SUMO failure (load error, unknown id, refused or lost connection, ...). what() carries SUMO's
+/// own first error line.
 class SumoError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
@@ -23,6 +27,9 @@ inline constexpr int kBlinkerLeft = 2;
 inline constexpr int kBlinkerEmergency = 4;
 inline constexpr int kBlinkerMask = kBlinkerRight | kBlinkerLeft | kBlinkerEmergency;
 
+/// The id signalsim gives an ego it adds itself.
+inline constexpr const char* kDefaultEgoId = "ego";
+
 /// A vehicle standing still on a lane for the whole run (an obstacle to pass).
 struct StandingVehicle {
   std::string id;
@@ -32,20 +39,49 @@ struct StandingVehicle {
   double length = 4.5;  ///< [m]; width, as SUMO's DEFAULT_VEHTYPE, 1.8 m
 };
 
+/// Which SUMO the session runs on.
+enum class BackendKind { Embedded, Gui, Connect };
+std::string_view to_string(BackendKind kind);
+
+struct BackendOptions {
+  BackendKind kind = BackendKind::Embedded;
+  std::string host = "127.0.0.1";  ///< connect: the server's host
+  int port = 0;                    ///< connect: its TraCI port
+  int client_order = 1;            ///< connect: TraCI setOrder (clients step in ascending order)
+  int gui_delay_ms = 0;            ///< gui: sumo-gui's --delay between steps [ms]
+  /// gui: a PNG of the view (TraCI GUI.screenshot) written here at the first step the ego's blinker
+  /// is on (or at the last step when it never is); empty: none.
+  std::string screenshot;
+  std::string sumo_gui_binary = "sumo-gui";
+};
+
 struct SessionConfig {
+  BackendOptions backend;
   std::string net;
-  std::vector<std::string> additional;
+  std::vector<std::string> route_files;  ///< SUMO -r (loaded incrementally)
+  std::vector<std::string> additional;   ///< SUMO -a
+  /// Options passed through to SUMO as they are (sumo_args, the sumocfg's other options), already
+  /// checked and with relative output paths resolved (sumo_options.hpp).
+  std::vector<std::string> extra_args;
+  /// SUMO's messages and errors (--log); empty: captured only to report SUMO's first error line.
+  std::string log_file;
   double step_length = 0.1;
+  double begin = 0.0;  ///< SUMO --begin [s]
   int seed = 1;
-  std::vector<std::string> route;  ///< ego edges
+  /// The ego: an id of a vehicle of the route files to take over when it departs, or empty to add
+  /// one (id kDefaultEgoId) on `route` at `begin`.
+  std::string take_over;
+  double take_over_until = 0.0;  ///< take over: the latest simulation time to wait for its departure [s]
+  std::vector<std::string> route;  ///< ego edges (added ego)
   int depart_lane = 0;
   double depart_pos = 0.0;
   /// Lateral offset from the depart lane's centre [m, left positive]; needs lateral_resolution > 0.
-  /// The ego is moved there standing still before the constructor returns (a few steps).
+  /// The ego is moved there standing still before the session is returned (a few steps).
   double depart_pos_lat = 0.0;
   double depart_speed = 0.0;
   double max_speed = 13.89;
   double length = 4.5;
+  double width = 1.8;              ///< [m]
   double accel = 1.0;              ///< vehicle type accel [m/s^2]
   double decel = 4.5;              ///< vehicle type decel: the most SUMO brakes with speed-mode bit 2
   double emergency_decel = 9.0;
@@ -57,6 +93,23 @@ struct SessionConfig {
   double lateral_resolution = 0.0;
   /// Inserted with the ego, each with a stop at its position that lasts for the whole run.
   std::vector<StandingVehicle> standing;
+};
+
+/// The ego as SUMO has it once it departed: what a taken-over vehicle brings from its route file.
+struct EgoVehicle {
+  std::string id;
+  std::string type;            ///< its vType id (a distribution's member when drawn from one)
+  double length = 0.0;         ///< [m]
+  double width = 0.0;          ///< [m]
+  double max_speed = 0.0;      ///< [m/s]
+  double accel = 0.0;          ///< [m/s^2]
+  double decel = 0.0;          ///< [m/s^2]
+  double emergency_decel = 0.0;
+  std::vector<std::string> route;  ///< its edges
+  double depart_time = 0.0;    ///< [s]
+  int depart_lane = 0;         ///< lane index on the first edge at departure
+  double depart_pos = 0.0;     ///< front bumper's lane position at departure [m]
+  double depart_speed = 0.0;   ///< [m/s]
 };
 
 /// The ego as SUMO reports it after a step.
@@ -74,23 +127,27 @@ struct EgoState {
 
 class SumoSession {
  public:
-  /// Starts SUMO (step length, seed, --time-to-teleport -1, collisions as warnings) and inserts
-  /// the ego; returns once the ego has departed. Throws SumoError with SUMO's message.
-  explicit SumoSession(const SessionConfig& config);
-  ~SumoSession();
+  virtual ~SumoSession() = default;
   SumoSession(const SumoSession&) = delete;
   SumoSession& operator=(const SumoSession&) = delete;
 
-  /// Advances one step. Returns false once the ego has arrived (it is then gone).
-  bool step();
-  double time() const;
+  /// The back-end this session runs on.
+  virtual BackendKind backend() const = 0;
+  /// The ego as it departed (its id, type and route included).
+  virtual const EgoVehicle& ego_vehicle() const = 0;
+  /// SUMO's step length [s] (Simulation::getDeltaT).
+  virtual double delta_t() const = 0;
 
-  EgoState ego() const;
+  /// Advances one step. Returns false once the ego has arrived (it is then gone).
+  virtual bool step() = 0;
+  virtual double time() const = 0;
+
+  virtual EgoState ego() const = 0;
   /// The signal mask SUMO shows for the ego now (spec SUMO §4 read-back).
-  int ego_signals() const;
+  virtual int ego_signals() const = 0;
   /// Sets the ego's signals for the next step (must be re-sent every step, spec SUMO §4) and its
   /// speed (held until changed).
-  void command(int signal_mask, double speed);
+  virtual void command(int signal_mask, double speed) = 0;
 
   /// The ego's lateral offset [m, left positive] from the centre line of `reference_lane_id`, a
   /// lane of the edge the ego is on: its offset inside its own lane (getLateralLanePosition) plus
@@ -102,7 +159,7 @@ class SumoSession {
   /// this returns the plain getLateralLanePosition (offset from the centre of whatever lane the ego
   /// is on). A reference lane of an internal edge works like any other while the ego is on that
   /// internal edge. Throws SumoError for an unknown lane.
-  double lateral_offset_from(const std::string& reference_lane_id) const;
+  virtual double lateral_offset_from(const std::string& reference_lane_id) const = 0;
 
   /// Moves the ego sideways (SUMO changeSublane) so that after the next step its offset from the
   /// centre of `reference_lane_id` is `target_offset_next_step` [m, left positive]. Call it every
@@ -117,12 +174,12 @@ class SumoSession {
   /// the run of lanes around its own that its vehicle class may use (a sidewalk or any lane that
   /// disallows it is a border, like the outside of the edge). Unclamped, SUMO would refuse a move past
   /// the border and leave the ego short of it.
-  void command_lateral_offset(double target_offset_next_step, const std::string& reference_lane_id);
+  virtual void command_lateral_offset(double target_offset_next_step, const std::string& reference_lane_id) = 0;
 
   /// Emulated backward driving (SUMO cannot drive backward): moves the ego `distance` metres back
   /// along its lane now (Vehicle::moveTo), keeping its lateral offset in the lane. Command speed 0
   /// for the step. Throws SumoError when the ego would leave the start of its lane.
-  void move_back(double distance);
+  virtual void move_back(double distance) = 0;
 
   /// Another vehicle on a lane: its front's lane position and its length [m].
   struct LaneVehicle {
@@ -132,32 +189,39 @@ class SumoSession {
   };
   /// The vehicles other than the ego whose lane is `lane_id` now (Lane::getLastStepVehicleIDs, in
   /// SUMO's order). Throws SumoError for an unknown lane.
-  std::vector<LaneVehicle> vehicles_on_lane(const std::string& lane_id) const;
+  virtual std::vector<LaneVehicle> vehicles_on_lane(const std::string& lane_id) const = 0;
 
   /// Live state of a light: one character per link index (spec SUMO §2).
-  std::string light_state(const std::string& tls_id) const;
+  virtual std::string light_state(const std::string& tls_id) const = 0;
 
   /// The phase states of every program SUMO loaded for a light (net and additional files).
-  std::vector<std::string> program_states(const std::string& tls_id) const;
+  virtual std::vector<std::string> program_states(const std::string& tls_id) const = 0;
 
   /// Shifts a light's running program as if it had started `offset` seconds earlier (modulo its
   /// cycle), from the current simulation time. Throws SumoError for an unknown light.
-  void shift_light_program(const std::string& tls_id, double offset);
+  virtual void shift_light_program(const std::string& tls_id, double offset) = 0;
 
   /// Emergency braking: lets the ego brake beyond its vehicle type's `decel` (speed-mode bit 2
   /// cleared, spec SUMO §4) while on.
-  void set_emergency_braking(bool on);
+  virtual void set_emergency_braking(bool on) = 0;
+
+  /// Whether SUMO's right of way at junctions applies to the ego (speed-mode bit 3, on by default).
+  /// The step loop switches it off while the next junction the ego enters is a light showing the
+  /// ego red or yellow: the judge is then the only decision at that link. With bit 3 on, SUMO holds
+  /// a slow ego 1 m (jmStoplineGap) before a red line while crossing traffic approaches, overriding
+  /// the judge (measured on bologna/acosta: 5 of 113 approaches; none with the bit off).
+  virtual void set_right_of_way(bool respect) = 0;
 
   /// Collisions involving the ego so far.
-  int ego_collisions() const { return ego_collisions_; }
+  virtual int ego_collisions() const = 0;
 
- private:
-  std::string sumo_reason(const std::exception& e) const;
-  void move_to_depart_offset(const SessionConfig& config);
-  std::unique_ptr<StderrCapture> capture_;  ///< SUMO's stderr while the session lives
-  int ego_collisions_ = 0;
-  bool emergency_braking_ = false;
-  double lateral_resolution_ = 0.0;
+ protected:
+  SumoSession() = default;
 };
+
+/// Starts SUMO on the configured back-end and inserts (or waits for and takes over) the ego; returns
+/// once the ego has departed. Throws SumoError with SUMO's message, a refused connection, a missing
+/// display, a step length that differs from a connected server's, ...
+std::unique_ptr<SumoSession> open_session(const SessionConfig& config);
 
 }  // namespace signalsim::sumo

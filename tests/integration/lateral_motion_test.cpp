@@ -69,7 +69,8 @@ struct Tracking {
 // Drives `plan` (offsets from the centre of `reference`) at constant `speed` until base_link
 // reaches `s_stop`, commanding the offset for the next step each step.
 Tracking drive(const ShiftPlan& plan, double speed, double s_stop, const std::string& reference = kLane0) {
-  sumo::SumoSession session(config(speed));
+  const auto owner = sumo::open_session(config(speed));
+  sumo::SumoSession& session = *owner;
   Tracking t;
   std::string previous_lane;
   double previous_offset = 0.0, previous_lat = 0.0;
@@ -160,7 +161,8 @@ TEST(LateralMotion, TheNetHasTheLanesTheTestsAssume) {
 }
 
 TEST(LateralMotion, OffsetFromAnotherLaneOfTheEdgeIsTheDistanceBetweenTheCentres) {
-  sumo::SumoSession session(config(10.0));
+  const auto owner = sumo::open_session(config(10.0));
+  sumo::SumoSession& session = *owner;
   ASSERT_TRUE(session.step());
   EXPECT_NEAR(session.lateral_offset_from(kLane0), 0.0, 1e-9);
   EXPECT_NEAR(session.lateral_offset_from(kLane1), -0.5 * (lane_width(kLane0) + lane_width(kLane1)), 1e-9);
@@ -173,13 +175,15 @@ TEST(LateralMotion, OffsetFromAnotherLaneOfTheEdgeIsTheDistanceBetweenTheCentres
 TEST(LateralMotion, CommandingAnOffsetNeedsTheSublaneModel) {
   sumo::SessionConfig c = config(10.0);
   c.lateral_resolution = 0.0;
-  sumo::SumoSession session(c);
+  const auto owner = sumo::open_session(c);
+  sumo::SumoSession& session = *owner;
   EXPECT_THROW(session.command_lateral_offset(0.5, kLane0), sumo::SumoError);
   EXPECT_NEAR(session.lateral_offset_from(kLane0), 0.0, 1e-9);  // measuring works in either model
 }
 
 TEST(LateralMotion, ATargetBeyondTheRoadEdgeStopsAtTheEdge) {
-  sumo::SumoSession session(config(10.0));
+  const auto owner = sumo::open_session(config(10.0));
+  sumo::SumoSession& session = *owner;
   const double edge_offset = -0.5 * (lane_width(kLane0) - kVehicleWidth);
   for (int k = 0; k < 30; ++k) {
     session.command(0, 10.0);

@@ -1,0 +1,124 @@
+#include "scenario/sumo_inputs.hpp"
+
+#include <filesystem>
+#include <sstream>
+
+#include "scenario/input_error.hpp"
+#include "sumo/sumocfg.hpp"
+
+namespace signalsim {
+namespace fs = std::filesystem;
+namespace {
+
+std::string resolve_from(const std::string& dir, const std::string& path) {
+  const fs::path p(path);
+  if (p.is_absolute()) return p.lexically_normal().string();
+  return (fs::path(dir) / p).lexically_normal().string();
+}
+
+std::string number_text(double v) {
+  std::ostringstream out;
+  out << v;
+  return out.str();
+}
+
+// The sumo_args tokens, checked now so that a refused option stops the run before SUMO starts.
+std::vector<std::string> read_sumo_args(const YamlFields& top, const std::string& path) {
+  const std::vector<std::string> tokens = top.text_list("sumo_args");
+  try {
+    // Owned options are refused here; paths are resolved later, against the run's --out.
+    (void)sumo::sumo_tokens(sumo::parse_sumo_tokens(tokens), "sumo_args", "", "", true);
+  } catch (const sumo::SumoOptionError& e) {
+    throw InputError(path, top.line_of("sumo_args"), e.what());
+  }
+  return tokens;
+}
+
+}  // namespace
+
+void read_simulation_keys(const YamlFields& top, const std::string& path, Scenario& s) {
+  const std::string dir = fs::path(path).parent_path().string();
+  s.sumo.scenario_dir = dir;
+  std::optional<sumo::SumoConfigFile> cfg;
+  if (top.has("sumocfg")) {
+    s.sumo.sumocfg = resolve_from(dir, top.text("sumocfg"));
+    if (!fs::is_regular_file(s.sumo.sumocfg)) top.fail("sumocfg", "file '" + s.sumo.sumocfg + "' not found");
+    cfg = sumo::read_sumocfg(s.sumo.sumocfg);  // NetError "<cfg>:<line>: ..." for a bad file
+    s.sumo.cfg_dir = cfg->dir;
+  }
+  SumoInputs& in = s.sumo;
+  const auto used = [&](const std::string& what) { in.cfg_used.push_back(what); };
+  const auto overridden = [&](const std::string& option, const std::string& theirs, const std::string& key,
+                              const std::string& ours) {
+    in.cfg_overridden.push_back(option + " " + theirs + " -> scenario " + key + " " + ours);
+  };
+
+  // The net: the scenario's own key wins over the sumocfg's net-file.
+  if (top.has("net")) {
+    s.net = resolve_from(dir, top.text("net"));
+    if (!fs::is_regular_file(s.net)) top.fail("net", "net file '" + s.net + "' not found");
+    if (cfg && cfg->net) overridden("net-file", *cfg->net, "net", s.net);
+  } else if (cfg && cfg->net) {
+    s.net = *cfg->net;
+    used("net-file " + s.net);
+  } else if (cfg) {
+    top.fail("sumocfg", "'" + s.sumo.sumocfg + "' names no net-file, and the scenario has no net:");
+  } else {
+    throw InputError(path, 0, "missing required key 'net' (or 'sumocfg')");
+  }
+
+  // Route and additional files: the sumocfg's, then the scenario's.
+  if (cfg) {
+    in.route_files = cfg->route_files;
+    s.additional = cfg->additional;
+    for (const std::string& f : cfg->route_files) used("route-files " + f);
+    for (const std::string& f : cfg->additional) used("additional-files " + f);
+  }
+  for (const std::string& r : top.text_list("routes")) {
+    in.route_files.push_back(resolve_from(dir, r));
+    if (!fs::is_regular_file(in.route_files.back())) top.fail("routes", "file '" + in.route_files.back() + "' not found");
+  }
+  for (const std::string& a : top.text_list("additional")) {
+    s.additional.push_back(resolve_from(dir, a));
+    if (!fs::is_regular_file(s.additional.back())) top.fail("additional", "file '" + s.additional.back() + "' not found");
+  }
+
+  // Step length, seed, begin and end.
+  s.step_length = top.number("step_length", cfg && cfg->step_length ? *cfg->step_length : 0.1, 0.001, 1.0);
+  s.seed = top.integer("seed", cfg && cfg->seed ? *cfg->seed : 1, 0, 2147483647);
+  if (cfg && cfg->step_length) {
+    if (top.has("step_length")) overridden("step-length", number_text(*cfg->step_length), "step_length", number_text(s.step_length));
+    else used("step-length " + number_text(s.step_length));
+  }
+  if (cfg && cfg->seed) {
+    if (top.has("seed")) overridden("seed", std::to_string(*cfg->seed), "seed", std::to_string(s.seed));
+    else used("seed " + std::to_string(s.seed));
+  }
+  if (cfg && cfg->begin) {
+    in.begin = *cfg->begin;
+    used("begin " + number_text(in.begin));
+  }
+  if (cfg && cfg->end) {
+    if (*cfg->end <= in.begin) throw InputError(s.sumo.sumocfg, 0, "end " + number_text(*cfg->end) + " is not after begin");
+    in.end = *cfg->end;
+    used("end " + number_text(*in.end));
+  }
+  // duration: the scenario's; else until the sumocfg's end; else 60 s.
+  const double default_duration = in.end ? *in.end - in.begin : 60.0;
+  s.duration = top.number("duration", default_duration, 0.001, 86400.0);
+
+  // The sumocfg's other options go on to SUMO, but for those signalsim sets itself.
+  if (cfg) {
+    for (const sumo::SumoConfigFile::Other& o : cfg->others) {
+      std::string reason;
+      if (sumo::option_kind(o.option.name, &reason) == sumo::OptionKind::Owned) {
+        in.cfg_ignored.push_back(o.option.name + " (line " + std::to_string(o.line) + "): " + reason);
+        continue;
+      }
+      in.cfg_options.push_back(o.option);
+    }
+  }
+  in.sumo_args = read_sumo_args(top, path);
+}
+
+}  // namespace signalsim

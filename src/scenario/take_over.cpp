@@ -1,0 +1,110 @@
+#include "scenario/take_over.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "scenario/input_error.hpp"
+
+namespace signalsim {
+namespace {
+
+std::string where(const sumo::RouteFileVehicle& v) { return v.file + ":" + std::to_string(v.line); }
+
+std::string joined(const std::vector<std::string>& edges) {
+  std::string out;
+  for (const std::string& e : edges) out += (out.empty() ? "" : " ") + e;
+  return out;
+}
+
+std::string number(double v) {
+  std::ostringstream out;
+  out << v;
+  return out.str();
+}
+
+}  // namespace
+
+std::optional<sumo::RouteFileVehicle> resolve_route_file_ego(Scenario& scenario) {
+  std::vector<std::string> files = scenario.sumo.route_files;
+  files.insert(files.end(), scenario.additional.begin(), scenario.additional.end());
+  const std::string& id = scenario.ego.id;
+  if (files.empty()) {
+    if (!id.empty())
+      throw InputError(scenario.path, 0, "ego.id '" + id + "': the scenario loads no route files (routes: or a sumocfg "
+                                         "with route-files) that could define it");
+    return std::nullopt;
+  }
+  const sumo::RouteFiles defined = sumo::RouteFiles::scan(files);
+  if (id.empty()) {
+    if (const sumo::RouteFileVehicle* clash = defined.vehicle(sumo::kDefaultEgoId))
+      throw InputError(clash->file, clash->line,
+                       "<" + clash->kind + "> '" + clash->id + "' has the id signalsim gives the ego it adds (" +
+                           scenario.path + "): take it over with ego.id: " + clash->id + ", or rename it");
+    return std::nullopt;
+  }
+  const sumo::RouteFileVehicle* v = defined.vehicle(id);
+  if (v == nullptr)
+    throw InputError(scenario.path, 0, "ego.id '" + id + "': no <vehicle>, <trip> or <flow> of the route files (" +
+                                           std::to_string(files.size()) + " files) defines it");
+  if (v->edges.empty())
+    throw InputError(v->file, v->line,
+                     "<" + v->kind + "> '" + v->id + "' (ego.id) has no edges of its own (a trip, or a route "
+                     "distribution): SUMO computes its route only when it departs, and signalsim plans the ego's "
+                     "lanes before SUMO starts; give it a <route> (e.g. with duarouter) or take over another vehicle");
+  if (scenario.ego.given.count("route") && scenario.ego.route != v->edges)
+    throw InputError(scenario.path, 0, "ego.route [" + joined(scenario.ego.route) + "] contradicts the route of '" + id +
+                                           "' in " + where(*v) + " [" + joined(v->edges) + "]");
+  scenario.ego.route = v->edges;
+  return *v;
+}
+
+Scenario with_taken_over_ego(const Scenario& scenario, const sumo::EgoVehicle& vehicle,
+                             const sumo::RouteFileVehicle& definition) {
+  Scenario s = scenario;
+  EgoSpec& ego = s.ego;
+  // A given key must repeat SUMO's value (to 1 mm, 1 mm/s); otherwise SUMO's value is the ego's.
+  const auto take = [&](const char* key, double& field, double sumo_value) {
+    if (ego.given.count(key) && std::abs(field - sumo_value) > 1e-3)
+      throw InputError(scenario.path, 0, std::string("ego.") + key + " " + number(field) + " contradicts vehicle '" +
+                                             vehicle.id + "' of " + where(definition) + ": its vType '" + vehicle.type +
+                                             "' has " + number(sumo_value));
+    field = sumo_value;
+  };
+  take("length", ego.length, vehicle.length);
+  take("width", ego.width, vehicle.width);
+  take("max_speed", ego.max_speed, vehicle.max_speed);
+  take("accel", ego.accel, vehicle.accel);
+  take("emergency_decel", ego.emergency_decel, vehicle.emergency_decel);
+  if (!ego.given.count("base_link_to_front")) ego.base_link_to_front = kBaseLinkShare * ego.length;
+  if (ego.base_link_to_front > ego.length)
+    throw InputError(scenario.path, 0, "ego.base_link_to_front " + number(ego.base_link_to_front) +
+                                           " m is longer than vehicle '" + vehicle.id + "' (" + number(ego.length) + " m)");
+  ego.depart_lane = vehicle.depart_lane;
+  ego.depart_pos = vehicle.depart_pos;
+  ego.depart_speed = vehicle.depart_speed;
+  return s;
+}
+
+std::map<std::string, std::string> ego_sources(const Scenario& scenario, const std::string& vehicle_type) {
+  const EgoSpec& ego = scenario.ego;
+  const bool taken = !ego.id.empty();
+  const std::string sumo_type = "vType '" + vehicle_type + "'";
+  std::map<std::string, std::string> out;
+  const auto source = [&](const char* key, bool from_sumo) {
+    out[key] = ego.given.count(key) ? "scenario" : (taken && from_sumo ? sumo_type : "default");
+  };
+  source("route", true);
+  for (const char* key : {"length", "width", "max_speed", "accel", "emergency_decel"}) source(key, true);
+  source("decel", false);
+  if (!ego.given.count("base_link_to_front")) out["base_link_to_front"] = "length x 3.7/4.5";
+  else out["base_link_to_front"] = "scenario";
+  if (taken) {
+    out["route"] = ego.given.count("route") ? "scenario (equal to its route file's)" : "route file";
+    for (const char* key : {"depart_lane", "depart_pos", "depart_speed"}) out[key] = "SUMO (its departure)";
+  } else {
+    for (const char* key : {"depart_lane", "depart_pos", "depart_speed"}) source(key, false);
+  }
+  return out;
+}
+
+}  // namespace signalsim

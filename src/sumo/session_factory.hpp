@@ -1,0 +1,15 @@
+// The back-ends' factories, one per translation unit (libsumo and libtraci cannot share one, spec
+// SUMO §1); open_session (session_factory.cpp) picks one. Private to src/sumo.
+#pragma once
+
+#include <memory>
+
+#include "sumo/sumo_session.hpp"
+
+namespace signalsim::sumo {
+
+std::unique_ptr<SumoSession> open_embedded_session(const SessionConfig& config);
+/// gui (starts sumo-gui itself) and connect (an existing server).
+std::unique_ptr<SumoSession> open_traci_session(const SessionConfig& config);
+
+}  // namespace signalsim::sumo

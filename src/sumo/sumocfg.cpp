@@ -1,0 +1,102 @@
+#include "sumo/sumocfg.hpp"
+
+#include <pugixml.hpp>
+
+#include <filesystem>
+
+#include "sumo/net_file.hpp"
+#include "sumo/net_index.hpp"
+#include "sumo/number_parsing.hpp"
+#include "sumo/xml_lines.hpp"
+
+namespace signalsim::sumo {
+namespace fs = std::filesystem;
+namespace {
+
+std::vector<std::string> split_list(const std::string& value) {
+  // SUMO file lists are comma separated (blanks around entries are allowed).
+  std::vector<std::string> out;
+  std::string entry;
+  const auto flush = [&] {
+    const auto first = entry.find_first_not_of(" \t\r\n");
+    if (first != std::string::npos) out.push_back(entry.substr(first, entry.find_last_not_of(" \t\r\n") - first + 1));
+    entry.clear();
+  };
+  for (char c : value) {
+    if (c == ',') flush();
+    else entry += c;
+  }
+  flush();
+  return out;
+}
+
+}  // namespace
+
+SumoConfigFile read_sumocfg(const std::string& path) {
+  const std::string text = read_net_file(path);
+  const LineIndex lines(text);
+  pugi::xml_document doc;
+  const pugi::xml_parse_result parsed = doc.load_buffer(text.data(), text.size());
+  if (!parsed)
+    throw NetError(path + ":" + std::to_string(lines.line_of(parsed.offset)) + ": not XML: " + parsed.description());
+  const pugi::xml_node root = doc.document_element();
+  const std::string root_name = root.name();
+  if (root_name != "configuration" && root_name != "sumoConfiguration")
+    throw NetError(path + ":" + std::to_string(lines.line_of(root.offset_debug())) +
+                   ": not a SUMO configuration (root <" + root_name + ">, expected <configuration>)");
+
+  SumoConfigFile cfg;
+  cfg.path = path;
+  cfg.dir = fs::path(path).parent_path().string();
+  const auto resolve = [&](const std::string& name) {
+    const fs::path p(name);
+    return (p.is_absolute() ? p : fs::path(cfg.dir) / p).lexically_normal().string();
+  };
+  for (pugi::xml_node category : root.children()) {
+    if (category.type() != pugi::node_element) continue;
+    for (pugi::xml_node element : category.children()) {
+      if (element.type() != pugi::node_element) continue;
+      const int line = lines.line_of(element.offset_debug());
+      const auto fail = [&](const std::string& reason) -> void {
+        throw NetError(path + ":" + std::to_string(line) + ": " + reason);
+      };
+      const pugi::xml_attribute value_attribute = element.attribute("value") ? element.attribute("value")
+                                                                              : element.attribute("v");
+      if (!value_attribute) fail("option <" + std::string(element.name()) + "> has no value attribute");
+      const std::string name = canonical_option(element.name());
+      const std::string value = value_attribute.value();
+      const auto number = [&]() {
+        const auto v = parse_double(value);
+        if (!v) fail("option '" + name + "' is not a number: '" + value + "'");
+        return *v;
+      };
+      const auto existing = [&](const std::string& file) {
+        const std::string resolved = resolve(file);
+        if (!fs::is_regular_file(resolved)) fail("option '" + name + "': file '" + resolved + "' not found");
+        return resolved;
+      };
+      if (name == "net-file") {
+        cfg.net = existing(value);
+      } else if (name == "route-files") {
+        for (const std::string& f : split_list(value)) cfg.route_files.push_back(existing(f));
+      } else if (name == "additional-files") {
+        for (const std::string& f : split_list(value)) cfg.additional.push_back(existing(f));
+      } else if (name == "begin") {
+        cfg.begin = number();
+      } else if (name == "end") {
+        cfg.end = number();
+      } else if (name == "step-length") {
+        cfg.step_length = number();
+      } else if (name == "seed") {
+        const auto seed = parse_int(value);
+        if (!seed) fail("option 'seed' is not an integer: '" + value + "'");
+        cfg.seed = *seed;
+      } else {
+        cfg.others.push_back({SumoOption{name, value, true}, line});
+      }
+    }
+  }
+  return cfg;
+}
+
+}  // namespace signalsim::sumo
