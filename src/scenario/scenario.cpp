@@ -242,7 +242,10 @@ Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrid
   YamlFields ego(top.node("ego"), path, "ego");
   for (const char* key : {"id", "route", "depart_pos", "depart_speed", "max_speed", "length", "width",
                           "base_link_to_front", "accel", "decel", "emergency_decel", "depart_lane"})
-    if (ego.has(key)) s.ego.given.insert(key);
+    if (ego.has(key)) {
+      s.ego.given.insert(key);
+      s.ego.lines[key] = ego.line_of(key);
+    }
   s.ego.id = ego.text_or("id", "");
   s.ego.route = ego.text_list("route");
   if (s.ego.route.empty() && s.ego.id.empty()) ego.fail("route", "the route needs at least one edge");

@@ -40,6 +40,7 @@ struct EgoSpec {
   int depart_lane = -1;
   /// The keys the scenario (or --set) gave; the others are defaults, or SUMO's for a taken-over ego.
   std::set<std::string> given;
+  std::map<std::string, int> lines;  ///< the scenario file's line of each given key (0: from --set)
 };
 /// base_link_to_front / length when the scenario gives no base_link_to_front: Autoware's default
 /// car has its rear axle 0.8 m ahead of the rear bumper on 4.5 m (3.7 m to the front).

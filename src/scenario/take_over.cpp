@@ -16,6 +16,12 @@ std::string joined(const std::vector<std::string>& edges) {
   return out;
 }
 
+// The scenario file's line of an ego key (0 when it came from --set or is not given).
+int line_of(const Scenario& s, const std::string& key) {
+  const auto it = s.ego.lines.find(key);
+  return it == s.ego.lines.end() ? 0 : it->second;
+}
+
 std::string number(double v) {
   std::ostringstream out;
   out << v;
@@ -30,7 +36,7 @@ std::optional<sumo::RouteFileVehicle> resolve_route_file_ego(Scenario& scenario)
   const std::string& id = scenario.ego.id;
   if (files.empty()) {
     if (!id.empty())
-      throw InputError(scenario.path, 0, "ego.id '" + id + "': the scenario loads no route files (routes: or a sumocfg "
+      throw InputError(scenario.path, line_of(scenario, "id"), "ego.id '" + id + "': the scenario loads no route files (routes: or a sumocfg "
                                          "with route-files) that could define it");
     return std::nullopt;
   }
@@ -44,15 +50,16 @@ std::optional<sumo::RouteFileVehicle> resolve_route_file_ego(Scenario& scenario)
   }
   const sumo::RouteFileVehicle* v = defined.vehicle(id);
   if (v == nullptr)
-    throw InputError(scenario.path, 0, "ego.id '" + id + "': no <vehicle>, <trip> or <flow> of the route files (" +
-                                           std::to_string(files.size()) + " files) defines it");
+    throw InputError(scenario.path, line_of(scenario, "id"),
+                     "ego.id '" + id + "': no <vehicle>, <trip> or <flow> of the route files defines it (" +
+                         joined(files) + ")");
   if (v->edges.empty())
     throw InputError(v->file, v->line,
                      "<" + v->kind + "> '" + v->id + "' (ego.id) has no edges of its own (a trip, or a route "
                      "distribution): SUMO computes its route only when it departs, and signalsim plans the ego's "
                      "lanes before SUMO starts; give it a <route> (e.g. with duarouter) or take over another vehicle");
   if (scenario.ego.given.count("route") && scenario.ego.route != v->edges)
-    throw InputError(scenario.path, 0, "ego.route [" + joined(scenario.ego.route) + "] contradicts the route of '" + id +
+    throw InputError(scenario.path, line_of(scenario, "route"), "ego.route [" + joined(scenario.ego.route) + "] contradicts the route of '" + id +
                                            "' in " + where(*v) + " [" + joined(v->edges) + "]");
   scenario.ego.route = v->edges;
   return *v;
@@ -65,7 +72,7 @@ Scenario with_taken_over_ego(const Scenario& scenario, const sumo::EgoVehicle& v
   // A given key must repeat SUMO's value (to 1 mm, 1 mm/s); otherwise SUMO's value is the ego's.
   const auto take = [&](const char* key, double& field, double sumo_value) {
     if (ego.given.count(key) && std::abs(field - sumo_value) > 1e-3)
-      throw InputError(scenario.path, 0, std::string("ego.") + key + " " + number(field) + " contradicts vehicle '" +
+      throw InputError(scenario.path, line_of(scenario, key), std::string("ego.") + key + " " + number(field) + " contradicts vehicle '" +
                                              vehicle.id + "' of " + where(definition) + ": its vType '" + vehicle.type +
                                              "' has " + number(sumo_value));
     field = sumo_value;

@@ -313,6 +313,7 @@ class SessionImpl : public SumoSession {
   }
 
   void take_control() {
+    vehicle_.type = Api::Vehicle::getTypeID(ego_);  // before the setters below give it a type of its own
     if (!config_.take_over.empty()) {
       // The taken-over vehicle keeps its vType, but drives deterministically like an added ego.
       Api::Vehicle::setSpeedFactor(ego_, 1.0);
@@ -323,7 +324,6 @@ class SessionImpl : public SumoSession {
     if (config_.keep_planned_lanes) Api::Vehicle::setLaneChangeMode(ego_, 0);
     if (config_.lateral_resolution > 0.0) Api::Vehicle::setParameter(ego_, "laneChangeModel.lcAccelLat", "20");
     vehicle_.id = ego_;
-    vehicle_.type = Api::Vehicle::getTypeID(ego_);
     vehicle_.length = Api::Vehicle::getLength(ego_);
     vehicle_.width = Api::Vehicle::getWidth(ego_);
     vehicle_.max_speed = Api::Vehicle::getMaxSpeed(ego_);

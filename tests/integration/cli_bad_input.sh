@@ -55,5 +55,20 @@ check unknown_light_offset run "$bad/unknown_light_offset.yaml" -- "unknown_ligh
 check mid_run_sumo_error run "$bad/mid_run_sumo_error.yaml" -- "mid_run_sumo_error.yaml" "Vehicle 'bad' has no valid route"
 [ -f "$work/mid_run_sumo_error/events.csv" ] && { echo "FAIL mid_run_sumo_error: the old events.csv survived"; failures=$((failures + 1)); }
 
-echo "$((16 - failures)) passed, $failures failed"
+# The user's SUMO files (issue 10).
+check missing_sumocfg run "$bad/missing_sumocfg.yaml" -- "missing_sumocfg.yaml:2" "key 'sumocfg'" "nowhere.sumocfg' not found"
+check sumocfg_without_net run "$bad/sumocfg_without_net.yaml" -- "sumocfg_without_net.yaml:2" "no_net.sumocfg' names no net-file"
+check unknown_ego_id run "$bad/unknown_ego_id.yaml" -- "unknown_ego_id.yaml:4" "ego.id 'veh99'" "demand.rou.xml"
+check trip_as_ego run "$bad/trip_as_ego.yaml" -- "demand.rou.xml:13" "<trip> 'trip7'" "no edges of its own"
+check ego_contradicts_vtype run "$bad/ego_contradicts_vtype.yaml" -- "ego_contradicts_vtype.yaml:5" "ego.length 4.5 contradicts vehicle 'veh42'" "demand.rou.xml:10" "vType 'sedan' has 4.8"
+check ego_route_contradicts run "$bad/ego_route_contradicts.yaml" -- "ego_route_contradicts.yaml:5" "ego.route \[in_S out_N\] contradicts" "\[in_S out_W\]"
+check forbidden_sumo_arg run "$bad/forbidden_sumo_arg.yaml" -- "forbidden_sumo_arg.yaml:3" "SUMO option 'step-length' is set by signalsim"
+check route_file_has_ego run "$bad/route_file_has_ego.yaml" -- "ego_id_taken.rou.xml:2" "<vehicle> 'ego' has the id signalsim gives the ego"
+# The back-ends: nothing listens on the port (one bound and released here), no display for sumo-gui.
+port=$(python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')
+check refused_port run "$src/scenarios/intersection_left.yaml" --connect "127.0.0.1:$port" -- "cannot connect to SUMO at 127.0.0.1:$port" "connection refused"
+check bad_connect_address run "$src/scenarios/intersection_left.yaml" --connect nowhere -- "--connect" "not HOST:PORT"
+DISPLAY= check gui_without_display run "$src/scenarios/intersection_left.yaml" --gui -- "--gui needs a display" "DISPLAY is not set"
+
+echo "$((27 - failures)) passed, $failures failed"
 [ $failures -eq 0 ]
