@@ -146,7 +146,14 @@ nlohmann::ordered_json metrics_from_run_dir(const std::string& run_dir, const st
     sumo::RoutePlan plan;
   };
   static std::map<std::string, std::shared_ptr<const Route>> routes;
-  const Scenario scenario = load_scenario(scenario_file, ScenarioOverrides{set});
+  Scenario scenario = load_scenario(scenario_file, ScenarioOverrides{set});
+  const fs::path dir(run_dir);
+  const auto summary = read_json_file((dir / "summary.json").string());
+  // The ego as the run had it (a taken-over vehicle's route and length are SUMO's).
+  if (summary.contains("route") && summary["route"].contains("edges"))
+    scenario.ego.route = summary["route"]["edges"].get<std::vector<std::string>>();
+  if (summary.contains("ego") && summary["ego"].contains("base_link_to_front"))
+    scenario.ego.base_link_to_front = summary["ego"]["base_link_to_front"].get<double>();
   std::string key = scenario.net;
   for (const std::string& edge : scenario.ego.route) key += "\n" + edge;
   for (int lane : required_exit_lanes(scenario)) key += "\n" + std::to_string(lane);
@@ -156,12 +163,10 @@ nlohmann::ordered_json metrics_from_run_dir(const std::string& run_dir, const st
     sumo::RoutePlan plan = sumo::build_route(*net, scenario.ego.route, required_exit_lanes(scenario));
     route = std::make_shared<const Route>(Route{std::move(net), std::move(plan)});
   }
-  const fs::path dir(run_dir);
   RunRecord record;
   record.rows = read_timeline_csv((dir / "timeline.csv").string());
   record.events = read_events_csv((dir / "events.csv").string());
   record.base_link_to_front = scenario.ego.base_link_to_front;
-  const auto summary = read_json_file((dir / "summary.json").string());
   if (summary.contains("counts")) {
     record.collisions = summary["counts"].value("collisions", 0);
     record.arrived = summary["counts"].value("arrived", false);

@@ -17,6 +17,7 @@
 #include "scenario/input_error.hpp"
 #include "scenario/metrics.hpp"
 #include "scenario/route_planning.hpp"
+#include "scenario/take_over.hpp"
 #include "scenario/scenario.hpp"
 #include "scenario/yaml_fields.hpp"
 #include "sumo/net_index.hpp"
@@ -347,7 +348,8 @@ void check_sweep_plot(const Sweep& sweep, const std::vector<RunSpec>& runs) {
   bool planned = false;
   for (const RunSpec& run : runs) {
     try {
-      const Scenario scenario = load_scenario(run.scenario, ScenarioOverrides{run.set});
+      Scenario scenario = load_scenario(run.scenario, ScenarioOverrides{run.set});
+      resolve_route_file_ego(scenario);  // a taken-over vehicle's route is in the route files
       std::string key = scenario.net;
       for (const std::string& edge : scenario.ego.route) key += "\n" + edge;
       for (const int lane : required_exit_lanes(scenario)) key += "\n" + std::to_string(lane);

@@ -32,16 +32,18 @@ for _ in $(seq 50); do [ -s "$work/display" ] && break; sleep 0.1; done
 display=":$(head -1 "$work/display")"
 [ "$display" != ":" ] || { echo "FAIL: Xvfb did not start: $(cat "$work/xvfb.log")"; exit 1; }
 
-# The other TraCI client: steps as client `order` until `until` s, then leaves.
+# The other TraCI client: steps as client `order` until `until` s (pausing `pause` s a step), then leaves.
 cat >"$work/other_client.py" <<'PY'
-import sys
+import sys, time
 sys.path.insert(0, "/usr/share/sumo/tools")
 import traci
 port, order, until = int(sys.argv[1]), int(sys.argv[2]), float(sys.argv[3])
+pause = float(sys.argv[4]) if len(sys.argv) > 4 else 0.0
 traci.init(port, host="127.0.0.1")
 traci.setOrder(order)
 while traci.simulation.getTime() < until:
     traci.simulationStep()
+    time.sleep(pause)
 print("other client reached", traci.simulation.getTime())
 traci.close()
 PY
@@ -127,6 +129,24 @@ grep -q "step_length 0.1 s differs from the step length of SUMO at 127.0.0.1:$po
   fail "step-length mismatch: $(cat "$work/mismatch.err")"
 grep -q '"status": "error"' "$work/mismatch/summary.json" || fail "step-length mismatch: no error summary"
 wait "$server"  # signalsim left politely: the server ends by itself
+
+# 4. The server dies mid-run (kill -9 after 1 s, while the other client paces the run): one line,
+# exit 2, an error summary, and no timeline passed off as a finished run.
+port=$(free_port)
+sumo -n "$src/sumo_nets/cross/cross.net.xml" --remote-port "$port" --num-clients 2 --step-length 0.1 \
+  --no-step-log true >"$work/lost.server.log" 2>&1 &
+server=$!; pids+=($server)
+"$py" "$work/other_client.py" "$port" 1 100 0.01 >"$work/lost.other.log" 2>&1 &
+pids+=($!)
+(sleep 1; kill -9 "$server") &
+"$bin" run "$s1" --out "$work/lost" --connect "127.0.0.1:$port" --client-order 2 >/dev/null 2>"$work/lost.err"
+code=$?
+[ $code -eq 2 ] || fail "lost connection: exit code $code, want 2"
+[ "$(wc -l <"$work/lost.err")" -eq 1 ] || fail "lost connection: not one line: $(cat "$work/lost.err")"
+grep -q "the connection to SUMO at 127.0.0.1:$port failed or was lost" "$work/lost.err" ||
+  fail "lost connection: $(cat "$work/lost.err")"
+grep -q '"status": "error"' "$work/lost/summary.json" || fail "lost connection: no error summary"
+[ -e "$work/lost/timeline.csv" ] && fail "lost connection: a timeline was written"
 
 echo "backends: $failures failures"
 [ $failures -eq 0 ]
