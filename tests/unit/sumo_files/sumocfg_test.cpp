@@ -1,0 +1,71 @@
+// The .sumocfg reader on signalsim's own configurations (tests/data/user_sumo, bologna_acosta).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "sumo/net_index.hpp"
+#include "sumo/sumocfg.hpp"
+
+namespace signalsim::sumo {
+namespace {
+
+const std::string kSource = SIGNALSIM_SOURCE_DIR;
+
+std::string write_temp(const std::string& name, const std::string& text) {
+  const auto path = std::filesystem::temp_directory_path() / name;
+  std::ofstream(path) << text;
+  return path.string();
+}
+
+TEST(Sumocfg, ReadsFilesTimesSeedAndKeepsTheOtherOptionsWithTheirLines) {
+  const SumoConfigFile cfg = read_sumocfg(kSource + "/tests/data/user_sumo/cross.sumocfg");
+  ASSERT_TRUE(cfg.net);
+  EXPECT_EQ(*cfg.net, kSource + "/sumo_nets/cross/cross.net.xml");  // relative to the .sumocfg
+  ASSERT_EQ(cfg.route_files.size(), 1u);
+  EXPECT_EQ(cfg.route_files[0], kSource + "/tests/data/user_sumo/demand.rou.xml");
+  ASSERT_EQ(cfg.additional.size(), 1u);
+  EXPECT_EQ(cfg.begin, 0.0);
+  EXPECT_EQ(cfg.end, 120.0);
+  EXPECT_EQ(cfg.step_length, 0.1);
+  EXPECT_EQ(cfg.seed, 7);
+  ASSERT_EQ(cfg.others.size(), 4u);
+  EXPECT_EQ(cfg.others[0].option.name, "time-to-teleport");
+  EXPECT_EQ(cfg.others[1].option.name, "tripinfo-output");
+  EXPECT_EQ(cfg.others[1].option.value, "tripinfo.xml");
+  EXPECT_EQ(cfg.others[2].option.name, "log");
+  EXPECT_EQ(cfg.others[2].line, 26);
+}
+
+TEST(Sumocfg, ThePublishedShapeWithSeveralFilesPerOption) {
+  const SumoConfigFile cfg = read_sumocfg(kSource + "/sumo_nets/bologna_acosta/acosta.sumocfg");
+  EXPECT_EQ(cfg.route_files.size(), 2u);
+  EXPECT_EQ(cfg.additional.size(), 3u);
+  EXPECT_FALSE(cfg.step_length);  // not given: the scenario's (or signalsim's 0.1 s)
+}
+
+TEST(Sumocfg, BadFilesNameTheFileAndLine) {
+  const auto message = [](const std::string& path) {
+    try {
+      read_sumocfg(path);
+    } catch (const NetError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  const std::string missing_input = write_temp("signalsim_missing_input.sumocfg",
+                                               "<configuration>\n<input>\n<net-file value=\"nowhere.net.xml\"/>\n"
+                                               "</input>\n</configuration>\n");
+  EXPECT_NE(message(missing_input).find("signalsim_missing_input.sumocfg:3: option 'net-file': file"), std::string::npos)
+      << message(missing_input);
+  const std::string bad_number = write_temp("signalsim_bad_number.sumocfg",
+                                            "<configuration>\n<time>\n<end value=\"soon\"/>\n</time>\n</configuration>\n");
+  EXPECT_NE(message(bad_number).find(":3: option 'end' is not a number: 'soon'"), std::string::npos)
+      << message(bad_number);
+  const std::string not_cfg = write_temp("signalsim_not_cfg.sumocfg", "<net/>\n");
+  EXPECT_NE(message(not_cfg).find("not a SUMO configuration"), std::string::npos) << message(not_cfg);
+  EXPECT_NE(message(kSource + "/nowhere.sumocfg").find("nowhere.sumocfg"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace signalsim::sumo
