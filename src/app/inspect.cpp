@@ -19,6 +19,13 @@ void print_net_summary(std::ostream& out, const sumo::NetIndex& net) {
   out << "net " << net.path() << ": " << net.edge_count() << " edges, " << net.tl_logics().size()
       << " traffic lights, " << net.roundabouts().size() << " roundabouts, "
       << (net.lefthand() ? "left-hand" : "right-hand") << " traffic\n";
+  // The loading rule (sumo/net_index.hpp): defects are listed; only a route that uses one is refused.
+  if (net.defects().empty()) return;
+  out << net.defects().size() << " defect(s) recorded; a route that uses the element is refused, unless marked [no route reads it]:\n";
+  for (const sumo::NetDefect& d : net.defects()) {
+    out << "  " << net.path() << ":" << d.line << ": " << d.element << ": " << d.reason
+        << (d.affects_routes ? "" : " [no route reads it]") << "\n";
+  }
 }
 
 void print_route(std::ostream& out, const sumo::RoutePlan& plan) {

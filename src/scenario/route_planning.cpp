@@ -280,6 +280,9 @@ sumo::RoutePlan plan_route(const Scenario& scenario, const sumo::NetIndex& net) 
   sumo::RoutePlan plan;
   try {
     plan = prepare_route(sumo::build_route(net, scenario.ego.route, required_exit_lanes(scenario)), scenario.params);
+  } catch (const sumo::NetDefectError& e) {
+    // The defect's own file and line (the net's), and which scenario route uses it.
+    throw InputError(e.file(), e.line(), e.detail() + " in ego.route of " + scenario.path);
   } catch (const sumo::RouteError& e) {
     std::string hint;
     for (const LaneChangeManeuver& m : scenario.lane_changes)

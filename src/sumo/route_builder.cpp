@@ -99,6 +99,13 @@ bool ring_edge_has_exit(const NetIndex& net, const NetEdge& edge, std::size_t ri
   });
 }
 
+/// Refuses the route when `kind` `id` has a defect; `use` says how the route uses it.
+void refuse_defective(const NetIndex& net, NetElement kind, const std::string& id, const std::string& use) {
+  if (const NetDefect* d = net.defect(kind, id)) {
+    throw NetDefectError(net.path(), d->line, d->element + ": " + d->reason + " (" + use + ")");
+  }
+}
+
 Lanelet lanelet_of(const NetEdge& edge, const NetLane& lane) {
   Lanelet l;
   l.lane_id = lane.id;
@@ -128,6 +135,7 @@ RoutePlan build_route(const NetIndex& net, const std::vector<std::string>& edges
     if (edge->is_internal || id.front() == ':') {
       throw RouteError("route edge " + quoted(id) + " is an internal (junction) edge; a route lists normal edges");
     }
+    refuse_defective(net, NetElement::Edge, id, "a route edge");
     if (edge->lanes.empty()) throw RouteError("route edge " + quoted(id) + " has no lanes");
     route.push_back(edge);
   }
@@ -167,6 +175,11 @@ RoutePlan build_route(const NetIndex& net, const std::vector<std::string>& edges
     const NetEdge& edge = *route[i];
     const NetLane& lane = edge.lanes[static_cast<std::size_t>(plan.exit_lanes[i])];
     const auto edge_ring = net.roundabout_of_edge(edge.id);
+    // The lanes the ego drives here: entered on, left on, and crossed between them.
+    for (int k = std::min(plan.lanes[i], plan.exit_lanes[i]); k <= std::max(plan.lanes[i], plan.exit_lanes[i]); ++k) {
+      refuse_defective(net, NetElement::Lane, edge.lanes[static_cast<std::size_t>(k)].id,
+                       "a lane the route drives on edge " + quoted(edge.id));
+    }
 
     Lanelet normal = lanelet_of(edge, lane);
     normal.successor_turn_directions = successor_directions(net, lane.id);
@@ -180,6 +193,10 @@ RoutePlan build_route(const NetIndex& net, const std::vector<std::string>& edges
       normal.leaves_ring_at_end = ring_edge_has_exit(net, edge, *edge_ring);
     }
     const NetConnection* link = i + 1 < route.size() ? plan.links[i] : nullptr;
+    if (link != nullptr && !link->tl.empty()) {
+      refuse_defective(net, NetElement::TlLogic, link->tl,
+                       "the light of the route's connection " + quoted(edge.id) + " -> " + quoted(edges[i + 1]));
+    }
     // The stop line is this lane's end: the light of the connection taken leaves it.
     if (link != nullptr && !link->tl.empty()) normal.traffic_light = TrafficLightLink{link->tl, link->link_index};
     push(std::move(normal));
@@ -209,10 +226,15 @@ RoutePlan build_route(const NetIndex& net, const std::vector<std::string>& edges
         throw RouteError("route edges " + quoted(edge.id) + " -> " + quoted(next_edge) + ": internal lane " +
                          quoted(via) + " is not in the net");
       }
+      const std::string use = "an internal lane of the route's connection " + quoted(edge.id) + " -> " + quoted(next_edge);
+      refuse_defective(net, NetElement::Edge, internal_edge->id, use);
+      refuse_defective(net, NetElement::Lane, via, use);
       Lanelet l = lanelet_of(*internal_edge, *internal);
       l.is_internal = true;
       l.junction_id = junction_of_internal_lane(via);
       if (net.junction(l.junction_id) == nullptr) l.junction_id = edge.to_junction;
+      refuse_defective(net, NetElement::Junction, l.junction_id,
+                       "the junction of the route's connection " + quoted(edge.id) + " -> " + quoted(next_edge));
       const NetConnection* via_of = net.connection_via(via);
       l.turn_direction = turn_direction_of(via_of != nullptr ? via_of->dir : link->dir, net.lefthand());
       l.successor_turn_directions = successor_directions(net, via);

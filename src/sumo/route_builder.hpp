@@ -17,6 +17,23 @@ class RouteError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// The route uses an element of the net with a NetDefect (the loading rule, net_index.hpp).
+/// what() = "<net>:<line>: <detail>"; detail() = "<element>: <reason> (<how the route uses it>)".
+class NetDefectError : public RouteError {
+ public:
+  NetDefectError(std::string file, int line, std::string detail)
+      : RouteError(file + ":" + std::to_string(line) + ": " + detail),
+        file_(std::move(file)), line_(line), detail_(std::move(detail)) {}
+  const std::string& file() const { return file_; }
+  int line() const { return line_; }
+  const std::string& detail() const { return detail_; }
+
+ private:
+  std::string file_;
+  int line_;
+  std::string detail_;
+};
+
 struct RoutePlan {
   RouteMap map;                    ///< normal and internal lanelets, contiguous in s from 0
   /// Planned lane index on each route edge (same order as the edges): the lane with the connection
@@ -34,7 +51,9 @@ struct RoutePlan {
 /// the connection's via lane and any further internal lanes chained from it become lanelets.
 /// Turn directions, roundabout roles (with Lanelet::leaves_ring_at_end on ring lanelets), params,
 /// lights and stop offsets per spec SUMO §3.
-/// Throws RouteError.
+/// Throws RouteError; NetDefectError when the route uses an element with a NetDefect: a route
+/// edge, a lane it drives (entered, left or crossed), an internal lane (or edge) of a connection it
+/// takes, the junction that lane lies in, or the light of such a connection.
 /// `required_exit`: requested lane changes (see plan_lanes).
 RoutePlan build_route(const NetIndex& net, const std::vector<std::string>& edges,
                       const std::vector<int>& required_exit = {});
