@@ -31,6 +31,13 @@ void print_net_summary(std::ostream& out, const sumo::NetIndex& net) {
 void print_route(std::ostream& out, const sumo::RoutePlan& plan) {
   out << "route: " << plan.map.size() << " lanelets, " << format("%.2f", plan.map.length()) << " m, "
       << plan.lane_changes << " lane change(s) planned\n";
+  // Where the lane plan put each lane change, and the room it has there (sumo/lane_change_room.hpp).
+  for (const sumo::PlannedLaneChange& c : plan.changes) {
+    out << format("lane change on edge '%s': lane %d -> %d, a %.2f m shift in %.2f m of room: ", c.edge.c_str(),
+                  c.from_lane, c.to_lane, c.shift, c.room)
+        << (c.fits ? "fits" : "does not fit")
+        << format(" (at least %.2f m of lateral motion at %.2f m/s)\n", c.min_length, plan.rooms[c.edge_index].speed);
+  }
   out << format("%4s %9s %9s  %-18s %-9s %-10s %-8s %7s %-14s %s\n", "#", "s_start", "s_end", "lane", "turn",
                 "roundabout", "junction", "v_max", "light", "params");
   for (std::size_t i = 0; i < plan.map.size(); ++i) {

@@ -7,7 +7,7 @@
 #include <string_view>
 #include <utility>
 
-#include "sumo/lane_plan.hpp"
+#include "sumo/route_lanes.hpp"
 #include "sumo/turn_direction.hpp"
 #include "sumo/number_parsing.hpp"
 
@@ -122,7 +122,7 @@ Lanelet lanelet_of(const NetEdge& edge, const NetLane& lane) {
 }  // namespace
 
 RoutePlan build_route(const NetIndex& net, const std::vector<std::string>& edges,
-                      const std::vector<int>& required_exit) {
+                      const std::vector<int>& required_exit, const LaneChangeEgo& ego) {
   if (edges.empty()) throw RouteError("the route has no edges");
 
   // Every route edge exists and is a normal edge.
@@ -140,28 +140,9 @@ RoutePlan build_route(const NetIndex& net, const std::vector<std::string>& edges
     route.push_back(edge);
   }
 
-  // Consecutive edges are connected.
-  std::vector<std::vector<const NetConnection*>> links(route.size() - 1);
-  std::vector<std::vector<bool>> usable;
-  for (std::size_t i = 0; i < route.size(); ++i) {
-    usable.emplace_back();
-    for (const NetLane& lane : route[i]->lanes) usable.back().push_back(lane.allows_passenger);
-    if (i + 1 == route.size()) break;
-    for (const NetLane& lane : route[i]->lanes) {
-      for (const NetConnection& c : net.connections_from_lane(lane.id)) {
-        if (c.to_edge == edges[i + 1]) links[i].push_back(&c);
-      }
-    }
-    if (links[i].empty()) {
-      throw RouteError("route edges " + quoted(edges[i]) + " -> " + quoted(edges[i + 1]) + " are not connected");
-    }
-  }
-
-  const LanePlan plan = plan_lanes(usable, links, required_exit);
-  if (plan.lanes.size() != route.size()) {
-    throw RouteError("route " + quoted(edges.front()) + " ... " + quoted(edges.back()) +
-                     ": no lane sequence connects the route edges");
-  }
+  // The lane plan (route_lanes.cpp): connections, permissions, the room of every edge.
+  const RouteLanes lanes = plan_route_lanes(net, route, required_exit, ego);
+  const LanePlan& plan = lanes.plan;
 
   std::vector<Lanelet> lanelets;
   double s = 0.0;
@@ -264,6 +245,8 @@ RoutePlan build_route(const NetIndex& net, const std::vector<std::string>& edges
   out.lane_per_edge = plan.exit_lanes;
   out.entry_lane_per_edge = plan.lanes;
   out.lane_changes = plan.lane_changes;
+  out.rooms = lanes.rooms;
+  out.changes = lanes.changes;
   return out;
 }
 

@@ -50,4 +50,20 @@ code=$?
 [ ! -s "$work/nan.out" ] || fail "defect on the route: output written: $(cat "$work/nan.out")"
 "$bin" inspect "$work/nan.net.xml" --route cb bc > /dev/null || fail "a route beside the defect: exit $?"
 echo "ok   a defect the route uses is exit 2 with one line naming the net's line; a route beside it builds"
+# Issue 11, point 3: inspect says where the lane plan put the lane change and the room it has there
+# (was: exit 2, the lane change on the 0.54 m edge 204[1][0] did not fit).
+"$bin" inspect "$acosta" --route 46 201 201c "204a[0]" "204b[0]" "204[1][0]" 125 > "$work/room.txt" 2> "$work/room.err" \
+  || fail "room: exit $?: $(cat "$work/room.err")"
+grep -qF "lane change on edge '201': lane 0 -> 1, a 3.20 m shift in 227.67 m of room: fits (at least 19.90 m of lateral motion at 13.89 m/s)" "$work/room.txt" \
+  || fail "room: $(grep "lane change" "$work/room.txt")"
+echo "ok   the lane change goes on the edge with the most room, and inspect names it"
+
+# Issue 11, point 4: a lane change across the bus lane 31_1 is exit 2 with one line.
+"$bin" inspect "$acosta" --route 165 31 113 > "$work/bus.out" 2> "$work/bus.err"
+code=$?
+[ "$code" = 2 ] || fail "bus lane: exit code $code, expected 2"
+[ "$(cat "$work/bus.err")" = "signalsim: $acosta: --route: the lane change the route needs on edge '31' (lane 0 -> 2) crosses lane '31_1', which a passenger car may not use; no other lane sequence connects the route edges" ] \
+  || fail "bus lane: $(cat "$work/bus.err")"
+[ ! -s "$work/bus.out" ] || fail "bus lane: output written"
+echo "ok   a lane change across a bus lane is exit 2 naming the edge and the lane"
 echo "cli_inspect passed"
