@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <unordered_map>
 #include <utility>
 
 #include "sumo/net_file.hpp"
@@ -20,6 +21,39 @@
 #include "sumo/number_parsing.hpp"
 
 namespace signalsim::sumo {
+namespace {
+
+/// The offset of the first definition of a repeated id. Repeated ids are rare (SUMO refuses them),
+/// so the table of first definitions is built only at the first one: one pass over the document,
+/// and the load stays linear however many ids repeat.
+class FirstDefinitions {
+ public:
+  std::ptrdiff_t of(pugi::xml_node root, const std::string& kind, const std::string& key) {
+    if (!built_) build(root);
+    const auto it = first_.find(kind + "\n" + key);
+    return it == first_.end() ? -1 : it->second;
+  }
+
+ private:
+  void build(pugi::xml_node root) {
+    built_ = true;
+    for (pugi::xml_node n : root.children()) {
+      const std::string name = n.name();
+      if (name == "edge" || name == "junction") first_.emplace(name + "\n" + n.attribute("id").value(), n.offset_debug());
+      if (name == "tlLogic") {
+        first_.emplace(name + "\n" + n.attribute("id").value() + "\n" + n.attribute("programID").value(),
+                       n.offset_debug());
+      }
+      if (name != "edge") continue;
+      for (pugi::xml_node lane : n.children("lane"))
+        first_.emplace(std::string("lane\n") + lane.attribute("id").value(), lane.offset_debug());
+    }
+  }
+  bool built_ = false;
+  std::unordered_map<std::string, std::ptrdiff_t> first_;
+};
+
+}  // namespace
 
 class NetLoader {
  public:
@@ -41,6 +75,7 @@ class NetLoader {
 
   NetIndex& net_;
   DefectLog& log_;
+  FirstDefinitions first_;
 };
 
 namespace {
@@ -52,11 +87,6 @@ DefectOwner owner(NetElement kind, const std::string& id) {
   return std::make_pair(kind, id);
 }
 
-/// Offset of the first child `name` of `parent` with this id: only looked up for a repeated id,
-/// which SUMO refuses anyway, so the normal load keeps no table of offsets.
-std::ptrdiff_t first_offset(pugi::xml_node parent, const char* name, const std::string& id) {
-  return parent.find_child_by_attribute(name, "id", id.c_str()).offset_debug();
-}
 
 // The `dir` values SUMO 1.15 writes (LinkDirection): s t T l r L R, and "invalid".
 std::optional<char> read_dir(const std::string& dir) {
@@ -145,8 +175,7 @@ void NetLoader::edge(pugi::xml_node node) {
   const XmlElement e(node, what, self, log_);
   if (edge.id.empty()) return e.defect("attribute 'id' is missing");
   if (net_.edge_by_id_.count(edge.id) != 0) {
-    return e.defect("another edge has this id; this one is ignored", true,
-                    first_offset(node.parent(), "edge", edge.id));
+    return e.defect("another edge has this id; this one is ignored", true, first_.of(node.parent(), "edge", edge.id));
   }
   edge.is_internal = e.text("function") == "internal";
   edge.from_junction = e.text("from");
@@ -173,10 +202,8 @@ void NetLoader::edge(pugi::xml_node node) {
     lane.index = static_cast<int>(i);
     if (lane.id.empty()) continue;
     if (const auto [first, fresh] = net_.lane_by_id_.emplace(lane.id, std::make_pair(edge_pos, i)); !fresh) {
-      const NetEdge& other = net_.edges_[first->second.first];
-      const pugi::xml_node earlier = node.parent().find_child_by_attribute("edge", "id", other.id.c_str());
       XmlElement(nodes[order[i]], describe("lane", lane.id), owner(NetElement::Lane, lane.id), log_)
-          .defect("another lane has this id", true, first_offset(earlier, "lane", lane.id));
+          .defect("another lane has this id", true, first_.of(node.parent(), "lane", lane.id));
     }
   }
   net_.edges_.push_back(std::move(edge));
@@ -192,7 +219,7 @@ void NetLoader::junction(pugi::xml_node node) {
   junction.y = j.number("y", 0.0);
   if (net_.junctions_.count(junction.id) != 0) {
     return j.defect("another junction has this id; this one is ignored", true,
-                    first_offset(node.parent(), "junction", junction.id));
+                    first_.of(node.parent(), "junction", junction.id));
   }
   net_.junctions_.emplace(junction.id, std::move(junction));
 }
@@ -261,14 +288,12 @@ void NetLoader::tl_logic(pugi::xml_node node) {
     const auto state = ph.required_text("state");
     logic.phases.push_back({duration.value_or(0.0), state.value_or("")});
   }
-  if (const auto it = net_.tl_logic_by_id_.find(logic.id); it != net_.tl_logic_by_id_.end()) {
-    // Few programs share an id: their programIDs are compared one by one.
-    for (pugi::xml_node other = node.parent().find_child_by_attribute("tlLogic", "id", logic.id.c_str());
-         other && other != node; other = other.next_sibling("tlLogic")) {
-      if (logic.id == other.attribute("id").value() && logic.program_id == other.attribute("programID").value()) {
-        return t.defect("another tlLogic has this id and programID '" + logic.program_id + "'; this one is ignored",
-                        true, other.offset_debug());
-      }
+  if (net_.tl_logic_by_id_.count(logic.id) != 0) {
+    // Several programs may share an id, not an id and a programID.
+    const std::ptrdiff_t first = first_.of(node.parent(), "tlLogic", logic.id + "\n" + logic.program_id);
+    if (first != t.offset()) {
+      return t.defect("another tlLogic has this id and programID '" + logic.program_id + "'; this one is ignored",
+                      true, first);
     }
   }
   // Several programs may share an id: tl_logic(id) returns the first one in the file.

@@ -180,6 +180,32 @@ TEST(NetDefectsRefused, DuplicateEdgeIdNamesBothLines) {
   EXPECT_EQ(c.net.edge("bc")->lanes.size(), 2u);  // the first one
 }
 
+TEST(NetDefectsRefused, DuplicateLaneAndJunctionIds) {
+  const ChangedLine lane("<lane id=\"cb_0\"", "<lane id=\"bc_0\"");
+  EXPECT_EQ(lane.net.defect(NetElement::Lane, "bc_0")->reason,
+            "another lane has this id (first defined at line " + std::to_string(line_of(lane.text, "<lane id=\"bc_0\"")) + ")");
+  EXPECT_EQ(lane.net.lane("bc_0"), &lane.net.edge("bc")->lanes[0]);  // the first one
+  const ChangedLine junction("<junction id=\"A\"", "<junction id=\"B\"");
+  EXPECT_EQ(junction.net.defect(NetElement::Junction, "B")->reason,
+            "another junction has this id; this one is ignored (first defined at line " +
+                std::to_string(line_of(junction.text, "<junction id=\"B\"")) + ")");
+}
+
+TEST(NetDefectsRefused, ProgramsMayShareAnIdButNotAnIdAndAProgramId) {
+  const std::string logic = "<tlLogic id=\"C\" type=\"static\" programID=\"0\" offset=\"0\">";
+  const ChangedLine other(logic, "<tlLogic id=\"C\" type=\"static\" programID=\"1\" offset=\"0\"><phase duration=\"5\" "
+                                 "state=\"GGGGGGGGGGGGGGGGGGGG\"/></tlLogic>\n    " + logic, "crossing.net.xml");
+  EXPECT_TRUE(other.net.defects().empty());
+  EXPECT_EQ(other.net.tl_logics().size(), 2u);
+  const ChangedLine same(logic, "<tlLogic id=\"C\" type=\"static\" programID=\"0\" offset=\"0\"><phase duration=\"5\" "
+                                "state=\"GGGGGGGGGGGGGGGGGGGG\"/></tlLogic>\n    " + logic, "crossing.net.xml");
+  ASSERT_EQ(same.net.defects().size(), 1u);
+  EXPECT_EQ(same.net.defects()[0].reason, "another tlLogic has this id and programID '0'; this one is ignored (first "
+                                          "defined at line " + std::to_string(line_of(same.text, "<tlLogic")) + ")");
+  EXPECT_EQ(same.net.defects()[0].line, line_of(same.text, "<tlLogic") + 1);
+  EXPECT_EQ(same.net.tl_logics().size(), 1u);
+}
+
 TEST(NetDefectsRefused, LaneWithoutIdRefusesRoutesOverItsEdge) {
   const ChangedLine c("<lane id=\"bc_1\" ", "<lane ");
   EXPECT_EQ(route_error(c.net, {"cb", "bc"}), c.at("<lane index=\"1\"") + "edge 'bc': a <lane> has no id (a route edge)");
