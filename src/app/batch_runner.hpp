@@ -17,11 +17,10 @@
 #include <string>
 #include <vector>
 
+#include "app/command.hpp"
 #include "scenario/sweep.hpp"
 
 namespace signalsim::app {
-
-inline constexpr int kExitInterrupted = 130;
 
 struct BatchSettings {
   std::string out_dir;              ///< results.csv and runs/ go here

@@ -11,6 +11,7 @@ namespace signalsim::app {
 
 inline constexpr int kExitFailed = 1;
 inline constexpr int kExitBadInput = 2;
+inline constexpr int kExitInterrupted = 130;  ///< SIGINT / SIGTERM
 
 struct Command {
   CLI::App* sub = nullptr;

@@ -1,4 +1,6 @@
 // `signalsim run SCENARIO --out DIR`: one scenario, one SUMO, the three output files.
+#include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <filesystem>
 #include <cstdio>
@@ -15,6 +17,7 @@
 #include "scenario/step_loop.hpp"
 #include "sumo/net_index.hpp"
 #include "sumo/route_builder.hpp"
+#include "sumo/interruption.hpp"
 #include "sumo/sumo_log.hpp"
 #include "sumo/sumo_session.hpp"
 #include "scenario/session_setup.hpp"
@@ -29,9 +32,9 @@ struct RunOptions {
   std::string out_dir = "out";
   ScenarioOverrides overrides;
   bool gui = false;            ///< run in sumo-gui (libtraci)
-  int gui_delay_ms = 0;
+  int gui_delay_ms = -1;       ///< -1: not given
   std::string connect;         ///< HOST:PORT of a SUMO someone else started
-  int client_order = 1;
+  int client_order = -1;       ///< -1: not given
   bool quiet = false;
   bool plot = false;  ///< draw the run's pictures with tools/plot afterwards
 };
@@ -52,33 +55,42 @@ RunContext run_context(const RunOptions& options) {
   context.out_dir = options.out_dir;
   if (options.gui && !options.connect.empty())
     throw InputError("--gui", 0, "--gui and --connect exclude each other (attach sumo-gui with --connect instead)");
+  if (!options.gui && options.gui_delay_ms >= 0) throw InputError("--gui-delay", 0, "only applies with --gui");
+  if (options.connect.empty() && options.client_order >= 0)
+    throw InputError("--client-order", 0, "only applies with --connect");
   if (options.gui) {
     context.backend.kind = sumo::BackendKind::Gui;
-    context.backend.gui_delay_ms = options.gui_delay_ms;
+    context.backend.gui_delay_ms = std::max(0, options.gui_delay_ms);
     context.backend.screenshot = (std::filesystem::path(options.out_dir) / kGuiScreenshot).string();
   } else if (!options.connect.empty()) {
     const auto colon = options.connect.rfind(':');
-    int port = 0;
-    const bool parsed = colon != std::string::npos && colon > 0 &&
-                        std::sscanf(options.connect.c_str() + colon + 1, "%d", &port) == 1 && port > 0 && port < 65536;
+    const std::string digits = colon == std::string::npos ? std::string() : options.connect.substr(colon + 1);
+    const bool all_digits = !digits.empty() && digits.size() <= 5 &&
+                            std::all_of(digits.begin(), digits.end(), [](unsigned char c) { return std::isdigit(c); });
+    const int port = all_digits ? std::stoi(digits) : 0;
+    const bool parsed = colon > 0 && all_digits && port > 0 && port < 65536;
     if (!parsed) throw InputError("--connect", 0, "'" + options.connect + "' is not HOST:PORT (e.g. 127.0.0.1:8813)");
     context.backend.kind = sumo::BackendKind::Connect;
     context.backend.host = options.connect.substr(0, colon);
     context.backend.port = port;
-    context.backend.client_order = options.client_order;
+    context.backend.client_order = std::max(1, options.client_order);
   }
   return context;
 }
 
 int run(const RunOptions& options) {
   std::optional<Scenario> scenario;
+  // Ctrl-C / SIGTERM unwind the run (sumo-gui stopped by its PID, an error summary written).
+  sumo::install_interruption_handlers();
   try {
     scenario = load_scenario(options.scenario_path, options.overrides);
     const RunContext context = run_context(options);
     const sumo::NetIndex net = sumo::NetIndex::load(scenario->net);
     PlannedRun planned = plan_run(*scenario, net);
     check_expectations_apply(planned.scenario, planned.plan.map);
-    std::filesystem::create_directories(options.out_dir);  // SUMO's log and outputs go there
+    // SUMO writes into the run directory while it runs: a previous run's files must go first, so
+    // that an interrupted or failed run never leaves them looking like this one's.
+    clear_run_outputs(options.out_dir);
 
     const auto start = std::chrono::steady_clock::now();
     RunRecord record;
@@ -105,6 +117,9 @@ int run(const RunOptions& options) {
     }
     if (options.plot) run_plot_tool({options.out_dir});  // a failed plot is reported, the run's verdict stands
     return status == RunStatus::Failed ? kExitFailed : 0;
+  } catch (const sumo::Interrupted& e) {
+    fail(options, scenario, options.scenario_path + ": " + e.what());
+    return kExitInterrupted;
   } catch (const InputError& e) {
     return fail(options, scenario, e.what());
   } catch (const sumo::NetError& e) {

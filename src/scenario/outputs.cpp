@@ -226,6 +226,11 @@ void write_run_outputs(const std::string& dir, const Scenario& scenario, const s
   write_atomically((fs::path(dir) / "summary.json").string(), summary.dump(2) + "\n");
 }
 
+void clear_run_outputs(const std::string& dir) {
+  fs::create_directories(dir);
+  for (const char* name : {"summary.json", "timeline.csv", "events.csv", "gui.png"}) fs::remove(fs::path(dir) / name);
+}
+
 void write_error_summary(const std::string& dir, const Scenario* scenario, const std::string& message) {
   fs::create_directories(dir);
   for (const char* name : {"timeline.csv", "events.csv"}) fs::remove(fs::path(dir) / name);
