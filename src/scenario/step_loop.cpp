@@ -6,6 +6,7 @@
 
 #include "planning/speed_limit_planner.hpp"
 #include "planning/stop/jerk_limited_stop.hpp"
+#include "planning/stop/stop_speed_planner.hpp"
 #include "scenario/behavior_stage.hpp"
 #include "scenario/light_stage.hpp"
 #include "scenario/route_planning.hpp"
@@ -17,7 +18,6 @@ namespace signalsim {
 namespace {
 
 constexpr double kRestSpeed = 0.01;       // [m/s] below this the ego counts as at rest for stop errors
-constexpr double kSettleDistance = 0.02;  // [m] this close to the stop point the ego is brought to rest
 
 Blinker blinker_of(const TurnSignalDecision& d) {
   if (d.hazard == HazardLights::Enable) return Blinker::Hazard;
@@ -124,6 +124,7 @@ RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, co
   const SpeedLimits limits{scenario.ego.max_speed, scenario.ego.accel, scenario.ego.decel};
   StopPlannerParameters stop_params;
   stop_params.emergency.min_acc = -scenario.ego.emergency_decel;
+  StopSpeedPlanner stop_speed(stop_params, scenario.ego.emergency_decel);
   TurnSignalDecider decider(turn_signal_parameters(scenario.params, b2f));
   RunRecord record;
   record.base_link_to_front = b2f;
@@ -164,7 +165,6 @@ RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, co
   JudgeDecision previous_decision = JudgeDecision::None;
 
   bool departed = false;  // the ego has moved (start planner: has_departed)
-  bool hold_braking = false;  // braking for a lane change's hold point (not yet approved)
   double backed_up = 0.0;  // [m] emulated backward driving done so far
   const LateralSegment* pull_over_goal = nullptr;
   for (const LateralSegment& seg : behavior_stage.plan().segments)
@@ -216,39 +216,23 @@ RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, co
     // The timeline describes that light, else the nearest one.
     const LightStep* shown = stopping ? stopping : (light_steps.empty() ? nullptr : &light_steps.front());
 
-    // plan: lane limits, and a jerk-limited stop when a judge asks for one.
-    double speed = plan_speed_under_limits(route, s_front, observed.speed, dt, limits);
-    // A jerk-limited stop `to_go` ahead lowers the speed; returns the level when it constrains it.
-    const auto limit_for_stop = [&](double to_go) -> std::optional<StopLevel> {
-      const StopCommand stop = plan_stop({observed.speed, observed.accel, to_go, dt}, stop_params);
-      std::optional<StopLevel> level;
-      if (stop.braking || stop.commanded_velocity < speed) {
-        speed = std::min(speed, stop.commanded_velocity);
-        level = stop.level;
-      }
-      // Within 2 cm: come to rest (coarse steps never settle), if the emergency deceleration can shed
-      // the speed in this step; past the point faster than that, the planner's braking stands.
-      if (to_go < kSettleDistance && observed.speed <= scenario.ego.emergency_decel * dt) speed = 0.0;
-      return level;
-    };
+    // plan: lane limits, and a jerk-limited stop for each stop point (planning/stop/stop_speed_planner).
+    const double limits_speed = plan_speed_under_limits(route, s_front, observed.speed, dt, limits);
+    stop_speed.begin_step(observed.speed, observed.accel, limits_speed, dt);
     std::optional<StopLevel> stop_level;
-    if (stopping) stop_level = limit_for_stop(*stopping->result.stop_point_distance);
+    if (stopping) stop_level = stop_speed.add_stop(*stopping->result.stop_point_distance);
     // The pull-over goal: a jerk-limited stop with base_link at the goal (its level is not recorded).
-    if (pull_over_goal) limit_for_stop(pull_over_goal->goal_s - ego.s_base);
-    // A lane change not yet approved: base_link comes to rest before its last possible start. The
-    // hold constrains the speed from the step where a normal stop must begin (as if not braking
-    // yet: slowing for a curve ahead does not start it), then until approval.
+    if (pull_over_goal) stop_speed.add_stop(pull_over_goal->goal_s - ego.s_base);
+    // A lane change not yet approved: base_link comes to rest before its last possible start (the
+    // stop constrains the speed from the step where a normal stop must begin, until approval).
     std::optional<StopLevel> hold_level;
-    if (!behavior_step.hold_distance) {
-      hold_braking = false;
-    } else {
-      if (!hold_braking) hold_braking = plan_stop({observed.speed, 0.0, *behavior_step.hold_distance, dt}, stop_params).braking;
-      if (hold_braking) hold_level = limit_for_stop(*behavior_step.hold_distance);
-    }
+    if (behavior_step.hold_distance) hold_level = stop_speed.add_stop(*behavior_step.hold_distance);
+    double speed = stop_speed.speed();
     session.set_emergency_braking(stop_level == StopLevel::Emergency || hold_level == StopLevel::Emergency);
 
     // apply, step.
     if (backing) speed = 0.0;
+    stop_speed.end_step(speed);
     session.command(signal_mask(blinker), speed);
     // The plan's offset where base_link will be after the step (normal lanes of the plan's edge only).
     if (segment)
