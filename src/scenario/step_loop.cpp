@@ -10,6 +10,7 @@
 #include "scenario/behavior_stage.hpp"
 #include "scenario/light_stage.hpp"
 #include "scenario/route_planning.hpp"
+#include "scenario/stuck_watch.hpp"
 #include "sumo/approach_lights.hpp"
 #include "sumo/sumo_session.hpp"
 #include "turn_signal/turn_signal_decider.hpp"
@@ -170,6 +171,18 @@ RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, co
   for (const LateralSegment& seg : behavior_stage.plan().segments)
     if (seg.kind == LateralKind::PullOver) pull_over_goal = &seg;
 
+  StuckWatch stuck(scenario.params.number("stuck_rest_time"));
+  // SUMO's leader of the ego for a not-arrived reason: the nearest other vehicle ahead on the ego's
+  // own lane. A session query that also looks onto the next lanes (Vehicle::getLeader) is to replace it.
+  const LeaderQuery leader = [&session](double range) -> std::optional<LeaderInfo> {
+    const sumo::EgoState now = session.ego();
+    std::optional<LeaderInfo> nearest;
+    for (const sumo::SumoSession::LaneVehicle& v : session.vehicles_on_lane(now.lane)) {
+      const double gap = v.pos - v.length - now.lane_pos;
+      if (gap >= -1e-6 && gap <= range && (!nearest || gap < nearest->gap)) nearest = LeaderInfo{v.id, gap};
+    }
+    return nearest;
+  };
   sumo::EgoState observed = session.ego();
   while (true) {
     // observe: the ego's route position (monotonic: search from the lanelet it was on).
@@ -222,7 +235,8 @@ RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, co
     std::optional<StopLevel> stop_level;
     if (stopping) stop_level = stop_speed.add_stop(*stopping->result.stop_point_distance);
     // The pull-over goal: a jerk-limited stop with base_link at the goal (its level is not recorded).
-    if (pull_over_goal) stop_speed.add_stop(pull_over_goal->goal_s - ego.s_base);
+    std::optional<StopLevel> goal_level;
+    if (pull_over_goal) goal_level = stop_speed.add_stop(pull_over_goal->goal_s - ego.s_base);
     // A lane change not yet approved: base_link comes to rest before its last possible start (the
     // stop constrains the speed from the step where a normal stop must begin, until approval).
     std::optional<StopLevel> hold_level;
@@ -233,6 +247,15 @@ RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, co
     // apply, step.
     if (backing) speed = 0.0;
     stop_speed.end_step(speed);
+    // What of signalsim holds the ego at rest this step, if anything (the stuck rule).
+    std::string held_by;
+    if (speed < kRestSpeed) {
+      held_by = backing       ? "backing up"
+                : stop_level  ? "stopped for light " + stopping->light->tls_id
+                : hold_level  ? "the hold point of a lane change waiting for approval"
+                : goal_level  ? "the pull-over goal"
+                              : "its speed plan";
+    }
     session.command(signal_mask(blinker), speed);
     // The plan's offset where base_link will be after the step (normal lanes of the plan's edge only).
     if (segment)
@@ -298,7 +321,14 @@ RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, co
       record.arrived = true;
       break;
     }
-    if (session.time() >= end_time - 1e-9) break;
+    if (stuck.observe(record.rows.back().time, record.rows.back().speed, held_by)) {
+      record.not_arrived = not_arrived("stuck", scenario.duration, record.rows.back(), stuck, leader, route);
+      break;
+    }
+    if (session.time() >= end_time - 1e-9) {
+      record.not_arrived = not_arrived("duration", scenario.duration, record.rows.back(), stuck, leader, route);
+      break;
+    }
     observed = session.ego();
   }
   record.collisions = session.ego_collisions();
