@@ -18,7 +18,7 @@
 namespace signalsim {
 namespace {
 
-constexpr double kRestSpeed = 0.01;       // [m/s] below this the ego counts as at rest for stop errors
+constexpr double kRestSpeed = 0.01;  // [m/s] below this the ego is at rest (stop errors; a commanded speed: held)
 
 Blinker blinker_of(const TurnSignalDecision& d) {
   if (d.hazard == HazardLights::Enable) return Blinker::Hazard;
