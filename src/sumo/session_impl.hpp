@@ -232,6 +232,14 @@ class SessionImpl : public SumoSession {
     apply_speed_mode();
   }
 
+  std::optional<Leader> ego_leader(double range) const override {
+    return guarded("the ego's leader", [&]() -> std::optional<Leader> {
+      const auto [id, distance] = Api::Vehicle::getLeader(ego_, range);
+      if (id.empty()) return std::nullopt;
+      return Leader{id, distance + Api::Vehicle::getMinGap(ego_)};  // getLeader measures from front + minGap
+    });
+  }
+
   int ego_collisions() const override { return ego_collisions_; }
 
  protected:

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -211,6 +212,14 @@ class SumoSession {
   /// a slow ego 1 m (jmStoplineGap) before a red line while crossing traffic approaches, overriding
   /// the judge (measured on bologna/acosta: 5 of 113 approaches; none with the bit off).
   virtual void set_right_of_way(bool respect) = 0;
+
+  /// SUMO's leader of the ego within `range` metres along its route (Vehicle::getLeader), with the
+  /// gap from the ego's front bumper to the leader's rear; nothing when there is none.
+  struct Leader {
+    std::string id;
+    double gap = 0.0;  ///< [m]
+  };
+  virtual std::optional<Leader> ego_leader(double range) const = 0;
 
   /// Collisions involving the ego so far.
   virtual int ego_collisions() const = 0;
