@@ -6,7 +6,7 @@
 #     jp exit signal present for signalsim, missed by SUMO, which shows right; SUMO's own stop at
 #     the red light short of the line), the run directories and their drivers
 #   - comparison.png drawn with both drivers' bars
-#   - byte-identical comparison.csv on a second run and with --jobs 1
+#   - byte-identical comparison.csv on a second run and with --jobs 1; exit 3 without the picture
 #   - a scenario SUMO refuses: error rows for both drivers, exit code 1, the others complete
 #   - bad input: exit 2, one line, nothing run, an earlier comparison removed
 # usage: compare_test.sh SIGNALSIM_BINARY SOURCE_DIR
@@ -115,6 +115,15 @@ cmp -s "$work/a/comparison.csv" "$work/b/comparison.csv" || fail "comparison.csv
 "$bin" compare "${scenarios[@]}" --out "$work/c" --jobs 1 --quiet || fail "compare --jobs 1: exit $?"
 cmp -s "$work/a/comparison.csv" "$work/c/comparison.csv" || fail "comparison.csv differs with --jobs 1"
 echo "ok   comparison.csv byte-identical on a second run and with --jobs 1"
+
+# The picture cannot be drawn: the table stands, exit code 3 (as sweep --plot).
+SIGNALSIM_PLOT_TOOL=/bin/false "$bin" compare "${scenarios[0]}" --out "$work/p" --quiet 2> "$work/p.err"
+code=$?
+[ $code -eq 3 ] || fail "a failed picture: exit code $code, not 3"
+grep -q "plotting failed" "$work/p.err" || fail "a failed picture is not reported: $(cat "$work/p.err")"
+[ -s "$work/p/comparison.csv" ] || fail "a failed picture: no comparison.csv"
+[ -e "$work/p/comparison.png" ] && fail "a failed picture: comparison.png exists"
+echo "ok   a picture that cannot be drawn: comparison.csv written, exit code 3"
 
 # A scenario SUMO refuses to start: error rows for both drivers, the other scenario complete, exit 1.
 "$bin" compare "$src/tests/data/compare/sumo_fails.yaml" "${scenarios[0]}" --out "$work/e" --jobs 2 > "$work/e.log" 2>&1
