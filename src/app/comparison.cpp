@@ -1,3 +1,4 @@
+// comparison.csv rows and the screen summary of `signalsim compare`; see comparison.hpp.
 #include "app/comparison.hpp"
 
 #include <algorithm>
