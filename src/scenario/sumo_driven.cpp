@@ -27,28 +27,6 @@ char link_state(const std::string& state, int link_index) {
   return state[static_cast<std::size_t>(link_index)];
 }
 
-struct Located {
-  std::optional<double> s;  ///< route s of the front; empty: off the route
-  bool on_plan = false;     ///< the lane is the lane plan's lanelet there
-};
-
-// See the file comment of sumo_driven.hpp.
-Located locate(const RouteMap& route, const sumo::EgoState& ego, std::size_t hint, double last_s) {
-  Located out;
-  out.on_plan = route.find_lane(ego.lane, hint).has_value();
-  out.s = route.s_of(ego.lane, ego.edge, ego.lane_pos, hint);
-  if (!out.s || out.on_plan || ego.edge.empty() || ego.edge.front() != ':') return out;
-  // Another connection of a junction on the route: its lanelets there, from the first at or after hint.
-  const std::string junction = ego.edge.substr(1, ego.edge.rfind('_') - 1);
-  std::size_t i = hint;
-  while (i < route.size() && route.at(i).junction_id != junction) ++i;
-  if (i == route.size()) return out;
-  while (i + 1 < route.size() && route.at(i + 1).junction_id == junction) ++i;
-  const double end = std::max(route.at(i).s_end(), last_s);
-  out.s = std::clamp(*out.s, last_s, end);
-  return out;
-}
-
 // Records stops and red crossings at every light of the route (in route order) as they happen.
 class LightWatch {
  public:
@@ -114,6 +92,17 @@ void note_off_plan(RunRecord& record, const TimelineRow& row, const std::string&
 
 }  // namespace
 
+RoutePosition locate_on_route(const RouteMap& route, const std::string& lane, const std::string& edge, double lane_pos,
+                              std::size_t hint, double last_s) {
+  RoutePosition out;
+  out.on_plan = route.find_lane(lane, hint).has_value();
+  out.s = route.s_of(lane, edge, lane_pos, hint);
+  // Another connection of a route junction: placed on the junction's route lanelet at or after hint
+  // (RouteMap::s_of, at most its end); connections differ in length, so never behind the last s.
+  if (out.s && !out.on_plan && !edge.empty() && edge.front() == ':') out.s = std::max(*out.s, last_s);
+  return out;
+}
+
 Blinker blinker_of_signals(int mask) {
   const bool left = mask & sumo::kBlinkerLeft, right = mask & sumo::kBlinkerRight;
   if ((mask & sumo::kBlinkerEmergency) || (left && right)) return Blinker::Hazard;
@@ -147,7 +136,7 @@ RunRecord observe_sumo_drive(const StartedRun& run, const sumo::NetIndex& net) {
   while (true) {
     const sumo::EgoState observed = session.ego();
     const int signals = session.ego_signals();
-    const Located located = locate(route, observed, hint, last_s);
+    const RoutePosition located = locate_on_route(route, observed.lane, observed.edge, observed.lane_pos, hint, last_s);
     if (!located.s) ++record.off_route_steps;  // the lane is not on the route: s held (counted)
     const double s_front = located.s.value_or(last_s);
     hint = route.index_at(std::max(0.0, s_front - 1e-6));

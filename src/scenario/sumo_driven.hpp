@@ -19,12 +19,15 @@
 // Locating the front: SUMO changes lanes on its own, so the ego may be on a lane the lane plan does
 // not list. A planned lane gives its route s. Another lane of a route edge gives that edge's route
 // lanelet s plus the lane position (the lanes of an edge share its length). An internal lane of
-// another connection of a route junction gives the s of the junction's first route lanelet plus the
-// lane position, clamped to [the previous step's s, the end of the junction's route lanelets]: the
-// two connections differ in length, and the position must neither go back nor run past the junction.
-// Both count as off the plan (RunRecord::off_plan). Any other lane is off the route: s is held and
+// another connection of a route junction gives the s of the junction's route lanelet the front is on
+// (or the junction's first one ahead) plus the lane position, at most that lanelet's end, and never
+// less than the previous step's s: the two connections differ in length, and the position must
+// neither go back nor run past the junction. Both count as off the plan (RunRecord::off_plan). Any other lane is off the route: s is held and
 // the step counted (off_route_steps), as in drive().
 #pragma once
+
+#include <optional>
+#include <string>
 
 #include "scenario/session_setup.hpp"
 #include "scenario/timeline.hpp"
@@ -34,6 +37,15 @@ namespace signalsim {
 
 /// The decoded blinker of a TraCI signal mask (spec SUMO §4 bits).
 Blinker blinker_of_signals(int mask);
+
+/// Where the front is on the route (the locating rules of the file comment).
+struct RoutePosition {
+  std::optional<double> s;  ///< route s of the front; empty: off the route
+  bool on_plan = false;     ///< the lane is the lane plan's lanelet there
+};
+/// `hint`: the route index the front was on at the previous step; `last_s`: its s then.
+RoutePosition locate_on_route(const RouteMap& route, const std::string& lane, const std::string& edge, double lane_pos,
+                              std::size_t hint, double last_s);
 
 /// Observes a run started with RunContext::sumo_drives (see the file comment). Throws
 /// sumo::SumoError when SUMO fails.

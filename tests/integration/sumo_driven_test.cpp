@@ -75,6 +75,51 @@ TEST(SumoSignals, DecodeTraciBits) {
   EXPECT_EQ(blinker_of_signals(4), Blinker::Hazard);
 }
 
+// The locating rules on a synthetic route (no SUMO): a_0 | junction J, two chained internal lanes
+// :J_0_0 (5 m) and :J_1_0 (10 m) | b_0.
+RouteMap junction_route() {
+  const auto lanelet = [](const std::string& lane, const std::string& junction, double s, double length) {
+    Lanelet l;
+    l.lane_id = lane;
+    l.edge_id = lane.substr(0, lane.rfind('_'));
+    l.junction_id = junction;
+    l.is_internal = !junction.empty();
+    l.s_start = s;
+    l.length = length;
+    return l;
+  };
+  return RouteMap({lanelet("a_0", "", 0, 100), lanelet(":J_0_0", "J", 100, 5), lanelet(":J_1_0", "J", 105, 10),
+                   lanelet("b_0", "", 115, 50)});
+}
+
+TEST(SumoDrivenLocate, PlannedLaneAnotherLaneOfTheEdgeAndOffTheRoute) {
+  const RouteMap route = junction_route();
+  const RoutePosition planned = locate_on_route(route, "a_0", "a", 40.0, 0, 39.0);
+  EXPECT_TRUE(planned.on_plan);
+  EXPECT_DOUBLE_EQ(*planned.s, 40.0);
+  const RoutePosition other_lane = locate_on_route(route, "b_1", "b", 20.0, 3, 130.0);
+  EXPECT_FALSE(other_lane.on_plan);
+  EXPECT_DOUBLE_EQ(*other_lane.s, 135.0);  // b's route lanelet + the lane position
+  EXPECT_FALSE(locate_on_route(route, "c_0", "c", 5.0, 3, 140.0).s.has_value());
+}
+
+TEST(SumoDrivenLocate, AnotherConnectionNeverGoesBackNorPastTheJunction) {
+  const RouteMap route = junction_route();
+  // :J_5_0, 20 m long, another connection of J: placed from J's first route lanelet (s 100).
+  RoutePosition p = locate_on_route(route, ":J_5_0", ":J_5", 3.0, 1, 101.0);
+  EXPECT_FALSE(p.on_plan);
+  EXPECT_DOUBLE_EQ(*p.s, 103.0);
+  p = locate_on_route(route, ":J_5_0", ":J_5", 1.0, 1, 103.0);  // behind the last s: held there
+  EXPECT_DOUBLE_EQ(*p.s, 103.0);
+  p = locate_on_route(route, ":J_5_0", ":J_5", 4.0, 1, 112.0);  // s_of gives 104 < 112: held
+  EXPECT_DOUBLE_EQ(*p.s, 112.0);
+  // Longer than the route's lanelet: at most its end, never past the junction (which ends at 115).
+  p = locate_on_route(route, ":J_5_0", ":J_5", 8.0, 1, 104.0);
+  EXPECT_DOUBLE_EQ(*p.s, 105.0);
+  p = locate_on_route(route, ":J_5_0", ":J_5", 19.0, 2, 114.0);
+  EXPECT_DOUBLE_EQ(*p.s, 115.0);
+}
+
 // intersection_left: SUMO's left blinker comes on at the first step the front is within 7 s x 13.89
 // m/s (97.2 m) of the end of in_S_1, stays on through junction C and goes off on out_W.
 TEST(SumoDriven, LeftTurnBlinkerFromSevenSecondsBeforeTheApproachLaneEnd) {
