@@ -54,6 +54,10 @@ int default_jobs();
 /// another batch, std::runtime_error when the output directory cannot be written.
 BatchResult run_batch(const std::vector<RunSpec>& runs, const BatchSettings& settings);
 
+/// A worker's stderr as one line: "signalsim: " prefixes dropped, lines joined with " / ", at most
+/// about 600 characters.
+std::string stderr_one_line(const std::string& text);
+
 /// OUT/results.csv
 std::string results_path(const std::string& out_dir);
 

@@ -15,6 +15,7 @@
 #include "scenario/route_planning.hpp"
 #include "scenario/scenario.hpp"
 #include "scenario/step_loop.hpp"
+#include "scenario/sumo_driven.hpp"
 #include "sumo/net_index.hpp"
 #include "sumo/route_builder.hpp"
 #include "sumo/interruption.hpp"
@@ -37,6 +38,7 @@ struct RunOptions {
   int client_order = -1;       ///< -1: not given
   bool quiet = false;
   bool plot = false;  ///< draw the run's pictures with tools/plot afterwards
+  std::string driver = "signalsim";  ///< who drives the ego: signalsim, or sumo (observed only)
 };
 
 // Every exit-2 path: the output directory must not keep a previous run's files that could pass for
@@ -53,6 +55,7 @@ int fail(const RunOptions& options, const std::optional<Scenario>& scenario, con
 RunContext run_context(const RunOptions& options) {
   RunContext context;
   context.out_dir = options.out_dir;
+  context.sumo_drives = options.driver == "sumo";
   if (options.gui && !options.connect.empty())
     throw InputError("--gui", 0, "--gui and --connect exclude each other (attach sumo-gui with --connect instead)");
   if (!options.gui && options.gui_delay_ms >= 0) throw InputError("--gui-delay", 0, "only applies with --gui");
@@ -97,7 +100,7 @@ int run(const RunOptions& options) {
     sumo::RoutePlan plan;
     {
       StartedRun started = start_run(std::move(planned), net, context);
-      record = drive(started, net);
+      record = context.sumo_drives ? observe_sumo_drive(started, net) : drive(started, net);
       scenario = started.scenario;  // as run: a taken-over vehicle's values
       plan = std::move(started.plan);
     }  // SUMO closes here: its log is complete
@@ -107,8 +110,8 @@ int run(const RunOptions& options) {
     const RunStatus status = run_status(results);
     write_run_outputs(options.out_dir, *scenario, plan, record, results, status);
     if (!options.quiet) {
-      std::printf("%s: %s (%zu steps, %.1f s simulated, %zu events, %.2f s wall)\n", scenario->name.c_str(),
-                  std::string(to_string(status)).c_str(), record.rows.size(),
+      std::printf("%s%s: %s (%zu steps, %.1f s simulated, %zu events, %.2f s wall)\n", scenario->name.c_str(),
+                  context.sumo_drives ? " (driven by SUMO)" : "", std::string(to_string(status)).c_str(), record.rows.size(),
                   record.rows.empty() ? 0.0 : record.rows.back().time, record.events.size(), wall);
       for (const auto& r : results)
         std::printf("  [%s] %s: %s\n", r.passed ? "ok" : "FAIL", r.description.c_str(), r.detail.c_str());
@@ -143,6 +146,11 @@ Command add_run_command(CLI::App& app) {
                   "(turn_signal_search_time=2.5); repeatable");
   sub->add_flag("--quiet", options->quiet, "Print nothing on success");
   sub->add_flag("--plot", options->plot, "Draw PNGs of the run into OUT/plots with tools/plot");
+  sub->add_option("--driver", options->driver,
+                  "Who drives the ego: signalsim (its decider, judge and planners) or sumo (SUMO's own blinker, "
+                  "lights and lane changes, observed only)")
+      ->check(CLI::IsMember({"signalsim", "sumo"}))
+      ->capture_default_str();
   sub->add_flag("--gui", options->gui,
                 "Run in sumo-gui (needs a display): the ego tracked in the view, a screenshot in OUT/gui.png");
   sub->add_option("--gui-delay", options->gui_delay_ms, "With --gui: sumo-gui's delay between steps [ms]")

@@ -65,6 +65,12 @@ sumo::SessionConfig session_config(const Scenario& scenario, const sumo::RoutePl
   if (lateral.active()) config.lateral_resolution = 0.1;
   config.depart_pos_lat = lateral.depart_offset;
   for (const ObstacleSpec& o : scenario.obstacles) config.standing.push_back({o.id, o.edge, o.lane, o.pos, o.length});
+  // SUMO driving: its own lane changes; maneuvers (a pull out's depart offset included) are signalsim's.
+  if (context.sumo_drives) {
+    config.sumo_drives = true;
+    config.keep_planned_lanes = false;
+    config.depart_pos_lat = 0.0;
+  }
   return config;
 }
 
@@ -98,7 +104,7 @@ StartedRun start_run(PlannedRun planned, const sumo::NetIndex& net, const RunCon
     // SUMO's values for the vehicle; its lanes re-planned if it departed on another lane.
     run.scenario = with_taken_over_ego(run.scenario, run.session->ego_vehicle(), *definition);
     run.lateral = plan_lateral(run.scenario, plan, net);
-    if (run.lateral.active() && config.lateral_resolution <= 0.0)
+    if (run.lateral.active() && config.lateral_resolution <= 0.0 && !context.sumo_drives)
       throw InputError(run.scenario.path, 0, "vehicle '" + run.scenario.ego.id + "' departed on lane " +
                                                  std::to_string(run.scenario.ego.depart_lane) +
                                                  ", from which its route needs a lane change right away, but SUMO "

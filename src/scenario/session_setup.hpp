@@ -23,6 +23,10 @@ struct RunContext {
   /// The run's output directory: SUMO's messages go to OUT/sumo.log and relative output paths of
   /// sumo_args (and of the sumocfg's outputs) land here. Empty: no log, paths as written.
   std::string out_dir;
+  /// SUMO drives the ego (`run --driver sumo`): same insertion, vType, traffic and lights, but SUMO's
+  /// own speed, lane changes and blinkers (sumo::SessionConfig::sumo_drives); observe with
+  /// observe_sumo_drive (sumo_driven.hpp), never drive().
+  bool sumo_drives = false;
 };
 
 /// The file SUMO's messages go to in `out_dir`.

@@ -356,9 +356,11 @@ class SessionImpl : public SumoSession {
       Api::Vehicle::setImperfection(ego_, 0.0);
       if (config_.lateral_resolution > 0.0) Api::Vehicle::setMaxSpeedLat(ego_, 10.0);
     }
-    apply_speed_mode();
-    if (config_.keep_planned_lanes) Api::Vehicle::setLaneChangeMode(ego_, 0);
-    if (config_.lateral_resolution > 0.0) Api::Vehicle::setParameter(ego_, "laneChangeModel.lcAccelLat", "20");
+    if (!config_.sumo_drives) {  // SUMO driving keeps its default speed and lane-change modes
+      apply_speed_mode();
+      if (config_.keep_planned_lanes) Api::Vehicle::setLaneChangeMode(ego_, 0);
+      if (config_.lateral_resolution > 0.0) Api::Vehicle::setParameter(ego_, "laneChangeModel.lcAccelLat", "20");
+    }
     vehicle_.id = ego_;
     vehicle_.length = Api::Vehicle::getLength(ego_);
     vehicle_.width = Api::Vehicle::getWidth(ego_);
@@ -372,7 +374,7 @@ class SessionImpl : public SumoSession {
     vehicle_.depart_pos = Api::Vehicle::getLanePosition(ego_);
     vehicle_.depart_speed = Api::Vehicle::getSpeed(ego_);
     on_ego_departed();
-    if (config_.depart_pos_lat != 0.0) move_to_depart_offset();
+    if (config_.depart_pos_lat != 0.0 && !config_.sumo_drives) move_to_depart_offset();
   }
 
   void apply_speed_mode() {

@@ -87,6 +87,11 @@ struct SessionConfig {
   double decel = 4.5;              ///< vehicle type decel: the most SUMO brakes with speed-mode bit 2
   double emergency_decel = 9.0;
   bool keep_planned_lanes = true;  ///< switch SUMO's own lane changes off for the ego
+  /// SUMO drives the ego (`run --driver sumo`): it is inserted as configured, with the same vType,
+  /// but no speed mode, lane-change mode or depart offset is applied (SUMO's defaults: its own
+  /// lane changes, blinkers and stops at lights; spec SUMO §5). The caller only observes it, and
+  /// must not call command(), command_lateral_offset(), move_back() or the speed-mode setters.
+  bool sumo_drives = false;
   /// Sublane width [m] for SUMO's sublane model (`--lateral-resolution`). 0 = SUMO's default lane
   /// model (lane changes jump, no lateral motion inside a lane). > 0 also makes the ego's lateral
   /// dynamics fast enough to follow command_lateral_offset() exactly: vehicle-type maxSpeedLat
