@@ -44,6 +44,9 @@ struct PlannedRun {
   Scenario scenario;
   sumo::RoutePlan plan;
   std::optional<sumo::RouteFileVehicle> taken_over;  ///< the route-file definition of `ego.id`
+  /// Taken over: its departure lane is known before SUMO starts (departLane a lane index, "first" or
+  /// "best"); otherwise SUMO chooses it at insertion.
+  bool departure_known = true;
 };
 
 /// Reads the route files (for `ego.id`: the vehicle's route; otherwise: no file may use the id "ego")
