@@ -122,7 +122,7 @@ class SessionImpl : public SumoSession {
       if (reference_index < 0 || ego_index < 0) return in_lane;
       return in_lane + centre_distance(reference_edge, reference_index, ego_index);
     } catch (const std::exception& e) {
-      throw SumoError("cannot measure the ego's offset from lane '" + reference_lane_id + "': " + e.what());
+      throw SumoError("cannot measure the ego's offset from lane '" + reference_lane_id + "': " + failure_reason(e));
     }
   }
 
@@ -156,7 +156,7 @@ class SessionImpl : public SumoSession {
     } catch (const SumoError&) {
       throw;
     } catch (const std::exception& e) {
-      throw SumoError("SUMO refused a lateral offset from lane '" + reference_lane_id + "': " + e.what());
+      throw SumoError("SUMO refused a lateral offset from lane '" + reference_lane_id + "': " + failure_reason(e));
     }
   }
 
@@ -169,7 +169,7 @@ class SessionImpl : public SumoSession {
       }
       return out;
     } catch (const std::exception& e) {
-      throw SumoError("SUMO cannot list the vehicles on lane '" + lane_id + "': " + e.what());
+      throw SumoError("SUMO cannot list the vehicles on lane '" + lane_id + "': " + failure_reason(e));
     }
   }
 
@@ -177,7 +177,7 @@ class SessionImpl : public SumoSession {
     try {
       return Api::TrafficLight::getRedYellowGreenState(tls_id);
     } catch (const std::exception& e) {
-      throw SumoError("SUMO does not know traffic light '" + tls_id + "': " + e.what());
+      throw SumoError("SUMO cannot report traffic light '" + tls_id + "': " + failure_reason(e));
     }
   }
 
@@ -188,7 +188,7 @@ class SessionImpl : public SumoSession {
         for (const auto& phase : logic.phases) states.push_back(phase->state);
       return states;
     } catch (const std::exception& e) {
-      throw SumoError("SUMO does not know traffic light '" + tls_id + "': " + e.what());
+      throw SumoError("SUMO cannot report traffic light '" + tls_id + "': " + failure_reason(e));
     }
   }
 
@@ -216,7 +216,7 @@ class SessionImpl : public SumoSession {
         return;
       }
     } catch (const std::exception& e) {
-      throw SumoError("cannot shift the program of traffic light '" + tls_id + "': " + e.what());
+      throw SumoError("cannot shift the program of traffic light '" + tls_id + "': " + failure_reason(e));
     }
   }
 

@@ -36,7 +36,7 @@ std::vector<std::string> sumo_command_line(const SessionConfig& config, const st
     if (!sets(config.extra_args, name)) args.insert(args.end(), {std::string("--") + name, value});
   if (config.log_file.empty()) args.insert(args.end(), {"--no-warnings", "true"});
   else args.insert(args.end(), {"--log", config.log_file});
-  if (config.lateral_resolution > 0.0)
+  if (config.lateral_resolution > 0.0 && !sets(config.extra_args, "lateral-resolution"))
     args.insert(args.end(), {"--lateral-resolution", sumo_number(config.lateral_resolution)});
   args.insert(args.end(), config.extra_args.begin(), config.extra_args.end());
   return args;
