@@ -55,6 +55,10 @@ sumo::SessionConfig session_config(const Scenario& scenario, const sumo::RoutePl
   if (connect && !scenario.sumo.sumo_args.empty())
     throw InputError(scenario.path, 0, "sumo_args cannot reach a SUMO someone else started (--connect): give the "
                                        "options to that sumo");
+  if (connect && !scenario.obstacles.empty())
+    throw InputError(scenario.path, 0, "obstacles would be vehicles in the simulation of every client of the SUMO at " +
+                                           context.backend.host + ":" + std::to_string(context.backend.port) +
+                                           "; --connect controls only the ego");
   sumo::SessionConfig config;
   config.backend = context.backend;
   config.net = scenario.net;
@@ -126,7 +130,15 @@ PlannedRun plan_run(const Scenario& scenario, const sumo::NetIndex& net) {
     planned.departure_known = lane.has_value();
     if (lane && *lane >= 0) planned.scenario.ego.depart_lane = *lane;  // plan from where it will be
   }
-  planned.plan = plan_route(planned.scenario, net);
+  try {
+    planned.plan = plan_route(planned.scenario, net);
+  } catch (const InputError& e) {
+    // A taken-over vehicle's route is its route file's: the fault is named there.
+    if (!planned.taken_over || e.file() != planned.scenario.path) throw;
+    const sumo::RouteFileVehicle& v = *planned.taken_over;
+    throw InputError(v.file, v.line, "<" + v.kind + "> '" + v.id + "' (ego.id of " + planned.scenario.path +
+                                         "): " + e.reason());
+  }
   return planned;
 }
 
@@ -140,6 +152,7 @@ PlannedRun plan_run(const Scenario& scenario, sumo::RoutePlan plan) {
 
 StartedRun start_run(PlannedRun planned, const sumo::NetIndex& net, const RunContext& context) {
   StartedRun run;
+  run.out_dir = context.out_dir;
   run.scenario = std::move(planned.scenario);
   const std::optional<sumo::RouteFileVehicle>& definition = planned.taken_over;
   sumo::RoutePlan& plan = planned.plan;
@@ -149,6 +162,12 @@ StartedRun start_run(PlannedRun planned, const sumo::NetIndex& net, const RunCon
   // A departure lane SUMO chooses at insertion (random, free, ...) may need a lane change at once:
   // signalsim drives it with the sublane model, which must be on from the start.
   if (definition && !planned.departure_known && config.lateral_resolution <= 0.0) config.lateral_resolution = kSublaneWidth;
+  if (context.backend.kind == sumo::BackendKind::Connect &&
+      (!run.scenario.sumo.route_files.empty() || !run.scenario.additional.empty() ||
+       !run.scenario.sumo.cfg_options.empty()))
+    run.notes.push_back("--connect: the scenario's route files, additional files and sumocfg options are the "
+                        "server's business; signalsim did not load them (the server reports its own in "
+                        "sumo.server_options)");
   run.session = sumo::open_session(config);
   if (definition) {
     const sumo::EgoVehicle& vehicle = run.session->ego_vehicle();

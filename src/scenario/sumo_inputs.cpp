@@ -99,7 +99,9 @@ void read_simulation_keys(const YamlFields& top, const std::string& path, Scenar
     used("begin " + number_text(in.begin));
   }
   if (cfg && cfg->end) {
-    if (*cfg->end <= in.begin) throw InputError(s.sumo.sumocfg, 0, "end " + number_text(*cfg->end) + " is not after begin");
+    if (*cfg->end <= in.begin)
+      throw InputError(s.sumo.sumocfg, cfg->end_line, "end " + number_text(*cfg->end) + " is not after begin " +
+                                                          number_text(in.begin));
     in.end = *cfg->end;
     used("end " + number_text(*in.end));
   }

@@ -136,6 +136,7 @@ class TraciSession final : public SessionImpl<LibtraciApi> {
   }
 
   BackendKind backend() const override { return config_.backend.kind; }
+  std::vector<std::pair<std::string, std::string>> server_options() const override { return server_options_; }
   using SessionImpl<LibtraciApi>::insert_ego;
 
  protected:
@@ -280,6 +281,9 @@ class TraciSession final : public SessionImpl<LibtraciApi> {
         throw SumoError("the scenario's step_length " + short_number(config_.step_length) +
                         " s differs from the step length of SUMO at " + endpoint(b) + ", " +
                         short_number(server_step) + " s (Simulation::getDeltaT)");
+      for (const char* option : {"net-file", "route-files", "additional-files", "seed", "collision.action",
+                                 "time-to-teleport", "lateral-resolution"})
+        server_options_.emplace_back(option, libtraci::Simulation::getOption(option));
       // Lateral motion needs SUMO's sublane model, which only the server's start can switch on.
       if (config_.lateral_resolution > 0.0 &&
           !(parse_number(libtraci::Simulation::getOption("lateral-resolution")) > 0.0))
@@ -313,6 +317,7 @@ class TraciSession final : public SessionImpl<LibtraciApi> {
   TempFile gui_output_;             // destroyed after gui_ (declared before it)
   std::unique_ptr<SumoProcess> gui_;
   bool connected_ = false;
+  std::vector<std::pair<std::string, std::string>> server_options_;  // connect: as the server reports them
   // A busy sumo-gui may draw the first frame after a view change without the vehicles: each picture
   // is taken on two consecutive steps, the second one kept.
   static constexpr int kShotsPerPicture = 2;
