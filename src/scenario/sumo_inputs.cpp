@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "scenario/input_error.hpp"
+#include "sumo/number_parsing.hpp"
 #include "sumo/sumocfg.hpp"
 
 namespace signalsim {
@@ -14,12 +15,6 @@ std::string resolve_from(const std::string& dir, const std::string& path) {
   const fs::path p(path);
   if (p.is_absolute()) return p.lexically_normal().string();
   return (fs::path(dir) / p).lexically_normal().string();
-}
-
-std::string number_text(double v) {
-  std::ostringstream out;
-  out << v;
-  return out.str();
 }
 
 // The sumo_args tokens, checked now so that a refused option stops the run before SUMO starts.
@@ -87,8 +82,8 @@ void read_simulation_keys(const YamlFields& top, const std::string& path, Scenar
   s.step_length = top.number("step_length", cfg && cfg->step_length ? *cfg->step_length : 0.1, 0.001, 1.0);
   s.seed = top.integer("seed", cfg && cfg->seed ? *cfg->seed : 1, 0, 2147483647);
   if (cfg && cfg->step_length) {
-    if (top.has("step_length")) overridden("step-length", number_text(*cfg->step_length), "step_length", number_text(s.step_length));
-    else used("step-length " + number_text(s.step_length));
+    if (top.has("step_length")) overridden("step-length", sumo::short_number(*cfg->step_length), "step_length", sumo::short_number(s.step_length));
+    else used("step-length " + sumo::short_number(s.step_length));
   }
   if (cfg && cfg->seed) {
     if (top.has("seed")) overridden("seed", std::to_string(*cfg->seed), "seed", std::to_string(s.seed));
@@ -96,14 +91,14 @@ void read_simulation_keys(const YamlFields& top, const std::string& path, Scenar
   }
   if (cfg && cfg->begin) {
     in.begin = *cfg->begin;
-    used("begin " + number_text(in.begin));
+    used("begin " + sumo::short_number(in.begin));
   }
   if (cfg && cfg->end) {
     if (*cfg->end <= in.begin)
-      throw InputError(s.sumo.sumocfg, cfg->end_line, "end " + number_text(*cfg->end) + " is not after begin " +
-                                                          number_text(in.begin));
+      throw InputError(s.sumo.sumocfg, cfg->end_line, "end " + sumo::short_number(*cfg->end) + " is not after begin " +
+                                                          sumo::short_number(in.begin));
     in.end = *cfg->end;
-    used("end " + number_text(*in.end));
+    used("end " + sumo::short_number(*in.end));
   }
   // duration: the scenario's; else until the sumocfg's end; else 60 s.
   const double default_duration = in.end ? *in.end - in.begin : 60.0;

@@ -41,12 +41,6 @@ constexpr const char* kView = "View #0";
 constexpr double kGuiStartTimeout = 30.0;  // [s] for sumo-gui to load the net and listen
 constexpr double kGuiZoom = 1500.0;        // [%] about 60 m across the view: the ego and its blinkers
 
-std::string short_number(double v) {
-  std::ostringstream out;
-  out << v;
-  return out.str();
-}
-
 // Whether the user's options already give `name` (SUMO refuses an option given twice).
 bool gives_option(const std::vector<std::string>& args, const std::string& name) {
   return std::find(args.begin(), args.end(), "--" + name) != args.end();
@@ -210,7 +204,7 @@ class TraciSession final : public SessionImpl<LibtraciApi> {
     // SUMO 1.15 waits --delay x step length between steps: --gui-delay MS is per step.
     const double delay = config_.backend.gui_delay_ms / config_.step_length;
     argv.insert(argv.end(), {"--remote-port", std::to_string(port), "--start", "true", "--quit-on-end", "true",
-                             "--delay", sumo_number(delay)});
+                             "--delay", exact_number(delay)});
     if (!gives_option(config_.extra_args, "window-size")) argv.insert(argv.end(), {"--window-size", "1024,768"});
     gui_output_.path = (std::filesystem::temp_directory_path() /
                         ("signalsim-gui-" + std::to_string(getpid()) + "-" + std::to_string(port) + ".txt")).string();
