@@ -37,12 +37,6 @@ constexpr double kSublaneWidth = 0.1;  // [m] SUMO --lateral-resolution when sig
 // Waiting for a taken-over vehicle: until the sumocfg's end, else a day.
 double take_over_deadline(const Scenario& s) { return s.sumo.end ? *s.sumo.end : s.sumo.begin + 86400.0; }
 
-std::string joined(const std::vector<std::string>& edges) {
-  std::string out;
-  for (const std::string& e : edges) out += (out.empty() ? "" : " ") + e;
-  return out;
-}
-
 }  // namespace
 
 sumo::SessionConfig session_config(const Scenario& scenario, const sumo::RoutePlan& plan, const LateralPlan& lateral,
@@ -173,8 +167,8 @@ StartedRun start_run(PlannedRun planned, const sumo::NetIndex& net, const RunCon
     const sumo::EgoVehicle& vehicle = run.session->ego_vehicle();
     if (vehicle.route != run.scenario.ego.route)
       throw InputError(definition->file, definition->line,
-                       "vehicle '" + vehicle.id + "' drives [" + joined(vehicle.route) + "] in SUMO, not the route [" +
-                           joined(run.scenario.ego.route) + "] of its route file (did the SUMO at the other end "
+                       "vehicle '" + vehicle.id + "' drives [" + edges_text(vehicle.route) + "] in SUMO, not the route [" +
+                           edges_text(run.scenario.ego.route) + "] of its route file (did the SUMO at the other end "
                            "load other route files?)");
     // SUMO's values for the vehicle; its lanes planned from the lane it departed on.
     run.scenario = with_taken_over_ego(run.scenario, vehicle, *definition);

@@ -5,17 +5,12 @@
 
 #include "scenario/input_error.hpp"
 #include "sumo/number_parsing.hpp"
+#include "sumo/file_paths.hpp"
 #include "sumo/sumocfg.hpp"
 
 namespace signalsim {
 namespace fs = std::filesystem;
 namespace {
-
-std::string resolve_from(const std::string& dir, const std::string& path) {
-  const fs::path p(path);
-  if (p.is_absolute()) return p.lexically_normal().string();
-  return (fs::path(dir) / p).lexically_normal().string();
-}
 
 // The sumo_args tokens, checked now so that a refused option stops the run before SUMO starts.
 std::vector<std::string> read_sumo_args(const YamlFields& top, const std::string& path) {
@@ -36,7 +31,7 @@ void read_simulation_keys(const YamlFields& top, const std::string& path, Scenar
   s.sumo.scenario_dir = dir;
   std::optional<sumo::SumoConfigFile> cfg;
   if (top.has("sumocfg")) {
-    s.sumo.sumocfg = resolve_from(dir, top.text("sumocfg"));
+    s.sumo.sumocfg = sumo::resolve_beside(path, top.text("sumocfg"));
     if (!fs::is_regular_file(s.sumo.sumocfg)) top.fail("sumocfg", "file '" + s.sumo.sumocfg + "' not found");
     cfg = sumo::read_sumocfg(s.sumo.sumocfg);  // NetError "<cfg>:<line>: ..." for a bad file
     s.sumo.cfg_dir = cfg->dir;
@@ -50,7 +45,7 @@ void read_simulation_keys(const YamlFields& top, const std::string& path, Scenar
 
   // The net: the scenario's own key wins over the sumocfg's net-file.
   if (top.has("net")) {
-    s.net = resolve_from(dir, top.text("net"));
+    s.net = sumo::resolve_beside(path, top.text("net"));
     if (!fs::is_regular_file(s.net)) top.fail("net", "net file '" + s.net + "' not found");
     if (cfg && cfg->net) overridden("net-file", *cfg->net, "net", s.net);
   } else if (cfg && cfg->net) {
@@ -70,11 +65,11 @@ void read_simulation_keys(const YamlFields& top, const std::string& path, Scenar
     for (const std::string& f : cfg->additional) used("additional-files " + f);
   }
   for (const std::string& r : top.text_list("routes")) {
-    in.route_files.push_back(resolve_from(dir, r));
+    in.route_files.push_back(sumo::resolve_beside(path, r));
     if (!fs::is_regular_file(in.route_files.back())) top.fail("routes", "file '" + in.route_files.back() + "' not found");
   }
   for (const std::string& a : top.text_list("additional")) {
-    s.additional.push_back(resolve_from(dir, a));
+    s.additional.push_back(sumo::resolve_beside(path, a));
     if (!fs::is_regular_file(s.additional.back())) top.fail("additional", "file '" + s.additional.back() + "' not found");
   }
 

@@ -11,12 +11,6 @@ namespace {
 
 std::string where(const sumo::RouteFileVehicle& v) { return v.file + ":" + std::to_string(v.line); }
 
-std::string joined(const std::vector<std::string>& edges) {
-  std::string out;
-  for (const std::string& e : edges) out += (out.empty() ? "" : " ") + e;
-  return out;
-}
-
 // The scenario file's line of an ego key (0 when it came from --set or is not given).
 int line_of(const Scenario& s, const std::string& key) {
   const auto it = s.ego.lines.find(key);
@@ -48,7 +42,7 @@ std::optional<sumo::RouteFileVehicle> resolve_route_file_ego(Scenario& scenario)
   if (!v)
     throw InputError(scenario.path, line_of(scenario, "id"),
                      "ego.id '" + id + "': no <vehicle>, <trip> or <flow> of the route files defines it (" +
-                         joined(files) + ")");
+                         edges_text(files) + ")");
   if (v->edges.empty())
     throw InputError(v->file, v->line,
                      "<" + v->kind + "> '" + v->id + "' (ego.id) has no edges of its own (a trip, or a route "
@@ -71,8 +65,8 @@ std::optional<sumo::RouteFileVehicle> resolve_route_file_ego(Scenario& scenario)
                      "the simulation (" + sumo::short_number(*scenario.sumo.end) + " s)");
   if (scenario.ego.given.count("route") && scenario.ego.route != v->edges)
     throw InputError(scenario.path, line_of(scenario, "route"),
-                     "ego.route [" + joined(scenario.ego.route) + "] contradicts the route of '" + id + "' in " +
-                         where(*v) + " [" + joined(v->edges) + "]");
+                     "ego.route [" + edges_text(scenario.ego.route) + "] contradicts the route of '" + id + "' in " +
+                         where(*v) + " [" + edges_text(v->edges) + "]");
   scenario.ego.route = v->edges;
   return *v;
 }
@@ -102,6 +96,12 @@ Scenario with_taken_over_ego(const Scenario& scenario, const sumo::EgoVehicle& v
   ego.depart_pos = vehicle.depart_pos;
   ego.depart_speed = vehicle.depart_speed;
   return s;
+}
+
+std::string edges_text(const std::vector<std::string>& edges) {
+  std::string out;
+  for (const std::string& e : edges) out += (out.empty() ? "" : " ") + e;
+  return out;
 }
 
 std::map<std::string, std::string> ego_sources(const Scenario& scenario, const std::string& vehicle_type) {

@@ -1,5 +1,7 @@
 #include "sumo/sumo_options.hpp"
 
+#include "sumo/file_paths.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
@@ -142,11 +144,6 @@ bool is_option_name(const std::string& token) {
   return i > 0 && i < token.size() && (std::isalpha(static_cast<unsigned char>(token[i])) != 0 || token[i] == '?');
 }
 
-std::string relative_to(const std::string& dir, const std::string& path) {
-  if (path.empty() || dir.empty() || std::filesystem::path(path).is_absolute()) return path;
-  return (std::filesystem::path(dir) / path).lexically_normal().string();
-}
-
 // A list value ("a.xml,b.xml"): each entry resolved.
 std::string each_relative_to(const std::string& dir, const std::string& value) {
   std::string out;
@@ -154,7 +151,7 @@ std::string each_relative_to(const std::string& dir, const std::string& value) {
   while (start <= value.size()) {
     const std::size_t comma = value.find(',', start);
     const std::string entry = value.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-    out += (out.empty() ? "" : ",") + relative_to(dir, entry);
+    out += (out.empty() ? "" : ",") + resolve_path(dir, entry);
     if (comma == std::string::npos) break;
     start = comma + 1;
   }

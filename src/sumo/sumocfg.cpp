@@ -6,6 +6,7 @@
 #include <functional>
 #include <filesystem>
 
+#include "sumo/file_paths.hpp"
 #include "sumo/net_file.hpp"
 #include "sumo/net_index.hpp"
 #include "sumo/number_parsing.hpp"
@@ -69,10 +70,7 @@ SumoConfigFile read_sumocfg(const std::string& path) {
   SumoConfigFile cfg;
   cfg.path = path;
   cfg.dir = fs::path(path).parent_path().string();
-  const auto resolve = [&](const std::string& name) {
-    const fs::path p(name);
-    return (p.is_absolute() ? p : fs::path(cfg.dir) / p).lexically_normal().string();
-  };
+  const auto resolve = [&](const std::string& name) { return resolve_beside(path, name); };
   // Options are elements with a value (SUMO's categories are optional: a flat file works too).
   std::vector<pugi::xml_node> options;  // in file order
   const std::function<void(pugi::xml_node)> collect = [&](pugi::xml_node parent) {
