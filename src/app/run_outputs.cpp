@@ -187,6 +187,7 @@ nlohmann::ordered_json metrics_from_run_dir(const std::string& run_dir, const st
         stop.error = s.value("error", 0.0);
         stop.decision = parse_enum(s.value("decision", ""), JudgeDecision::EmergencyStop, JudgeDecision::Stop);
         stop.worst_level = parse_enum(s.value("level", ""), StopLevel::Emergency, StopLevel::Normal);
+        if (s.contains("queued_behind") && s["queued_behind"].is_string()) stop.queued_behind = s["queued_behind"];
         record.stops.push_back(stop);
       }
     if (lights.contains("red_light_violations"))

@@ -160,8 +160,9 @@ std::vector<LightMetrics> measure_lights(const RouteMap& route, const RunRecord&
       if (zone != JudgeZone::None) m.zone = std::string(to_string(zone));
       m.emergency_stop = worst == JudgeDecision::EmergencyStop;
     }
+    // A rest in the queue before the light says where the queue ended: no stop position error.
     for (const LightStop& stop : record.stops)
-      if (stop.tl_id == m.id && stop.time >= t_from && stop.time <= t_to) {
+      if (stop.tl_id == m.id && stop.time >= t_from && stop.time <= t_to && stop.queued_behind.empty()) {
         m.stop_position_error = round3(stop.error);
         break;
       }

@@ -229,7 +229,9 @@ void write_run_outputs(const std::string& dir, const Scenario& scenario, const s
                      {"stop_s", std::stod(fixed(stop.stop_s, 3))}, {"rest_s", std::stod(fixed(stop.rest_s, 3))},
                      {"error", std::stod(fixed(stop.error, 3))},
                      {"decision", stop.by_judge ? nlohmann::ordered_json(to_string(stop.decision)) : nullptr},
-                     {"level", stop.by_judge ? nlohmann::ordered_json(to_string(stop.worst_level)) : nullptr}});
+                     {"level", stop.by_judge ? nlohmann::ordered_json(to_string(stop.worst_level)) : nullptr},
+                     {"queued_behind", stop.queued_behind.empty() ? nlohmann::ordered_json(nullptr)
+                                                                  : nlohmann::ordered_json(stop.queued_behind)}});
   lights["stops"] = stops;
   nlohmann::ordered_json violations = nlohmann::ordered_json::array();
   for (const RedLightViolation& v : record.red_violations)

@@ -37,16 +37,21 @@ class LightOutcomes {
   explicit LightOutcomes(double stop_margin) : stop_margin_(stop_margin) {}
 
   /// `stopping`: the light whose stop the ego is braking for this step, if any.
+  /// `leader`: SUMO's vehicle ahead, to tell a rest in the queue before a light from the ego's own stop.
   void observe(const TimelineRow& row, const std::vector<LightStep>& lights, const LightStep* stopping,
-               RunRecord& record) {
+               const LeaderQuery& leader, RunRecord& record) {
     // A stop: the first step at rest while a stop is requested; a new one only after moving again.
     // The error is measured against the stop line minus stop_margin, not the judge's stop point,
     // which restart suppression moves to wherever the ego stands (spec TLJ §1.6).
     const bool at_rest = row.speed < kRestSpeed;
     if (at_rest && stopping && !resting_) {
       const double stop_s = stopping->light->s_stop_line - stop_margin_;
-      record.stops.push_back({stopping->light->tls_id, row.time, stop_s, row.s_front, row.s_front - stop_s,
-                              stopping->result.decision, worst_level_});
+      LightStop stop{stopping->light->tls_id, row.time, stop_s, row.s_front, row.s_front - stop_s,
+                     stopping->result.decision, worst_level_};
+      const double to_go = stop_s - row.s_front;
+      if (to_go > kQueueGap)
+        if (const auto ahead = leader(to_go); ahead && ahead->gap < to_go) stop.queued_behind = ahead->id;
+      record.stops.push_back(stop);
       resting_ = true;
     }
     if (!at_rest) resting_ = false;
@@ -70,6 +75,7 @@ class LightOutcomes {
     char state = 0;
   };
   static constexpr double kCrossingTolerance = 0.05;  // [m]
+  static constexpr double kQueueGap = 0.5;            // [m] closer to its stop point, the ego stopped itself
   double stop_margin_;
   bool resting_ = false;
   StopLevel worst_level_ = StopLevel::Normal;
@@ -311,7 +317,7 @@ RunRecord drive(const StartedRun& run, const sumo::NetIndex& net) {
                    std::string(to_string(row.tl_decision)), row.tl_id);
       previous_decision = row.tl_decision;
     }
-    outcomes.observe(row, light_steps, stopping, record);
+    outcomes.observe(row, light_steps, stopping, leader, record);
     record.rows.push_back(std::move(row));
 
     if (!alive) {

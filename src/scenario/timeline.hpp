@@ -55,6 +55,10 @@ struct LightStop {
   JudgeDecision decision = JudgeDecision::Stop;
   StopLevel worst_level = StopLevel::Normal;
   bool by_judge = true;          ///< false: SUMO stopped on its own (`--driver sumo`); no decision or level
+  /// The vehicle the ego came to rest behind, short of its stop point (a queue before the light):
+  /// then `error` says where the queue ended, not how well the ego stopped. Empty when nothing was
+  /// between the ego and the stop point.
+  std::string queued_behind;
 };
 
 /// The front crossed a stop line while the ego's link showed red.
