@@ -1,5 +1,6 @@
 // `signalsim inspect NET [--route EDGES...] [--country CODE] [--set NAME=VALUE...]`.
 #include <iostream>
+#include <optional>
 
 #include "app/command.hpp"
 #include "app/inspect.hpp"
@@ -20,23 +21,29 @@ struct InspectOptions {
 int inspect(const InspectOptions& o) {
   try {
     const auto net = sumo::NetIndex::load(o.net_path);
+    // Everything is built before anything is printed: bad input writes no partial output.
+    std::optional<sumo::RoutePlan> plan;
+    if (!o.route.empty()) {
+      // Parameters that change lanelet attributes (the exit-signal marking) as a scenario would set them.
+      ParameterSet params;
+      if (!o.country.empty()) {
+        const Country country = load_country(o.country);
+        params.apply(country.parameters, country.path);
+      }
+      YAML::Node overrides;
+      for (const std::string& item : o.set) {
+        const auto eq = item.find('=');
+        if (eq == std::string::npos || eq == 0) return report_bad_input("--set: '" + item + "' is not of the form name=value");
+        overrides[item.substr(0, eq)] = YAML::Load(item.substr(eq + 1));
+      }
+      if (overrides.size() > 0) params.apply(overrides, "--set");
+      plan = prepare_route(sumo::build_route(net, o.route), params);
+    }
     print_net_summary(std::cout, net);
-    if (o.route.empty()) return 0;
-    // Parameters that change lanelet attributes (the exit-signal marking) as a scenario would set them.
-    ParameterSet params;
-    if (!o.country.empty()) {
-      const Country country = load_country(o.country);
-      params.apply(country.parameters, country.path);
-    }
-    YAML::Node overrides;
-    for (const std::string& item : o.set) {
-      const auto eq = item.find('=');
-      if (eq == std::string::npos || eq == 0) return report_bad_input("--set: '" + item + "' is not of the form name=value");
-      overrides[item.substr(0, eq)] = YAML::Load(item.substr(eq + 1));
-    }
-    if (overrides.size() > 0) params.apply(overrides, "--set");
-    print_route(std::cout, prepare_route(sumo::build_route(net, o.route), params));
+    if (plan) print_route(std::cout, *plan);
     return 0;
+  } catch (const sumo::NetDefectError& e) {
+    return report_bad_input(std::string(e.what()) + " in --route");
   } catch (const sumo::RouteError& e) {
     return report_bad_input(o.net_path + ": --route: " + e.what());
   } catch (const std::exception& e) {

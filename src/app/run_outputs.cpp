@@ -157,10 +157,14 @@ nlohmann::ordered_json metrics_from_run_dir(const std::string& run_dir, const st
   std::string key = scenario.net;
   for (const std::string& edge : scenario.ego.route) key += "\n" + edge;
   for (int lane : required_exit_lanes(scenario)) key += "\n" + std::to_string(lane);
+  // The lane plan depends on what limits the ego's lane changes (lane_change_ego).
+  const sumo::LaneChangeEgo ego = lane_change_ego(scenario);
+  for (double v : {ego.base_link_to_front, ego.depart_pos, ego.max_speed, ego.max_lateral_accel})
+    key += "\n" + std::to_string(v);
   auto& route = routes[key];
   if (!route) {
     auto net = std::make_shared<const sumo::NetIndex>(sumo::NetIndex::load(scenario.net));
-    sumo::RoutePlan plan = sumo::build_route(*net, scenario.ego.route, required_exit_lanes(scenario));
+    sumo::RoutePlan plan = build_scenario_route(scenario, *net);
     route = std::make_shared<const Route>(Route{std::move(net), std::move(plan)});
   }
   RunRecord record;

@@ -1,6 +1,8 @@
 #include "scenario/route_planning.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <iomanip>
 #include <optional>
 #include <sstream>
 
@@ -14,6 +16,39 @@ sumo::RoutePlan prepare_route(sumo::RoutePlan plan, const ParameterSet& params) 
   if (params.boolean("turn_signal_roundabout_exit_signal_from_previous_exit"))
     plan.map = mark_exit_signal_lanes(std::move(plan.map));
   return plan;
+}
+
+sumo::LaneChangeEgo lane_change_ego(const Scenario& scenario) {
+  sumo::LaneChangeEgo ego;
+  ego.base_link_to_front = scenario.ego.base_link_to_front;
+  ego.depart_pos = scenario.ego.depart_pos;
+  ego.max_speed = scenario.ego.max_speed;
+  ego.max_lateral_accel = scenario.ego.emergency_decel;
+  return ego;
+}
+
+sumo::RoutePlan build_scenario_route(const Scenario& scenario, const sumo::NetIndex& net) {
+  return sumo::build_route(net, scenario.ego.route, required_exit_lanes(scenario), lane_change_ego(scenario));
+}
+
+std::string no_room_message(const sumo::RoutePlan& plan) {
+  std::ostringstream out;
+  out << std::fixed << std::setprecision(2) << "no lane plan leaves room for every lane change the route needs; "
+      << "the best one changes lanes";
+  const char* sep = " ";
+  for (const sumo::PlannedLaneChange& c : plan.changes) {
+    out << sep << "on edge '" << c.edge << "' (lane " << c.from_lane << " -> " << c.to_lane << ", a " << c.shift
+        << " m shift, " << c.room << " m of room";
+    if (!c.fits) {
+      const double room = sumo::lane_change_room_needed(c.min_length);
+      out << "; at " << plan.rooms[c.edge_index].speed << " m/s it needs " << c.min_length << " m of lateral motion, ";
+      if (std::isfinite(room)) out << "so " << room << " m of room";
+      else out << "more than the " << sumo::kLaneChangeLength << " m a lane change is given";
+    }
+    out << ")";
+    sep = ", ";
+  }
+  return out.str();
 }
 
 namespace {
@@ -73,33 +108,45 @@ std::vector<LateralSegment> plan_lane_changes(const Scenario& scenario, const su
     seg.edge = lanelet.edge_id;
     seg.reference_lane = lanelet.lane_id;
     seg.route_index = *index;
+    // A lane change never crosses a lane the ego may not use (the lane plan avoids them; the first
+    // edge's change from ego.depart_lane is the scenario's).
+    for (int k = std::min(entry, planned) + 1; k < std::max(entry, planned); ++k)
+      if (!edge->lanes[static_cast<std::size_t>(k)].allows_passenger)
+        fail(scenario, "ego.depart_lane: the lane change from lane " + std::to_string(entry) + " to the planned lane " +
+                           lanelet.lane_id + " crosses lane '" + edge->lanes[static_cast<std::size_t>(k)].id +
+                           "', which a passenger car may not use");
     // The entry lane's centre seen from the planned lane's centre (left positive).
     const auto width = [&](int k) { return edge->lanes[static_cast<std::size_t>(k)].width; };
     const int step = entry > planned ? 1 : -1;
-    double offset = 0.5 * width(planned) + 0.5 * width(entry);
-    for (int k = planned + step; k != entry; k += step) offset += width(k);
-    offset *= step;
+    // The room, lane widths and speed the lane plan chose this edge by (sumo/lane_change_room).
+    const sumo::EdgeRoom& room = plan.rooms.at(i);
+    const double shift = sumo::lane_shift(room.widths, entry, planned);
+    const double offset = step * shift;
     seg.boundary = step * 0.5 * width(planned);
     seg.left_half_width = seg.right_half_width = 0.5 * width(planned);
     // Where base_link may start: its depart position on the first edge, the edge's start later.
     const double earliest = first ? scenario.ego.depart_pos - b2f : lanelet.s_start;
+    const sumo::LaneChangeEgo ego = lane_change_ego(scenario);
+    const double needed = sumo::min_lane_change_length(shift, room.speed, ego);
     LaneChangeManeuver m;
     if (asked) {
       m = *requested;
       if (!requested->edge.empty()) m.at = lanelet.s_start + requested->at;  // `at` on the edge
     } else {
-      // Default: kDefaultLaneChangeLead after `earliest`, kDefaultLaneChangeLength long, both
+      // Default (sumo::default_lane_change): a lead after `earliest`, then the lateral motion, both
       // shrunk to fit a short edge (the shift ends with the front still on the edge).
-      const double room = lanelet.s_end() - b2f - earliest;
-      const double lead = std::min(kDefaultLaneChangeLead, 0.2 * room);
-      m.at = earliest + lead;
-      m.length = std::min(kDefaultLaneChangeLength, room - lead - 1.0);
-      if (m.length < 5.0) {
-        std::ostringstream out_msg;
-        out_msg << "ego.route: the lane change the route needs on edge '" << edge->id << "' does not fit ("
-                << lanelet.length << " m)";
-        fail(scenario, out_msg.str());
-      }
+      const sumo::LaneChangeTimingDefault timing = sumo::default_lane_change(room.room);
+      m.at = earliest + timing.lead;
+      m.length = timing.length;
+      if (!sumo::lane_change_fits(room.room, shift, room.speed, ego)) fail(scenario, "ego.route: " + no_room_message(plan));
+    }
+    // Physically sensible: a shift this long is one the ego can drive at its speed there.
+    if (m.length < needed - 1e-9) {
+      std::ostringstream out_msg;
+      out_msg << std::fixed << std::setprecision(2) << "maneuvers: lane_change on '" << edge->id << "': a " << shift
+              << " m shift in " << m.length << " m is sharper than the ego can drive at " << room.speed
+              << " m/s; it needs at least " << needed << " m";
+      fail(scenario, out_msg.str());
     }
     if (m.at < earliest - 1e-9) {
       std::ostringstream out_msg;
@@ -279,7 +326,10 @@ std::vector<int> required_exit_lanes(const Scenario& scenario) {
 sumo::RoutePlan plan_route(const Scenario& scenario, const sumo::NetIndex& net) {
   sumo::RoutePlan plan;
   try {
-    plan = prepare_route(sumo::build_route(net, scenario.ego.route, required_exit_lanes(scenario)), scenario.params);
+    plan = prepare_route(build_scenario_route(scenario, net), scenario.params);
+  } catch (const sumo::NetDefectError& e) {
+    // The defect's own file and line (the net's), and which scenario route uses it.
+    throw InputError(e.file(), e.line(), e.detail() + " in ego.route of " + scenario.path);
   } catch (const sumo::RouteError& e) {
     std::string hint;
     for (const LaneChangeManeuver& m : scenario.lane_changes)

@@ -66,6 +66,19 @@ LateralPlan plan_lateral(const Scenario& scenario, const sumo::RoutePlan& plan, 
 /// -1 elsewhere; empty without one (sumo::build_route's required_exit).
 std::vector<int> required_exit_lanes(const Scenario& scenario);
 
+/// What limits the ego's lane changes (sumo/lane_change_room.hpp): base_link_to_front, depart_pos,
+/// max_speed, and its grip, ego.emergency_decel.
+sumo::LaneChangeEgo lane_change_ego(const Scenario& scenario);
+
+/// sumo::build_route for the scenario's route, requested lane changes and ego (no preparation, no
+/// checks: plan_route does both). The one way a scenario's lane plan is made.
+sumo::RoutePlan build_scenario_route(const Scenario& scenario, const sumo::NetIndex& net);
+
+/// "no lane plan leaves room for every lane change ...; the best one changes lanes on edge 'x'
+/// (lane 0 -> 1, a 3.20 m shift, 0.54 m of room; at 13.89 m/s it needs 19.90 m of lateral motion,
+/// so 26.13 m of room)": the edges of a plan's lane changes with their room.
+std::string no_room_message(const sumo::RoutePlan& plan);
+
 /// The same preparation for a route built elsewhere (inspect).
 sumo::RoutePlan prepare_route(sumo::RoutePlan plan, const ParameterSet& params);
 

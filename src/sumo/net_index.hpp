@@ -2,6 +2,12 @@
 //
 // libsumo 1.15 has no API for roundabouts, junction types or <stopOffset> (spec SUMO §2), so the net
 // file is read directly. All lookups are hash-map based: O(1) in the size of the net.
+//
+// Loading rule: whatever SUMO 1.15 loads, NetIndex loads. Only a file that is not a net at all (not
+// XML, no <net> root, unreadable, a bad `lefthand`) throws NetError. A value signalsim reads that
+// cannot be used as written (a number that does not parse, a missing attribute, a malformed shape,
+// an unknown `dir`, a repeated id, lane indices that are not 0..n-1 on a normal edge) is recorded as
+// a NetDefect against its element, with its line; build_route refuses a route that uses the element.
 #pragma once
 
 #include <map>
@@ -23,7 +29,7 @@ class NetError : public std::runtime_error {
 
 struct NetLane {
   std::string id;                              ///< "<edge>_<index>"
-  int index = 0;                               ///< 0 = rightmost
+  int index = 0;                               ///< position in NetEdge::lanes, 0 = rightmost
   double speed = 13.89;                        ///< [m/s]
   double length = 0.0;                         ///< [m], the unit of SUMO lane positions
   double width = 3.2;                          ///< [m]
@@ -80,6 +86,23 @@ struct NetJunction {
   double y = 0.0;
 };
 
+/// An element of the net file that cannot be used as written. Recorded at load; fatal only for a
+/// route that uses the element (build_route), so a defect elsewhere in a city net costs nothing.
+struct NetDefect {
+  std::string element;          ///< "lane ':9_17_1'", "connection '12' -> '86'"
+  std::string reason;           ///< "attribute 'length' is not a number: 'nan'"
+  int line = 0;                 ///< 1-based line of the element in the (inflated) net file
+  /// False for a defect in a value no route reads (the lane indices of an internal edge, whose
+  /// lanes are found by id): it is listed (inspect) but never refuses a route.
+  bool affects_routes = true;
+};
+
+/// What a defect is recorded against (its id is the element's id; a connection's is its from-lane).
+enum class NetElement { Edge, Lane, Junction, TlLogic };
+
+/// The key of an element in NetIndex's defect lookup.
+std::string defect_key(NetElement kind, const std::string& id);
+
 /// Whether a passenger car may use a lane with these `allow` / `disallow` attributes.
 bool passenger_allowed(const std::string& allow, const std::string& disallow);
 
@@ -111,7 +134,13 @@ class NetIndex {
 
   std::size_t edge_count() const { return edges_.size(); }
 
+  /// Every defect found while loading, in file order.
+  const std::vector<NetDefect>& defects() const { return defects_; }
+  /// The first defect that affects routes recorded against this element, or null.
+  const NetDefect* defect(NetElement kind, const std::string& id) const;
+
  private:
+  friend class NetLoader;
   std::string path_;
   bool lefthand_ = false;
   std::vector<NetEdge> edges_;
@@ -124,6 +153,8 @@ class NetIndex {
   std::unordered_map<std::string, std::size_t> roundabout_by_edge_;
   std::vector<NetTlLogic> tl_logics_;
   std::unordered_map<std::string, std::size_t> tl_logic_by_id_;
+  std::vector<NetDefect> defects_;
+  std::unordered_map<std::string, std::size_t> defect_by_element_;  // defect_key(kind, id) -> first
 };
 
 }  // namespace signalsim::sumo

@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstring>
+#include <numeric>
 #include <string_view>
-#include <utility>
 
-#include "sumo/net_index.hpp"
 #include "sumo/number_parsing.hpp"
 
 namespace signalsim::sumo {
@@ -31,69 +31,147 @@ std::vector<std::string> split_blanks(std::string_view text) {
   return out;
 }
 
+std::string missing(const char* name) { return std::string("attribute '") + name + "' is missing"; }
+
 }  // namespace
 
 std::string describe(const char* kind, const std::string& id) {
   return id.empty() ? std::string(kind) + " without id" : std::string(kind) + " '" + id + "'";
 }
 
-XmlElement::XmlElement(const std::string& path, pugi::xml_node node, std::string what)
-    : path_(path), node_(node), what_(std::move(what)) {}
+std::optional<bool> parse_sumo_bool(const std::string& text) {
+  const std::string v = lower(text);
+  if (v == "true" || v == "1" || v == "yes" || v == "on" || v == "x") return true;
+  if (v == "false" || v == "0" || v == "no" || v == "off" || v == "-") return false;
+  return std::nullopt;
+}
 
-void XmlElement::fail(const std::string& reason) const { throw NetError(path_ + ": " + what_ + ": " + reason); }
+// ---- DefectLog ------------------------------------------------------------------------------------
+
+void DefectLog::add(const DefectOwner& owner, std::string element, std::string reason, std::ptrdiff_t offset,
+                    bool affects_routes, std::ptrdiff_t earlier) {
+  Pending p;
+  p.defect.element = std::move(element);
+  p.defect.reason = std::move(reason);
+  p.defect.affects_routes = affects_routes;
+  p.owner = owner;
+  p.offset = offset;
+  p.earlier = earlier;
+  pending_.push_back(std::move(p));
+}
+
+std::vector<std::size_t> newline_offsets(const std::string& text) {
+  std::vector<std::size_t> out;
+  for (const char* p = text.data(); (p = static_cast<const char*>(std::memchr(p, '\n', text.data() + text.size() - p)));
+       ++p)
+    out.push_back(static_cast<std::size_t>(p - text.data()));
+  return out;
+}
+
+std::vector<NetDefect> DefectLog::finish(
+    const std::vector<std::size_t>& newlines,
+    std::vector<std::pair<std::pair<NetElement, std::string>, std::size_t>>& keys) {
+  // 1 + the newlines before the offset; 0 when pugixml gave no offset.
+  const auto line_of = [&](std::ptrdiff_t offset) {
+    if (offset < 0) return 0;
+    return 1 + static_cast<int>(std::lower_bound(newlines.begin(), newlines.end(), static_cast<std::size_t>(offset)) -
+                                newlines.begin());
+  };
+
+  // File order (the elements are visited in file order already; a stable sort keeps that).
+  std::vector<std::size_t> order(pending_.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return pending_[a].offset < pending_[b].offset; });
+  std::vector<NetDefect> out;
+  out.reserve(pending_.size());
+  for (std::size_t i : order) {
+    Pending& p = pending_[i];
+    p.defect.line = line_of(p.offset);
+    if (p.earlier >= 0) p.defect.reason += " (first defined at line " + std::to_string(line_of(p.earlier)) + ")";
+    if (p.owner && p.defect.affects_routes) keys.emplace_back(*p.owner, out.size());
+    out.push_back(std::move(p.defect));
+  }
+  pending_.clear();
+  return out;
+}
+
+// ---- XmlElement -----------------------------------------------------------------------------------
+
+XmlElement::XmlElement(pugi::xml_node node, std::string what, DefectOwner owner, DefectLog& log)
+    : node_(node), what_(std::move(what)), owner_(std::move(owner)), log_(&log) {}
+
+void XmlElement::defect(const std::string& reason, bool affects_routes, std::ptrdiff_t earlier) const {
+  log_->add(owner_, what_, reason, offset(), affects_routes, earlier);
+}
 
 std::string XmlElement::text(const char* name, const std::string& fallback) const {
   const pugi::xml_attribute a = node_.attribute(name);
   return a ? std::string(a.value()) : fallback;
 }
 
-std::string XmlElement::required_text(const char* name) const {
+std::optional<std::string> XmlElement::required_text(const char* name) const {
   const pugi::xml_attribute a = node_.attribute(name);
-  if (!a || *a.value() == '\0') fail(std::string("attribute '") + name + "' is missing");
-  return a.value();
+  if (!a || *a.value() == '\0') {
+    defect(missing(name));
+    return std::nullopt;
+  }
+  return std::string(a.value());
 }
 
 double XmlElement::number(const char* name, double fallback) const {
   const pugi::xml_attribute a = node_.attribute(name);
   if (!a) return fallback;
   const auto value = parse_double(a.value());
-  if (!value) fail(std::string("attribute '") + name + "' is not a number: '" + a.value() + "'");
+  if (!value) {
+    defect(std::string("attribute '") + name + "' is not a number: '" + a.value() + "'");
+    return fallback;
+  }
   return *value;
 }
 
-double XmlElement::required_number(const char* name) const {
-  if (!node_.attribute(name)) fail(std::string("attribute '") + name + "' is missing");
-  return number(name, 0.0);
+std::optional<double> XmlElement::required_number(const char* name) const {
+  if (!node_.attribute(name)) {
+    defect(missing(name));
+    return std::nullopt;
+  }
+  const pugi::xml_attribute a = node_.attribute(name);
+  const auto value = parse_double(a.value());
+  if (!value) defect(std::string("attribute '") + name + "' is not a number: '" + a.value() + "'");
+  return value;
 }
 
 int XmlElement::integer(const char* name, int fallback) const {
   const pugi::xml_attribute a = node_.attribute(name);
   if (!a) return fallback;
   const auto value = parse_int(a.value());
-  if (!value) fail(std::string("attribute '") + name + "' is not an integer: '" + a.value() + "'");
+  if (!value) {
+    defect(std::string("attribute '") + name + "' is not an integer: '" + a.value() + "'");
+    return fallback;
+  }
   return *value;
 }
 
-int XmlElement::required_integer(const char* name) const {
-  if (!node_.attribute(name)) fail(std::string("attribute '") + name + "' is missing");
-  return integer(name, 0);
-}
-
-bool XmlElement::boolean(const char* name, bool fallback) const {
+std::optional<int> XmlElement::required_integer(const char* name) const {
   const pugi::xml_attribute a = node_.attribute(name);
-  if (!a) return fallback;
-  const std::string v = lower(a.value());
-  if (v == "true" || v == "1" || v == "yes" || v == "on" || v == "x") return true;
-  if (v == "false" || v == "0" || v == "no" || v == "off" || v == "-") return false;
-  fail(std::string("attribute '") + name + "' is not a boolean: '" + a.value() + "'");
+  if (!a) {
+    defect(missing(name));
+    return std::nullopt;
+  }
+  const auto value = parse_int(a.value());
+  if (!value) defect(std::string("attribute '") + name + "' is not an integer: '" + a.value() + "'");
+  return value;
 }
 
 std::vector<std::string> XmlElement::list(const char* name) const { return split_blanks(text(name)); }
 
-Polyline XmlElement::shape(const char* name) const {
+std::optional<Polyline> XmlElement::shape(const char* name) const {
   const pugi::xml_attribute a = node_.attribute(name);
   const std::vector<std::string> tokens = split_blanks(a ? a.value() : "");
-  if (tokens.empty()) fail(std::string("has no ") + name);
+  if (tokens.empty()) {
+    defect(std::string("has no ") + name);
+    return std::nullopt;
+  }
   std::vector<Vec2> points;
   points.reserve(tokens.size());
   for (const std::string& token : tokens) {
@@ -109,8 +187,15 @@ Polyline XmlElement::shape(const char* name) const {
     const auto x = parts.size() >= 2 ? parse_double(parts[0]) : std::nullopt;
     const auto y = parts.size() >= 2 ? parse_double(parts[1]) : std::nullopt;
     const bool z_ok = parts.size() == 2 || (parts.size() == 3 && parse_double(parts[2]).has_value());
-    if (!x || !y || !z_ok) fail(std::string("attribute '") + name + "' has a malformed point: '" + token + "'");
+    if (!x || !y || !z_ok) {
+      defect(std::string("attribute '") + name + "' has a malformed point: '" + token + "'");
+      return std::nullopt;
+    }
     points.push_back({*x, *y});
+  }
+  if (points.size() < 2) {
+    defect(std::string("attribute '") + name + "' has one point; a lane needs two");
+    return std::nullopt;
   }
   return Polyline(std::move(points));
 }

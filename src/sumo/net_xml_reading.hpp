@@ -1,48 +1,89 @@
-// Typed access to the attributes of one .net.xml element, with NetError messages that name the file,
-// the element and the attribute: "<path>: lane 's_in_0': attribute 'speed' is not a number: 'fast'".
-// Private to net_index.cpp (it exposes pugixml, which signalsim_sumo links privately).
+// Typed access to the attributes of one .net.xml element. A value that cannot be read is not an
+// exception: it is recorded in a DefectLog against the element (named in the message, e.g.
+// "lane 's_in_0': attribute 'speed' is not a number: 'fast'") and the getter returns its fallback.
+// Private to the net loader (it exposes pugixml, which signalsim_sumo links privately).
 #pragma once
 
 #include <pugixml.hpp>
 
+#include <cstddef>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/polyline.hpp"
+#include "sumo/net_index.hpp"
 
 namespace signalsim::sumo {
 
+/// The element a defect is recorded against: its kind and id. No owner: listed only.
+using DefectOwner = std::optional<std::pair<NetElement, std::string>>;
+
+/// Defects as they are found, with byte offsets; lines are assigned in one pass at the end.
+class DefectLog {
+ public:
+  /// `offset`: of the element in the buffer; `earlier`: of a first definition (a repeated id), or -1.
+  void add(const DefectOwner& owner, std::string element, std::string reason, std::ptrdiff_t offset,
+           bool affects_routes = true, std::ptrdiff_t earlier = -1);
+
+  /// Lines from `newlines` (the sorted offsets of the text's '\n', see newline_offsets).
+  /// Returns the defects in file order; `keys` gets (owner, index into the result) per owned defect
+  /// that affects routes.
+  std::vector<NetDefect> finish(const std::vector<std::size_t>& newlines,
+                                std::vector<std::pair<std::pair<NetElement, std::string>, std::size_t>>& keys);
+
+ private:
+  struct Pending {
+    NetDefect defect;
+    DefectOwner owner;
+    std::ptrdiff_t offset = 0;
+    std::ptrdiff_t earlier = -1;
+  };
+  std::vector<Pending> pending_;
+};
+
 class XmlElement {
  public:
-  /// `what` names the element in messages, e.g. "lane 's_in_0'" or "connection 'a' -> 'b'".
-  XmlElement(const std::string& path, pugi::xml_node node, std::string what);
+  /// `what` names the element in messages, e.g. "lane 's_in_0'" or "connection 'a' -> 'b'";
+  /// defects go to `log` against `owner`.
+  XmlElement(pugi::xml_node node, std::string what, DefectOwner owner, DefectLog& log);
 
   /// Attribute text, or `fallback` when the attribute is absent.
   std::string text(const char* name, const std::string& fallback = "") const;
-  /// Attribute text; throws NetError when absent or empty.
-  std::string required_text(const char* name) const;
-  /// Attribute as a finite number, `fallback` when absent; throws NetError when it does not parse.
+  /// Attribute text; absent or empty: a defect, nullopt.
+  std::optional<std::string> required_text(const char* name) const;
+  /// Attribute as a finite number, `fallback` when absent; a defect (and `fallback`) when it does not parse.
   double number(const char* name, double fallback) const;
-  double required_number(const char* name) const;
+  /// The same, and absent is a defect too (nullopt).
+  std::optional<double> required_number(const char* name) const;
   int integer(const char* name, int fallback) const;
-  int required_integer(const char* name) const;
-  /// SUMO booleans: true/false, 1/0, yes/no, on/off, x/- (any case); `fallback` when absent.
-  bool boolean(const char* name, bool fallback) const;
+  std::optional<int> required_integer(const char* name) const;
   /// Blank-separated list ("a b  c" -> {a, b, c}); empty when absent.
   std::vector<std::string> list(const char* name) const;
-  /// SUMO shape "x,y x,y ..." (each point may carry a third coordinate z, which is dropped).
-  /// Throws NetError when absent, empty or malformed.
-  Polyline shape(const char* name) const;
+  /// SUMO shape "x,y x,y ..." (each point may carry a third coordinate z, which is dropped), at
+  /// least two points. A defect (nullopt) when absent, empty or malformed.
+  std::optional<Polyline> shape(const char* name) const;
 
-  [[noreturn]] void fail(const std::string& reason) const;
+  /// Records `reason` against this element.
+  void defect(const std::string& reason, bool affects_routes = true, std::ptrdiff_t earlier = -1) const;
+  std::ptrdiff_t offset() const { return node_.offset_debug(); }
+  const std::string& what() const { return what_; }
 
  private:
-  const std::string& path_;
   pugi::xml_node node_;
   std::string what_;
+  DefectOwner owner_;
+  DefectLog* log_;
 };
+
+/// The offsets of every '\n' in `text`, in order (taken before pugixml parses it in place).
+std::vector<std::size_t> newline_offsets(const std::string& text);
 
 /// "<kind> '<id>'" for messages; "<kind> without id" when `id` is empty.
 std::string describe(const char* kind, const std::string& id);
+
+/// SUMO booleans: true/false, 1/0, yes/no, on/off, x/- (any case); nullopt otherwise.
+std::optional<bool> parse_sumo_bool(const std::string& text);
 
 }  // namespace signalsim::sumo

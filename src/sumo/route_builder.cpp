@@ -7,7 +7,7 @@
 #include <string_view>
 #include <utility>
 
-#include "sumo/lane_plan.hpp"
+#include "sumo/route_lanes.hpp"
 #include "sumo/turn_direction.hpp"
 #include "sumo/number_parsing.hpp"
 
@@ -99,6 +99,13 @@ bool ring_edge_has_exit(const NetIndex& net, const NetEdge& edge, std::size_t ri
   });
 }
 
+/// Refuses the route when `kind` `id` has a defect; `use` says how the route uses it.
+void refuse_defective(const NetIndex& net, NetElement kind, const std::string& id, const std::string& use) {
+  if (const NetDefect* d = net.defect(kind, id)) {
+    throw NetDefectError(net.path(), d->line, d->element + ": " + d->reason + " (" + use + ")");
+  }
+}
+
 Lanelet lanelet_of(const NetEdge& edge, const NetLane& lane) {
   Lanelet l;
   l.lane_id = lane.id;
@@ -115,7 +122,7 @@ Lanelet lanelet_of(const NetEdge& edge, const NetLane& lane) {
 }  // namespace
 
 RoutePlan build_route(const NetIndex& net, const std::vector<std::string>& edges,
-                      const std::vector<int>& required_exit) {
+                      const std::vector<int>& required_exit, const LaneChangeEgo& ego) {
   if (edges.empty()) throw RouteError("the route has no edges");
 
   // Every route edge exists and is a normal edge.
@@ -128,32 +135,14 @@ RoutePlan build_route(const NetIndex& net, const std::vector<std::string>& edges
     if (edge->is_internal || id.front() == ':') {
       throw RouteError("route edge " + quoted(id) + " is an internal (junction) edge; a route lists normal edges");
     }
+    refuse_defective(net, NetElement::Edge, id, "a route edge");
     if (edge->lanes.empty()) throw RouteError("route edge " + quoted(id) + " has no lanes");
     route.push_back(edge);
   }
 
-  // Consecutive edges are connected.
-  std::vector<std::vector<const NetConnection*>> links(route.size() - 1);
-  std::vector<std::vector<bool>> usable;
-  for (std::size_t i = 0; i < route.size(); ++i) {
-    usable.emplace_back();
-    for (const NetLane& lane : route[i]->lanes) usable.back().push_back(lane.allows_passenger);
-    if (i + 1 == route.size()) break;
-    for (const NetLane& lane : route[i]->lanes) {
-      for (const NetConnection& c : net.connections_from_lane(lane.id)) {
-        if (c.to_edge == edges[i + 1]) links[i].push_back(&c);
-      }
-    }
-    if (links[i].empty()) {
-      throw RouteError("route edges " + quoted(edges[i]) + " -> " + quoted(edges[i + 1]) + " are not connected");
-    }
-  }
-
-  const LanePlan plan = plan_lanes(usable, links, required_exit);
-  if (plan.lanes.size() != route.size()) {
-    throw RouteError("route " + quoted(edges.front()) + " ... " + quoted(edges.back()) +
-                     ": no lane sequence connects the route edges");
-  }
+  // The lane plan (route_lanes.cpp): connections, permissions, the room of every edge.
+  const RouteLanes lanes = plan_route_lanes(net, route, required_exit, ego);
+  const LanePlan& plan = lanes.plan;
 
   std::vector<Lanelet> lanelets;
   double s = 0.0;
@@ -167,6 +156,11 @@ RoutePlan build_route(const NetIndex& net, const std::vector<std::string>& edges
     const NetEdge& edge = *route[i];
     const NetLane& lane = edge.lanes[static_cast<std::size_t>(plan.exit_lanes[i])];
     const auto edge_ring = net.roundabout_of_edge(edge.id);
+    // The lanes the ego drives here: entered on, left on, and crossed between them.
+    for (int k = std::min(plan.lanes[i], plan.exit_lanes[i]); k <= std::max(plan.lanes[i], plan.exit_lanes[i]); ++k) {
+      refuse_defective(net, NetElement::Lane, edge.lanes[static_cast<std::size_t>(k)].id,
+                       "a lane the route drives on edge " + quoted(edge.id));
+    }
 
     Lanelet normal = lanelet_of(edge, lane);
     normal.successor_turn_directions = successor_directions(net, lane.id);
@@ -180,6 +174,10 @@ RoutePlan build_route(const NetIndex& net, const std::vector<std::string>& edges
       normal.leaves_ring_at_end = ring_edge_has_exit(net, edge, *edge_ring);
     }
     const NetConnection* link = i + 1 < route.size() ? plan.links[i] : nullptr;
+    if (link != nullptr && !link->tl.empty()) {
+      refuse_defective(net, NetElement::TlLogic, link->tl,
+                       "the light of the route's connection " + quoted(edge.id) + " -> " + quoted(edges[i + 1]));
+    }
     // The stop line is this lane's end: the light of the connection taken leaves it.
     if (link != nullptr && !link->tl.empty()) normal.traffic_light = TrafficLightLink{link->tl, link->link_index};
     push(std::move(normal));
@@ -209,10 +207,15 @@ RoutePlan build_route(const NetIndex& net, const std::vector<std::string>& edges
         throw RouteError("route edges " + quoted(edge.id) + " -> " + quoted(next_edge) + ": internal lane " +
                          quoted(via) + " is not in the net");
       }
+      const std::string use = "an internal lane of the route's connection " + quoted(edge.id) + " -> " + quoted(next_edge);
+      refuse_defective(net, NetElement::Edge, internal_edge->id, use);
+      refuse_defective(net, NetElement::Lane, via, use);
       Lanelet l = lanelet_of(*internal_edge, *internal);
       l.is_internal = true;
       l.junction_id = junction_of_internal_lane(via);
       if (net.junction(l.junction_id) == nullptr) l.junction_id = edge.to_junction;
+      refuse_defective(net, NetElement::Junction, l.junction_id,
+                       "the junction of the route's connection " + quoted(edge.id) + " -> " + quoted(next_edge));
       const NetConnection* via_of = net.connection_via(via);
       l.turn_direction = turn_direction_of(via_of != nullptr ? via_of->dir : link->dir, net.lefthand());
       l.successor_turn_directions = successor_directions(net, via);
@@ -242,6 +245,8 @@ RoutePlan build_route(const NetIndex& net, const std::vector<std::string>& edges
   out.lane_per_edge = plan.exit_lanes;
   out.entry_lane_per_edge = plan.lanes;
   out.lane_changes = plan.lane_changes;
+  out.rooms = lanes.rooms;
+  out.changes = lanes.changes;
   return out;
 }
 

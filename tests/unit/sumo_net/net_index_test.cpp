@@ -292,7 +292,7 @@ TEST(NetIndexLoad, LanesSortedByIndex) {
   EXPECT_EQ(net.lane("a_1"), &net.edge("a")->lanes[1]);
 }
 
-// ---- errors ---------------------------------------------------------------------------------------
+// ---- errors (whole files; a defect in one element is not an error, see net_defects_test.cpp) -----
 
 TEST(NetIndexErrors, MissingFile) {
   const std::string path = net_path("no_such.net.xml");
@@ -329,49 +329,10 @@ TEST(NetIndexErrors, NoNetRoot) {
   EXPECT_THAT(message, HasSubstr("<routes>"));
 }
 
-TEST(NetIndexErrors, LaneWithoutShape) {
-  const ScratchDir scratch;
-  const std::string path = scratch.write("noshape.net.xml", net_with_lane("<lane id=\"a_0\" index=\"0\" length=\"10\"/>"));
-  const std::string message = load_error(path);
-  EXPECT_THAT(message, HasSubstr(path + ": lane 'a_0'"));
-  EXPECT_THAT(message, HasSubstr("shape"));
-}
-
-TEST(NetIndexErrors, NumberThatDoesNotParse) {
-  const ScratchDir scratch;
-  const std::string path =
-      scratch.write("badnum.net.xml", net_with_lane("<lane id=\"a_0\" index=\"0\" length=\"10m\" shape=\"0,0 10,0\"/>"));
-  const std::string message = load_error(path);
-  EXPECT_THAT(message, HasSubstr(path + ": lane 'a_0': attribute 'length' is not a number: '10m'"));
-}
-
-TEST(NetIndexErrors, MalformedShapePoint) {
-  const ScratchDir scratch;
-  const std::string path =
-      scratch.write("badshape.net.xml", net_with_lane("<lane id=\"a_0\" index=\"0\" length=\"10\" shape=\"0,0 10\"/>"));
-  const std::string message = load_error(path);
-  EXPECT_THAT(message, HasSubstr("lane 'a_0': attribute 'shape' has a malformed point: '10'"));
-}
-
-TEST(NetIndexErrors, BadConnectionLane) {
-  const ScratchDir scratch;
-  const std::string path = scratch.write(
-      "badconn.net.xml", "<net><connection from=\"a\" to=\"b\" fromLane=\"x\" toLane=\"0\"/></net>");
-  const std::string message = load_error(path);
-  EXPECT_THAT(message, HasSubstr("connection 'a' -> 'b': attribute 'fromLane' is not an integer: 'x'"));
-}
-
 TEST(NetIndexErrors, BadLefthand) {
   const ScratchDir scratch;
   const std::string path = scratch.write("badlh.net.xml", "<net lefthand=\"maybe\"/>");
   EXPECT_THAT(load_error(path), HasSubstr("attribute 'lefthand' is not a boolean: 'maybe'"));
-}
-
-TEST(NetIndexErrors, BadPhaseDuration) {
-  const ScratchDir scratch;
-  const std::string path = scratch.write(
-      "badtl.net.xml", "<net><tlLogic id=\"T\" type=\"static\"><phase duration=\"\" state=\"G\"/></tlLogic></net>");
-  EXPECT_THAT(load_error(path), HasSubstr("tlLogic 'T' <phase>: attribute 'duration' is not a number: ''"));
 }
 
 TEST(NetIndexErrors, TruncatedGzip) {
@@ -380,12 +341,6 @@ TEST(NetIndexErrors, TruncatedGzip) {
   const std::string path = scratch.write("cut.net.xml.gz", whole.substr(0, whole.size() / 2));
   const std::string message = load_error(path);
   EXPECT_THAT(message, HasSubstr(path + ": corrupt gzip data"));
-}
-
-TEST(NetIndexErrors, DuplicateEdge) {
-  const ScratchDir scratch;
-  const std::string path = scratch.write("dup.net.xml", "<net><edge id=\"a\"/><edge id=\"a\"/></net>");
-  EXPECT_THAT(load_error(path), HasSubstr("edge 'a': duplicate edge id"));
 }
 
 }  // namespace

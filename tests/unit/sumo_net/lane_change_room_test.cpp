@@ -1,0 +1,62 @@
+// The room of a lane change and whether it fits (sumo/lane_change_room.hpp): the one rule the lane
+// plan and the lateral planner share. Numbers of bologna_acosta's edges (issue 11).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "sumo/lane_change_room.hpp"
+
+namespace signalsim::sumo {
+namespace {
+
+TEST(LaneChangeRoom, FrontStaysOnTheEdge) {
+  const LaneChangeEgo ego;  // base_link_to_front 3.7, depart_pos 0
+  EXPECT_DOUBLE_EQ(lane_change_room(211.92, false, ego), 208.22);  // 122
+  EXPECT_DOUBLE_EQ(lane_change_room(0.54, false, ego), -3.16);     // 204[1][0]
+  LaneChangeEgo departed = ego;
+  departed.depart_pos = 10.0;
+  EXPECT_DOUBLE_EQ(lane_change_room(48.5, true, departed), 38.5);  // base_link from depart_pos - 3.7
+}
+
+TEST(LaneChangeRoom, DefaultTimingShrinksOnAShortEdge) {
+  EXPECT_DOUBLE_EQ(default_lane_change(208.22).lead, 20.0);
+  EXPECT_DOUBLE_EQ(default_lane_change(208.22).length, 50.0);
+  // 31 (11.38 m): 7.68 m of room, lead 1.536 m, 5.144 m of lateral motion.
+  EXPECT_NEAR(default_lane_change(7.68).lead, 1.536, 1e-9);
+  EXPECT_NEAR(default_lane_change(7.68).length, 5.144, 1e-9);
+}
+
+TEST(LaneChangeRoom, ShiftAcrossLanes) {
+  EXPECT_DOUBLE_EQ(lane_shift({3.2, 3.2, 3.2}, 0, 1), 3.2);
+  EXPECT_DOUBLE_EQ(lane_shift({3.2, 3.0, 3.2}, 2, 0), 6.2);
+  EXPECT_DOUBLE_EQ(lane_shift({3.2, 3.0}, 1, 1), 0.0);
+}
+
+TEST(LaneChangeRoom, PhysicallySensibleLength) {
+  const LaneChangeEgo ego;  // grip 9 m/s^2
+  // At 13.89 m/s the grip limits: L = v sqrt((10 / sqrt 3) d / a).
+  EXPECT_NEAR(min_lane_change_length(3.2, 13.89, ego), 13.89 * std::sqrt(10.0 / std::sqrt(3.0) * 3.2 / 9.0), 1e-9);
+  EXPECT_NEAR(min_lane_change_length(3.2, 13.89, ego), 19.90, 0.01);
+  // Slowly the steering limits (radius 3.31 m): L = sqrt((10 / sqrt 3) d R).
+  EXPECT_NEAR(min_lane_change_length(3.2, 2.0, ego), std::sqrt(10.0 / std::sqrt(3.0) * 3.2 * kMinTurningRadius), 1e-9);
+  EXPECT_DOUBLE_EQ(min_lane_change_length(0.1, 1.0, ego), kMinLaneChangeLength);
+}
+
+TEST(LaneChangeRoom, TheIssuesShiftOf6point4MetresIn5MetresDoesNotFit) {
+  const LaneChangeEgo ego;
+  EXPECT_FALSE(lane_change_fits(7.68, 6.4, 13.89, ego));   // 31: 5.14 m, needs 28.15 m
+  EXPECT_FALSE(lane_change_fits(7.68, 6.4, 1.0, ego));     // even crawling: sharper than a car steers
+  EXPECT_FALSE(lane_change_fits(11.88, 3.2, 13.89, ego));  // 3 (15.58 m): 8.50 m, needs 19.90 m
+  EXPECT_TRUE(lane_change_fits(208.22, 3.2, 13.89, ego));  // 122
+  EXPECT_TRUE(lane_change_fits(208.22, 6.4, 13.89, ego));  // two lanes in 50 m: 28.15 m needed
+}
+
+TEST(LaneChangeRoom, RoomNeededForALength) {
+  EXPECT_NEAR(lane_change_room_needed(19.9), 20.9 / 0.8, 1e-9);   // lead 20 % of the room
+  EXPECT_DOUBLE_EQ(lane_change_room_needed(50.0), 63.75);          // lead 12.75 m, margin 1 m
+  EXPECT_TRUE(std::isinf(lane_change_room_needed(50.5)));          // longer than any default
+  EXPECT_GE(default_lane_change(lane_change_room_needed(19.9)).length, 19.9 - 1e-9);
+}
+
+}  // namespace
+}  // namespace signalsim::sumo
