@@ -14,7 +14,8 @@ namespace signalsim {
 void check_expectations_apply(const Scenario& scenario, const RouteMap& route);
 
 /// One result per expectation, in file order, then one failed result per lane change the run
-/// missed (LaneChangeRecord phase "missed").
+/// missed (LaneChangeRecord phase "missed"), then a failed "ego arrives (not stuck)" when the stuck
+/// rule ended the run (RunRecord::not_arrived reason "stuck").
 std::vector<ExpectationResult> evaluate_expectations(const Scenario& scenario, const RouteMap& route,
                                                      const RunRecord& record);
 

@@ -183,6 +183,23 @@ void write_run_outputs(const std::string& dir, const Scenario& scenario, const s
   counts["steps_hazard"] = hazard;
   counts["sumo_signal_mismatches"] = mismatches;
   summary["counts"] = counts;
+  // Why the ego did not arrive (scenario/stuck_watch), null when it did.
+  nlohmann::ordered_json not_arrived = nullptr;
+  if (const auto& n = record.not_arrived) {
+    nlohmann::ordered_json leader = nullptr;
+    if (n->leader) leader = {{"id", n->leader->id}, {"gap", std::stod(fixed(n->leader->gap, 3))}};
+    not_arrived = {{"reason", n->reason},
+                   {"detail", n->detail},
+                   {"time", std::stod(fixed(n->time, 3))},
+                   {"s_front", std::stod(fixed(n->s_front, 3))},
+                   {"edge", n->edge},
+                   {"lane", n->lane},
+                   {"at_rest_for", std::stod(fixed(n->at_rest_for, 3))},
+                   {"held_by", n->held_by},
+                   {"leader", leader},
+                   {"junction", n->junction}};
+  }
+  summary["not_arrived"] = not_arrived;
   nlohmann::ordered_json lights;
   nlohmann::ordered_json stops = nlohmann::ordered_json::array();
   for (const LightStop& stop : record.stops)

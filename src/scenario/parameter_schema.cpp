@@ -44,6 +44,10 @@ const std::vector<ParameterSpec>& parameter_schema() {
       {"minimum_shift_length", 0.5, 0.0, 10.0, {}, "m", "TSD §10 (start planner)"},
       {"th_distance_to_middle_of_the_road", 0.5, 0.0, 10.0, {}, "m", "TSD §10 (start planner)"},
       {"prepare_time_before_start", 0.0, 0.0, 60.0, {}, "s", "TSD §10 (start planner)"},
+      // The run (signalsim).
+      {"stuck_rest_time", 60.0, 0.0, 1e6, {}, "s",
+       "signalsim: the ego at rest this long while signalsim commands it to drive ends the run as not arrived "
+       "(0: off)"},
       // Traffic-light judge (spec TLJ §4 and its Decisions).
       {"stop_margin", 0.0, -10.0, 50.0, {}, "m", "TLJ §4"},
       {"tl_state_timeout", 1.0, 0.0, 60.0, {}, "s", "TLJ §4"},
@@ -58,7 +62,7 @@ const std::vector<ParameterSpec>& parameter_schema() {
       {"v2i.last_time_allowed_to_pass", 2.0, 0.0, 60.0, {}, "s", "TLJ §1.7"},
       {"v2i.velocity_threshold", 0.5, 0.0, 50.0, {}, "m/s", "TLJ §1.7"},
       {"v2i.required_time_to_departure", 3.0, 0.0, 60.0, {}, "s", "TLJ §1.7"},
-      {"enable_arrow_aware_yellow_passing", true, 0, 0, {}, "-", "TLJ §1.8"},
+      {"enable_arrow_aware_yellow_passing", false, 0, 0, {}, "-", "TLJ §1.8 (corrected: false, as shipped)"},
       {"is_simulation", true, 0, 0, {}, "-", "TLJ Decisions"},
       {"max_accel", -2.8, -50.0, -0.01, {}, "m/s^2", "TLJ §2.1 (pass-judge deceleration, negative)"},
       {"max_jerk", -5.0, -100.0, -0.01, {}, "m/s^3", "TLJ §2.1 (pass-judge jerk, negative)"},

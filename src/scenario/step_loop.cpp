@@ -6,10 +6,12 @@
 
 #include "planning/speed_limit_planner.hpp"
 #include "planning/stop/jerk_limited_stop.hpp"
+#include "planning/stop/stop_speed_planner.hpp"
 #include "scenario/behavior_stage.hpp"
 #include "scenario/light_stage.hpp"
 #include "scenario/route_planning.hpp"
 #include "scenario/session_setup.hpp"
+#include "scenario/stuck_watch.hpp"
 #include "sumo/approach_lights.hpp"
 #include "sumo/sumo_session.hpp"
 #include "turn_signal/turn_signal_decider.hpp"
@@ -17,8 +19,7 @@
 namespace signalsim {
 namespace {
 
-constexpr double kRestSpeed = 0.01;       // [m/s] below this the ego counts as at rest for stop errors
-constexpr double kSettleDistance = 0.02;  // [m] this close to the stop point the ego is brought to rest
+constexpr double kRestSpeed = 0.01;  // [m/s] below this the ego is at rest (stop errors; a commanded speed: held)
 
 Blinker blinker_of(const TurnSignalDecision& d) {
   if (d.hazard == HazardLights::Enable) return Blinker::Hazard;
@@ -108,6 +109,7 @@ RunRecord drive(const StartedRun& run, const sumo::NetIndex& net) {
   const SpeedLimits limits{scenario.ego.max_speed, scenario.ego.accel, scenario.ego.decel};
   StopPlannerParameters stop_params;
   stop_params.emergency.min_acc = -scenario.ego.emergency_decel;
+  StopSpeedPlanner stop_speed(stop_params, scenario.ego.emergency_decel);
   TurnSignalDecider decider(turn_signal_parameters(scenario.params, b2f));
   RunRecord record;
   record.base_link_to_front = b2f;
@@ -152,12 +154,23 @@ RunRecord drive(const StartedRun& run, const sumo::NetIndex& net) {
   JudgeDecision previous_decision = JudgeDecision::None;
 
   bool departed = false;  // the ego has moved (start planner: has_departed)
-  bool hold_braking = false;  // braking for a lane change's hold point (not yet approved)
   double backed_up = 0.0;  // [m] emulated backward driving done so far
   const LateralSegment* pull_over_goal = nullptr;
   for (const LateralSegment& seg : behavior_stage.plan().segments)
     if (seg.kind == LateralKind::PullOver) pull_over_goal = &seg;
 
+  StuckWatch stuck(scenario.params.number("stuck_rest_time"));
+  // SUMO's leader of the ego for a not-arrived reason: the nearest other vehicle ahead on the ego's
+  // own lane. A session query that also looks onto the next lanes (Vehicle::getLeader) is to replace it.
+  const LeaderQuery leader = [&session](double range) -> std::optional<LeaderInfo> {
+    const sumo::EgoState now = session.ego();
+    std::optional<LeaderInfo> nearest;
+    for (const sumo::SumoSession::LaneVehicle& v : session.vehicles_on_lane(now.lane)) {
+      const double gap = v.pos - v.length - now.lane_pos;
+      if (gap >= -1e-6 && gap <= range && (!nearest || gap < nearest->gap)) nearest = LeaderInfo{v.id, gap};
+    }
+    return nearest;
+  };
   sumo::EgoState observed = session.ego();
   while (true) {
     // observe: the ego's route position (monotonic: search from the lanelet it was on).
@@ -208,39 +221,33 @@ RunRecord drive(const StartedRun& run, const sumo::NetIndex& net) {
     // the next junction is a light showing the ego red or yellow, the judge alone decides there.
     session.set_right_of_way(!light_decides_next_junction(route, s_front, light_steps));
 
-    // plan: lane limits, and a jerk-limited stop when a judge asks for one.
-    double speed = plan_speed_under_limits(route, s_front, observed.speed, dt, limits);
-    // A jerk-limited stop `to_go` ahead lowers the speed; returns the level when it constrains it.
-    const auto limit_for_stop = [&](double to_go) -> std::optional<StopLevel> {
-      const StopCommand stop = plan_stop({observed.speed, observed.accel, to_go, dt}, stop_params);
-      std::optional<StopLevel> level;
-      if (stop.braking || stop.commanded_velocity < speed) {
-        speed = std::min(speed, stop.commanded_velocity);
-        level = stop.level;
-      }
-      // Within 2 cm: come to rest (coarse steps never settle), if the emergency deceleration can shed
-      // the speed in this step; past the point faster than that, the planner's braking stands.
-      if (to_go < kSettleDistance && observed.speed <= scenario.ego.emergency_decel * dt) speed = 0.0;
-      return level;
-    };
+    // plan: lane limits, and a jerk-limited stop for each stop point (planning/stop/stop_speed_planner).
+    const double limits_speed = plan_speed_under_limits(route, s_front, observed.speed, dt, limits);
+    stop_speed.begin_step(observed.speed, observed.accel, limits_speed, dt);
     std::optional<StopLevel> stop_level;
-    if (stopping) stop_level = limit_for_stop(*stopping->result.stop_point_distance);
+    if (stopping) stop_level = stop_speed.add_stop(*stopping->result.stop_point_distance);
     // The pull-over goal: a jerk-limited stop with base_link at the goal (its level is not recorded).
-    if (pull_over_goal) limit_for_stop(pull_over_goal->goal_s - ego.s_base);
-    // A lane change not yet approved: base_link comes to rest before its last possible start. The
-    // hold constrains the speed from the step where a normal stop must begin (as if not braking
-    // yet: slowing for a curve ahead does not start it), then until approval.
+    std::optional<StopLevel> goal_level;
+    if (pull_over_goal) goal_level = stop_speed.add_stop(pull_over_goal->goal_s - ego.s_base);
+    // A lane change not yet approved: base_link comes to rest before its last possible start (the
+    // stop constrains the speed from the step where a normal stop must begin, until approval).
     std::optional<StopLevel> hold_level;
-    if (!behavior_step.hold_distance) {
-      hold_braking = false;
-    } else {
-      if (!hold_braking) hold_braking = plan_stop({observed.speed, 0.0, *behavior_step.hold_distance, dt}, stop_params).braking;
-      if (hold_braking) hold_level = limit_for_stop(*behavior_step.hold_distance);
-    }
+    if (behavior_step.hold_distance) hold_level = stop_speed.add_stop(*behavior_step.hold_distance);
+    double speed = stop_speed.speed();
     session.set_emergency_braking(stop_level == StopLevel::Emergency || hold_level == StopLevel::Emergency);
 
     // apply, step.
     if (backing) speed = 0.0;
+    stop_speed.end_step(speed);
+    // What of signalsim holds the ego at rest this step, if anything (the stuck rule).
+    std::string held_by;
+    if (speed < kRestSpeed) {
+      held_by = backing       ? "backing up"
+                : stop_level  ? "stopped for light " + stopping->light->tls_id
+                : hold_level  ? "the hold point of a lane change waiting for approval"
+                : goal_level  ? "the pull-over goal"
+                              : "its speed plan";
+    }
     session.command(signal_mask(blinker), speed);
     // The plan's offset where base_link will be after the step (normal lanes of the plan's edge only).
     if (segment)
@@ -306,7 +313,14 @@ RunRecord drive(const StartedRun& run, const sumo::NetIndex& net) {
       record.arrived = true;
       break;
     }
-    if (session.time() >= end_time - 1e-9) break;
+    if (stuck.observe(record.rows.back().time, record.rows.back().speed, held_by)) {
+      record.not_arrived = not_arrived("stuck", scenario.duration, record.rows.back(), stuck, leader, route);
+      break;
+    }
+    if (session.time() >= end_time - 1e-9) {
+      record.not_arrived = not_arrived("duration", scenario.duration, record.rows.back(), stuck, leader, route);
+      break;
+    }
     observed = session.ego();
   }
   record.collisions = session.ego_collisions();

@@ -1,12 +1,14 @@
 // The step loop (DESIGN.md): observe -> window -> decide -> plan -> apply -> record, every step.
 //
 //   start SUMO, insert the ego on the planned first lane, wait for its departure
-//   loop until the ego arrives or `duration` simulated seconds have passed:
+//   loop until the ego arrives, `duration` simulated seconds have passed, or the stuck rule ends
+//   the run (at rest stuck_rest_time while signalsim commands it to drive, scenario/stuck_watch):
 //     observe  ego lane/position/speed from SUMO; s_front from the RouteMap; s_base = s_front - b2f
 //     decide   blinker = TurnSignalDecider::decide(route, ego)                  (spec TSD §3)
 //     light    the next light: perception, then TrafficLightJudge::step         (spec TLJ §1-§2)
-//     plan     speed under the lane limits ahead, and a jerk-limited stop when the
-//              judge asks for one (normal, limit, then emergency constraint set)    (planning/)
+//     plan     speed under the lane limits ahead, lowered by a jerk-limited stop for each stop
+//              point (light, pull-over goal, hold point) only once a normal stop must begin
+//              (normal, limit, then emergency constraint set)   (planning/stop/stop_speed_planner)
 //     apply    blinker bits + speed to SUMO (re-sent every step, spec SUMO §4)
 //     step     SUMO advances one step
 //     record   the row: observation, decision, and the mask SUMO showed while executing it

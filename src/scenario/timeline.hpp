@@ -107,6 +107,25 @@ struct RunSumoInfo {
   sumo::SumoLogCounts log_counts;   ///< counted after SUMO closed
 };
 
+/// SUMO's leader of the ego (the stuck rule's reason): the vehicle ahead and the gap to it.
+struct LeaderInfo {
+  std::string id;
+  double gap = 0.0;  ///< [m] ego front bumper to the leader's rear bumper
+};
+
+/// Why a run ended before the ego arrived (scenario/stuck_watch).
+struct NotArrived {
+  std::string reason;              ///< "stuck" (the stuck rule ended the run) or "duration"
+  double time = 0.0;               ///< [s] the last row's time
+  double s_front = 0.0;            ///< [m] where the front was
+  std::string edge, lane;
+  double at_rest_for = 0.0;        ///< [s] at rest until the end (0: moving)
+  std::string held_by;             ///< what of signalsim held the ego at rest ("" when nothing did)
+  std::optional<LeaderInfo> leader;        ///< SUMO's leader of the ego, if any within the look-up range
+  std::string junction;            ///< the junction the ego waits in or at when no leader explains it
+  std::string detail;              ///< one sentence with all of the above
+};
+
 struct RunRecord {
   std::vector<TimelineRow> rows;
   std::vector<TimelineEvent> events;
@@ -115,6 +134,7 @@ struct RunRecord {
   std::vector<LaneChangeRecord> lane_changes;
   std::vector<ManeuverLine> maneuver_lines;  ///< route order (behavior_stage maneuver_lines)
   bool arrived = false;          ///< the ego reached the end of its route
+  std::optional<NotArrived> not_arrived;  ///< why not, when it did not
   int off_route_steps = 0;       ///< steps on a lane not on the planned route (route position held)
   int collisions = 0;
   double base_link_to_front = 0.0;

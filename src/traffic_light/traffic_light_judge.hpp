@@ -94,7 +94,7 @@ struct TrafficLightJudgeParameters {
   bool enable_pass_judge = true;          ///< false: a stop request always stops (spec TLJ §2.3)
   bool is_simulation = true;              ///< never received -> pass (true) / stop (false) (Decision)
   RestartSuppression restart_suppression;  ///< spec TLJ §1.6
-  bool enable_arrow_aware_yellow_passing = true;  ///< spec TLJ §1.8 (tier4 default true)
+  bool enable_arrow_aware_yellow_passing = false;  ///< spec TLJ §1.8 (corrected: autoware_launch ships false)
   double max_accel = -2.8;            ///< [m/s^2] a_s of the judge line, negative (common param)
   double max_jerk = -5.0;             ///< [m/s^3] j_s of the judge line, negative (common param)
   double delay_response_time = 0.5;   ///< [s] t_d of the judge line (common param)

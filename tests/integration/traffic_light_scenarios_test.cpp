@@ -148,6 +148,31 @@ TEST(TrafficLightScenarios, RedFlickerShorterThanTheHysteresisIsIgnored) {
   EXPECT_EQ(first_stop(r), nullptr) << "elapsed 0 s is not > stop_time_hysteresis (spec TLJ §1.5)";
 }
 
+// spec TLJ §1.8 (corrected default): a left turn at a light whose program has a left-arrow phase;
+// the light turns yellow from green 53 m before the line, where the ego can stop.
+TEST(TrafficLightScenarios, ArrowProgramYellowStopsATurnByDefault) {
+  const RunRecord r = run(std::string(SIGNALSIM_SOURCE_DIR) + "/tests/data/scenarios/arrow_program_left_yellow.yaml");
+  const TimelineRow* stop = first_stop(r);
+  ASSERT_NE(stop, nullptr) << "with the feature on (the old default) the judge let the turn go on amber";
+  EXPECT_EQ(stop->tl_state, 'y') << "the stop is decided on the yellow itself";
+  EXPECT_EQ(stop->zone, JudgeZone::Stoppable);
+  ASSERT_EQ(r.stops.size(), 1u);
+  EXPECT_LE(std::abs(r.stops[0].error), 0.3);
+  EXPECT_TRUE(r.red_violations.empty()) << "before: crossed the stop line on red at 29.0 s";
+  EXPECT_TRUE(r.arrived) << "goes on the left arrow later in the cycle";
+}
+
+TEST(TrafficLightScenarios, ArrowAwareYellowPassingStaysAvailable) {
+  const RunRecord r = run(std::string(SIGNALSIM_SOURCE_DIR) + "/tests/data/scenarios/arrow_program_left_yellow.yaml",
+                          {{"enable_arrow_aware_yellow_passing=true"}});
+  for (const TimelineRow& row : r.rows)
+    if (row.tl_state == 'y') {
+      EXPECT_FALSE(is_stop(row.tl_decision)) << "goes on amber (from green, turn lane, arrow bulb) t=" << row.time;
+    }
+  ASSERT_EQ(r.red_violations.size(), 1u) << "53 m at 13.89 m/s do not fit in 3 s of yellow: the run reports it";
+  EXPECT_EQ(r.red_violations[0].tl_id, "C");
+}
+
 // 200 approaches at random speeds (5-17 m/s) and random phases of a 40 s cycle (20 s green, 3 s
 // yellow, 17 s red), seeded. Asserts: never a stop line crossed on red when the judge said the ego
 // could stop; every emergency stop was ordered in the dilemma zone. Reports the counts per zone.

@@ -138,6 +138,27 @@ StopCommand plan_stop(const StopPlannerInput& in, const StopPlannerParameters& p
   const double D = in.distance_to_stop;
   StopCommand cmd;
 
+  // Cruise at the lane limits' speed while a normal stop from where that step leads stays possible
+  // with the tracking margin: a stop far ahead never holds the speed down (spec TLJ §3, inserted
+  // profile 4; issue 11).
+  if (in.cruise_velocity) {
+    require_finite(*in.cruise_velocity, "cruise_velocity");
+    const double vc = std::max(0.0, *in.cruise_velocity);
+    const double ac = (vc - v) / in.dt;
+    const double jerk = std::abs(params.normal.min_jerk);
+    if (vc > kStoppedVelocity && is_stop_feasible(v, a, D, params.normal) &&
+        stopping_distance(vc, ac, params.brake_start_ratio * params.normal.min_acc, jerk) <=
+            D - std::max(v, vc) * in.dt) {
+      cmd.level = StopLevel::Normal;
+      cmd.feasible = true;
+      cmd.braking = false;
+      cmd.commanded_velocity = vc;
+      cmd.commanded_acceleration = ac;
+      cmd.stopping_distance = min_stopping_distance(v, a, params.normal);
+      return cmd;
+    }
+  }
+
   // Standing: hold (the stop constrains the ego only at or past the stop point).
   if (v <= kStoppedVelocity) {
     cmd.level = StopLevel::Normal;
@@ -159,7 +180,7 @@ StopCommand plan_stop(const StopPlannerInput& in, const StopPlannerParameters& p
     cmd.stopping_distance = s_min;
     const double jerk = std::abs(set.min_jerk);
 
-    // Cruise while the normal level, less its tracking margin, can still stop after one more step.
+    // Hold the speed while the normal level, less its tracking margin, can still stop after one more step.
     if (level == StopLevel::Normal && a >= kBrakingAcceleration &&
         stopping_distance(v, 0.0, params.brake_start_ratio * set.min_acc, jerk) <= D - v * in.dt) {
       cmd.braking = false;

@@ -7,24 +7,33 @@
 // jerk magnitude J toward a target a_t in [min_acc, 0), then holds a_t until standstill; with
 // unbounded jerk it jumps to a_t at once. Its stopping distance S(v, a, a_t, J) grows as a_t -> 0,
 // so the exact-stop target is found by bisection. The level's minimum stopping distance is
-// S(v, a, min_acc, J): the level is feasible iff that is <= distance (+ 1 cm tolerance).
+// S(v, a, min_acc, J): the level is feasible iff that is <= distance (+ 1 cm tolerance). With a > 0
+// the ramp starts from the positive acceleration (the ego still speeds up while the ramp crosses 0).
 //
-// plan_stop(in) each step:
+// plan_stop(in) each step (r = brake_start_ratio, margin: a normal stop that needs only r * min_acc):
+//   if a cruise speed v_c is given (what the lane limits command without the stop), the normal
+//   level is feasible from (v, a), and after one step at v_c -- state (v_c, a_c = (v_c - v) / dt),
+//   max(v, v_c) dt further on -- S(v_c, a_c, r * normal.min_acc, J) <= distance - max(v, v_c) dt:
+//                            cruise: commanded v_c (braking = false); a far stop does not hold the
+//                            ego down (spec TLJ §3, inserted profile 4: before the stop point the
+//                            path keeps its speed limits, the smoother brakes when it must)
 //   if v <= 1e-3:            hold 0 (braking iff distance <= 0); level Normal, feasible
 //   level := first of (normal, limit, emergency) with S_min(level) <= distance + 1 cm
 //   if none:                 level Emergency, infeasible: brake at emergency min_acc
 //   if level == normal and a >= -1e-3 (not braking yet) and
-//      S(v, 0, brake_start_ratio * normal.min_acc, J) <= distance - v dt:
-//                            cruise: commanded v (braking = false; braking can still start next step)
+//      S(v, 0, r * normal.min_acc, J) <= distance - v dt:
+//                            hold: commanded v (braking = false; braking can still start next step)
 //   else:                    a_t := solve S(v, a, a_t, J) = distance on [min_acc, 0)
 //                            commanded := the profile's speed and acceleration after dt
 // So braking starts as late as the normal level allows, less a tracking margin (like a velocity
-// smoother tracking the speed limit), and at once, as gently as possible, when only a relaxed level
-// can still stop.
+// smoother tracking the speed limit), also when the ego was accelerating (the cruise test uses the
+// acceleration the cruise command leads to), and at once, as gently as possible, when only a
+// relaxed level can still stop. Without a cruise speed the first rule is skipped (the speed is held).
 #pragma once
 
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <string_view>
 
 namespace signalsim {
@@ -61,12 +70,15 @@ struct StopPlannerInput {
   double acceleration = 0.0;      ///< [m/s^2] current acceleration a
   double distance_to_stop = 0.0;  ///< [m] from the reference point to where it must come to rest
   double dt = 0.1;                ///< [s] step length, > 0
+  /// [m/s] the speed the ego would be commanded without this stop (the lane limits' plan for this
+  /// step, its acceleration included); empty: the stop holds the current speed until it must brake.
+  std::optional<double> cruise_velocity;
 };
 
 struct StopCommand {
   StopLevel level = StopLevel::Normal;  ///< first feasible level (Emergency if none)
   bool feasible = true;   ///< false: even the emergency level overshoots the stop point
-  bool braking = false;   ///< false: the stop does not constrain the speed yet (cruise)
+  bool braking = false;   ///< false: the stop does not constrain the speed yet (cruise or hold)
   double commanded_velocity = 0.0;      ///< [m/s] speed to reach at the end of this step, >= 0
   double commanded_acceleration = 0.0;  ///< [m/s^2] plan's acceleration at the end of the step
   double target_acceleration = 0.0;     ///< [m/s^2] a_t of the plan (0 when not braking)
@@ -86,7 +98,7 @@ double min_stopping_distance(double v, double a, const StopConstraintSet& c);
 bool is_stop_feasible(double v, double a, double distance, const StopConstraintSet& c);
 
 /// One step of the planner (algorithm at the top). Throws std::invalid_argument if dt <= 0, an
-/// input is not finite, or validate(params) throws.
+/// input (the cruise speed included) is not finite, or validate(params) throws.
 StopCommand plan_stop(const StopPlannerInput& in, const StopPlannerParameters& params = {});
 
 }  // namespace signalsim

@@ -160,8 +160,9 @@ TEST_F(ArrowAwareYellow, TimedOutSignalStopsAndDoesNotTrack) {
   EXPECT_EQ(r.yellow_state, YellowState::NotYellow);
 }
 
-TEST_F(ArrowAwareYellow, DefaultParametersEnableTheFeature) {
-  EXPECT_TRUE(TrafficLightJudgeParameters{}.enable_arrow_aware_yellow_passing);
+TEST_F(ArrowAwareYellow, DefaultParametersDisableTheFeature) {
+  // spec TLJ §1.8 (corrected): autoware_launch's shipped traffic_light.param.yaml has false.
+  EXPECT_FALSE(TrafficLightJudgeParameters{}.enable_arrow_aware_yellow_passing);
 }
 
 }  // namespace

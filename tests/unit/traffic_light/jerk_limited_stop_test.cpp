@@ -36,7 +36,7 @@ SimResult simulate(double v0, double stop_at) {
   double a = 0.0;
   double prev_a = 0.0;
   for (int k = 0; k < 2000 && (v > 0.0 || k == 0); ++k) {
-    const StopCommand c = plan_stop({v, a, stop_at - x, kDt});
+    const StopCommand c = plan_stop({v, a, stop_at - x, kDt, {}});
     if (k == 0) {
       r.first_level = c.level;
       r.first_braking = c.braking;
@@ -107,7 +107,7 @@ TEST(StopPlanner, VeryLittleDistancePicksEmergency) {
 }
 
 TEST(StopPlanner, InfeasibleEvenForEmergencyBrakesAtFullEmergencyDeceleration) {
-  const StopCommand c = plan_stop({kV0, 0.0, 5.0, kDt});
+  const StopCommand c = plan_stop({kV0, 0.0, 5.0, kDt, {}});
   EXPECT_EQ(c.level, StopLevel::Emergency);
   EXPECT_FALSE(c.feasible);
   EXPECT_TRUE(c.braking);
@@ -118,34 +118,84 @@ TEST(StopPlanner, InfeasibleEvenForEmergencyBrakesAtFullEmergencyDeceleration) {
 
 TEST(StopPlanner, FeasibilityBoundaryOfTheNormalLevel) {
   const double s_min = min_stopping_distance(kV0, 0.0, StopPlannerParameters{}.normal);
-  EXPECT_EQ(plan_stop({kV0, 0.0, s_min, kDt}).level, StopLevel::Normal);
-  EXPECT_EQ(plan_stop({kV0, 0.0, s_min - 0.5, kDt}).level, StopLevel::Limit);
+  EXPECT_EQ(plan_stop({kV0, 0.0, s_min, kDt, {}}).level, StopLevel::Normal);
+  EXPECT_EQ(plan_stop({kV0, 0.0, s_min - 0.5, kDt, {}}).level, StopLevel::Limit);
   EXPECT_TRUE(is_stop_feasible(kV0, 0.0, s_min, StopPlannerParameters{}.normal));
   EXPECT_FALSE(is_stop_feasible(kV0, 0.0, s_min - 0.5, StopPlannerParameters{}.normal));
   EXPECT_TRUE(is_stop_feasible(kV0, 0.0, s_min - 0.5, StopPlannerParameters{}.limit));
 }
 
 TEST(StopPlanner, StandingStill) {
-  const StopCommand ahead = plan_stop({0.0, 0.0, 3.0, kDt});
+  const StopCommand ahead = plan_stop({0.0, 0.0, 3.0, kDt, {}});
   EXPECT_EQ(ahead.commanded_velocity, 0.0);
   EXPECT_FALSE(ahead.braking);
   EXPECT_TRUE(ahead.feasible);
-  const StopCommand at = plan_stop({0.0, 0.0, 0.0, kDt});
+  const StopCommand at = plan_stop({0.0, 0.0, 0.0, kDt, {}});
   EXPECT_TRUE(at.braking);
   EXPECT_EQ(at.commanded_velocity, 0.0);
+}
+
+// A cruise speed (the lane limits' plan for the step) is commanded while a normal stop from the
+// state it leads to stays feasible with the tracking margin (issue 11).
+TEST(StopPlannerCruise, StandingWithAFarStopPullsAway) {
+  const StopCommand c = plan_stop({0.0, 0.0, 40.0, kDt, 0.1});
+  EXPECT_FALSE(c.braking);
+  EXPECT_DOUBLE_EQ(c.commanded_velocity, 0.1) << "without the cruise speed it held 0 (a deadlock at a green light)";
+  EXPECT_EQ(c.level, StopLevel::Normal);
+}
+
+TEST(StopPlannerCruise, StandingCloseToThePointStaysAtRest) {
+  // From rest at 0.1 m/s and +1 m/s^2 the normal stop needs about 0.87 m: 0.5 m is too short.
+  const StopCommand c = plan_stop({0.0, 0.0, 0.5, kDt, 0.1});
+  EXPECT_EQ(c.commanded_velocity, 0.0);
+  EXPECT_FALSE(c.braking);
+}
+
+TEST(StopPlannerCruise, TheAccelerationTheCruiseLeadsToCountsInTheStoppingDistance) {
+  // D lies between what holding 12 m/s needs and what speeding up to 12.1 m/s (+1 m/s^2) needs: the
+  // jerk ramp from +1 m/s^2 down to the target adds about 21 m.
+  const StopPlannerParameters p;
+  const double hold = stopping_distance(12.0, 0.0, p.brake_start_ratio * p.normal.min_acc, 1.0) + 12.0 * kDt;
+  const double speed_up = stopping_distance(12.1, 1.0, p.brake_start_ratio * p.normal.min_acc, 1.0) + 12.1 * kDt;
+  ASSERT_GT(speed_up, hold + 20.0);
+  const double D = 0.5 * (hold + speed_up);
+  const StopCommand refused = plan_stop({12.0, 0.0, D, kDt, 12.1});
+  EXPECT_FALSE(refused.braking);
+  EXPECT_DOUBLE_EQ(refused.commanded_velocity, 12.0) << "holds the speed instead of speeding up";
+  const StopCommand accepted = plan_stop({12.0, 0.0, speed_up + 0.01, kDt, 12.1});
+  EXPECT_DOUBLE_EQ(accepted.commanded_velocity, 12.1);
+  EXPECT_NEAR(accepted.commanded_acceleration, 1.0, 1e-9);
+}
+
+TEST(StopPlannerCruise, ARelaxedLevelBrakesWhateverTheCruiseSpeed) {
+  const StopCommand c = plan_stop({kV0, 0.0, 70.0, kDt, kV0});  // only the limit level can stop
+  EXPECT_TRUE(c.braking);
+  EXPECT_EQ(c.level, StopLevel::Limit);
+  EXPECT_LT(c.commanded_velocity, kV0);
+}
+
+TEST(StopPlannerCruise, AfterAHardSlowDownAFarStopLetsTheSpeedRiseAgain) {
+  // 2 m/s while SUMO braked at -4.5 m/s^2, 250 m before the stop: without the cruise speed the
+  // gentlest exact stop from that deceleration brought the ego to rest.
+  const StopCommand c = plan_stop({2.0, -4.5, 250.0, kDt, 2.1});
+  EXPECT_FALSE(c.braking);
+  EXPECT_DOUBLE_EQ(c.commanded_velocity, 2.1);
+  const StopCommand without = plan_stop({2.0, -4.5, 250.0, kDt, {}});
+  EXPECT_LT(without.commanded_velocity, 2.0);
+  EXPECT_THROW(plan_stop({2.0, 0.0, 250.0, kDt, std::numeric_limits<double>::infinity()}), std::invalid_argument);
 }
 
 TEST(StopPlanner, CustomLevelsAndValidation) {
   StopPlannerParameters p;
   p.emergency = {-6.0, -std::numeric_limits<double>::infinity()};
-  EXPECT_EQ(plan_stop({kV0, 0.0, 20.0, kDt}, p).level, StopLevel::Emergency);
-  EXPECT_FALSE(plan_stop({kV0, 0.0, 15.0, kDt}, p).feasible);  // needs 16.1 m at 6 m/s^2
+  EXPECT_EQ(plan_stop({kV0, 0.0, 20.0, kDt, {}}, p).level, StopLevel::Emergency);
+  EXPECT_FALSE(plan_stop({kV0, 0.0, 15.0, kDt, {}}, p).feasible);  // needs 16.1 m at 6 m/s^2
 
-  EXPECT_THROW(plan_stop({kV0, 0.0, 50.0, 0.0}), std::invalid_argument);
-  EXPECT_THROW(plan_stop({std::numeric_limits<double>::quiet_NaN(), 0.0, 50.0, kDt}), std::invalid_argument);
+  EXPECT_THROW(plan_stop({kV0, 0.0, 50.0, 0.0, {}}), std::invalid_argument);
+  EXPECT_THROW(plan_stop({std::numeric_limits<double>::quiet_NaN(), 0.0, 50.0, kDt, {}}), std::invalid_argument);
   StopPlannerParameters bad;
   bad.normal.min_acc = 0.5;
-  EXPECT_THROW(plan_stop({kV0, 0.0, 50.0, kDt}, bad), std::invalid_argument);
+  EXPECT_THROW(plan_stop({kV0, 0.0, 50.0, kDt, {}}, bad), std::invalid_argument);
   bad = {};
   bad.limit.min_jerk = 0.0;
   EXPECT_THROW(validate(bad), std::invalid_argument);
