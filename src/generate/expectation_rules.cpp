@@ -1,3 +1,4 @@
+// The expectation rules of generate: windows per section, their narrowing by the others, emission.
 #include "generate/expectation_rules.hpp"
 
 #include <algorithm>
@@ -39,16 +40,18 @@ Activation guaranteed_activation(const Section& s, const SpeedProfile& speed, co
   const auto search_at = [&](double pos) {
     return s.search_override ? *s.search_override : p.search_time * speed.lower(pos) + s.search_distance;
   };
-  double pos = s.start;
-  while (pos - kScanStep >= depart && s.start - (pos - kScanStep) < search_at(pos - kScanStep)) pos -= kScanStep;
+  // Scan back from the start on a 0.1 m grid (positions start - k * step, no accumulated error).
+  std::size_t k = 0;
+  const auto grid = [&](std::size_t i) { return s.start - static_cast<double>(i) * kScanStep; };
+  while (grid(k + 1) >= depart && s.start - grid(k + 1) < search_at(grid(k + 1))) ++k;
   Activation a;
-  a.from = pos;
-  if (pos - kScanStep < depart) {
+  a.from = grid(k);
+  if (grid(k + 1) < depart) {
     a.from = depart;
     a.why = "within its search distance from the departure (the first step stores the desired start, spec TSD §4.4)";
     return a;
   }
-  const double failing = pos - kScanStep;
+  const double failing = grid(k + 1);
   if (s.search_override) {
     a.why = "the lanelet's turn_signal_distance " + fixed(*s.search_override) + " m (spec TSD §4.3)";
   } else {
@@ -185,10 +188,11 @@ Derivation derive_expectations(const std::vector<Section>& sections, const Route
     if (s.side != Side::Left && s.side != Side::Right) continue;
     GeneratedExpectation e;
     e.blinker = to_string(s.side);
-    // An exit's start is exact (no speed in it, spec TSD §5.3): lead 0 needs no margin.
-    const bool starts_before = w.from <= s.start - kMargin ||
-                               (s.kind == SectionKind::RoundaboutExit && w.from <= s.start + 1e-9);
-    const bool whole = w.to >= s.end + b2f - 1e-9 && starts_before;
+    // Through expectations start at least kMargin before the section: an exit whose request starts
+    // at its own start (no marking) gets blinker_on from just after it, since the front exactly at
+    // the start has not reached it (spec TSD §5.3 "DIST - b2f >= 0"), and SUMO does hold the ego at
+    // a lane's very end for a step while the link ahead is not yet open.
+    const bool whole = w.to >= s.end + b2f - 1e-9 && w.from <= s.start - kMargin;
     const bool named = !s.target.junction.empty() || !s.target.lanelet.empty();
     if (whole && named) {
       e.kind = s.target.junction.empty() ? Kind::ThroughLanelet : Kind::ThroughJunction;
@@ -237,10 +241,6 @@ Derivation derive_expectations(const std::vector<Section>& sections, const Route
     if (s.kind != SectionKind::RoundaboutEntry || s.side != Side::None) continue;
     const double from = std::max(facts.depart_front + 1.0, s.start - s.search_distance);
     const double to = s.end + b2f;
-    const bool covered = std::any_of(stated.begin(), stated.end(), [&](const Interval& q) {
-      return q.first <= from && q.second >= to;
-    });
-    if (covered) continue;
     // The free piece around the entry's start, else the longest one.
     std::optional<Interval> best;
     bool best_contains = false;
@@ -253,6 +253,11 @@ Derivation derive_expectations(const std::vector<Section>& sections, const Route
         best_contains = contains;
       }
     }
+    const auto stated_already = [&](const Interval& piece) {
+      return std::any_of(stated.begin(), stated.end(),
+                         [&](const Interval& q) { return q.first <= piece.first && q.second >= piece.second; });
+    };
+    if (best && stated_already(*best)) continue;  // a no_blinker stretch above already covers it
     if (!best) {
       d.notes.push_back(name_of(s) + ": no entry signal (turn_signal_roundabout_on_entry None), but other requests "
                                      "may be valid all along it: not stated");

@@ -1,3 +1,4 @@
+// generate's loop: walks, rejections, the files, each loaded back as `run` would before it is kept.
 #include "generate/generator.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// The walk graph of a net, from the NetIndex (passenger lanes, internal links, no U-turns).
 #include "generate/net_graph.hpp"
 
 #include <algorithm>

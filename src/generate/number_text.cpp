@@ -1,3 +1,4 @@
+// Fixed-decimal numbers for the generated files.
 #include "generate/number_text.hpp"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// generate's --out folder: earlier outputs, atomic writes, the README.md index.
 #include "generate/output_dir.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// Rng::index by rejection (see rng.hpp for the documented algorithm).
 #include "generate/rng.hpp"
 
 #include <limits>

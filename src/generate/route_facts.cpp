@@ -1,3 +1,4 @@
+// Lights, yielding links and lane changes of one planned route, read from the net.
 #include "generate/route_facts.hpp"
 
 namespace signalsim::generate {

@@ -1,3 +1,4 @@
+// RouteGraph (sorted by id) and the seeded random walk.
 #include "generate/route_graph.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// One route -> one scenario draft: lane plan, speed, sections, expectations, departure, duration, header.
 #include "generate/route_scenario.hpp"
 
 #include <algorithm>
@@ -56,7 +57,8 @@ std::string lanelet_list(const RouteMap& route) {
     if (i % 4 == 0) out << (i ? "\n" : "") << "  ";
     else out << ", ";
     out << l.lane_id;
-    if (l.is_internal && l.turn_direction != TurnDirection::None && l.turn_direction != TurnDirection::Straight)
+    if (l.is_internal && l.roundabout_role == RoundaboutRole::None &&
+        (l.turn_direction == TurnDirection::Left || l.turn_direction == TurnDirection::Right))
       out << " (" << to_string(l.turn_direction) << ")";
     if (l.roundabout_role != RoundaboutRole::None) out << " [" << to_string(l.roundabout_role) << "]";
     out << " " << fixed(l.s_start) << "-" << fixed(l.s_end());

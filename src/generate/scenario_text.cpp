@@ -1,3 +1,4 @@
+// The YAML text of a generated scenario.
 #include "generate/scenario_text.hpp"
 
 #include <sstream>

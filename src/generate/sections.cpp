@@ -1,3 +1,4 @@
+// A route's sections: turn groups, roundabout entries and exits, lane changes.
 #include "generate/sections.hpp"
 
 #include <algorithm>

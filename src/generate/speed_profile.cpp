@@ -1,3 +1,4 @@
+// The speed planner rolled out along a route, and the bounds the rules use.
 #include "generate/speed_profile.hpp"
 
 #include <algorithm>
