@@ -249,6 +249,8 @@ class OutputLock {
 
 }  // namespace
 
+std::string stderr_one_line(const std::string& text) { return one_line(text); }
+
 int BatchResult::exit_code() const {
   if (interrupted) return kExitInterrupted;
   return failed + errors > 0 ? 1 : 0;

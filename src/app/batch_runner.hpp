@@ -17,11 +17,10 @@
 #include <string>
 #include <vector>
 
+#include "app/command.hpp"
 #include "scenario/sweep.hpp"
 
 namespace signalsim::app {
-
-inline constexpr int kExitInterrupted = 130;
 
 struct BatchSettings {
   std::string out_dir;              ///< results.csv and runs/ go here
@@ -54,6 +53,10 @@ int default_jobs();
 /// Runs the batch; see the file comment. Throws InputError when --resume meets a results.csv of
 /// another batch, std::runtime_error when the output directory cannot be written.
 BatchResult run_batch(const std::vector<RunSpec>& runs, const BatchSettings& settings);
+
+/// A worker's stderr as one line: "signalsim: " prefixes dropped, lines joined with " / ", at most
+/// about 600 characters.
+std::string stderr_one_line(const std::string& text);
 
 /// OUT/results.csv
 std::string results_path(const std::string& out_dir);

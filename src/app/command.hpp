@@ -11,6 +11,7 @@ namespace signalsim::app {
 
 inline constexpr int kExitFailed = 1;
 inline constexpr int kExitBadInput = 2;
+inline constexpr int kExitInterrupted = 130;  ///< SIGINT / SIGTERM
 
 struct Command {
   CLI::App* sub = nullptr;
@@ -27,5 +28,6 @@ Command add_batch_command(CLI::App& app);
 Command add_sweep_command(CLI::App& app);
 Command add_check_command(CLI::App& app);
 Command add_generate_command(CLI::App& app);
+Command add_compare_command(CLI::App& app);
 
 }  // namespace signalsim::app

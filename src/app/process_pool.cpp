@@ -1,5 +1,7 @@
 #include "app/process_pool.hpp"
 
+#include "app/command.hpp"
+
 #include <fcntl.h>
 #include <poll.h>
 #include <sys/prctl.h>
@@ -54,6 +56,7 @@ struct Worker {
   bool reaped = false;
   int status = 0;
   bool timed_out = false;
+  bool terminated = false;     // sent SIGTERM by the interrupted pool
   std::string err;
 };
 
@@ -251,7 +254,10 @@ bool run_processes(const std::vector<ProcessJob>& jobs, int parallel,
   // (it exited, it was not killed) is reported: its run is complete and must not be lost.
   for (Worker& w : running) reap(w, false);
   for (Worker& w : running)
-    if (!w.reaped) kill(-w.pid, SIGTERM);
+    if (!w.reaped) {
+      kill(-w.pid, SIGTERM);
+      w.terminated = true;
+    }
   const auto deadline = Clock::now() + std::chrono::seconds(2);
   for (Worker& w : running) {
     while (!reap(w, false) && Clock::now() < deadline) std::this_thread::sleep_for(std::chrono::milliseconds(10));
@@ -262,7 +268,10 @@ bool run_processes(const std::vector<ProcessJob>& jobs, int parallel,
   }
   std::sort(running.begin(), running.end(), [](const Worker& a, const Worker& b) { return a.job->id < b.job->id; });
   for (Worker& w : running) {
-    if (WIFEXITED(w.status)) finish(w);
+    // A worker stopped here unwinds and exits with the interrupted code (signalsim run handles
+    // SIGTERM): that run did not finish, no row. One that exited by itself in the meantime did.
+    const bool stopped = w.terminated && WIFEXITED(w.status) && WEXITSTATUS(w.status) == kExitInterrupted;
+    if (WIFEXITED(w.status) && !stopped) finish(w);
     else close_worker(w);
   }
   return false;

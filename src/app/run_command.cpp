@@ -1,4 +1,6 @@
 // `signalsim run SCENARIO --out DIR`: one scenario, one SUMO, the three output files.
+#include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <filesystem>
 #include <cstdio>
@@ -13,8 +15,10 @@
 #include "scenario/route_planning.hpp"
 #include "scenario/scenario.hpp"
 #include "scenario/step_loop.hpp"
+#include "scenario/sumo_driven.hpp"
 #include "sumo/net_index.hpp"
 #include "sumo/route_builder.hpp"
+#include "sumo/interruption.hpp"
 #include "sumo/sumo_log.hpp"
 #include "sumo/sumo_session.hpp"
 #include "scenario/session_setup.hpp"
@@ -29,11 +33,12 @@ struct RunOptions {
   std::string out_dir = "out";
   ScenarioOverrides overrides;
   bool gui = false;            ///< run in sumo-gui (libtraci)
-  int gui_delay_ms = 0;
+  int gui_delay_ms = -1;       ///< -1: not given
   std::string connect;         ///< HOST:PORT of a SUMO someone else started
-  int client_order = 1;
+  int client_order = -1;       ///< -1: not given
   bool quiet = false;
   bool plot = false;  ///< draw the run's pictures with tools/plot afterwards
+  std::string driver = "signalsim";  ///< who drives the ego: signalsim, or sumo (observed only)
 };
 
 // Every exit-2 path: the output directory must not keep a previous run's files that could pass for
@@ -50,42 +55,52 @@ int fail(const RunOptions& options, const std::optional<Scenario>& scenario, con
 RunContext run_context(const RunOptions& options) {
   RunContext context;
   context.out_dir = options.out_dir;
+  context.sumo_drives = options.driver == "sumo";
   if (options.gui && !options.connect.empty())
     throw InputError("--gui", 0, "--gui and --connect exclude each other (attach sumo-gui with --connect instead)");
+  if (!options.gui && options.gui_delay_ms >= 0) throw InputError("--gui-delay", 0, "only applies with --gui");
+  if (options.connect.empty() && options.client_order >= 0)
+    throw InputError("--client-order", 0, "only applies with --connect");
   if (options.gui) {
     context.backend.kind = sumo::BackendKind::Gui;
-    context.backend.gui_delay_ms = options.gui_delay_ms;
+    context.backend.gui_delay_ms = std::max(0, options.gui_delay_ms);
     context.backend.screenshot = (std::filesystem::path(options.out_dir) / kGuiScreenshot).string();
   } else if (!options.connect.empty()) {
     const auto colon = options.connect.rfind(':');
-    int port = 0;
-    const bool parsed = colon != std::string::npos && colon > 0 &&
-                        std::sscanf(options.connect.c_str() + colon + 1, "%d", &port) == 1 && port > 0 && port < 65536;
+    const std::string digits = colon == std::string::npos ? std::string() : options.connect.substr(colon + 1);
+    const bool all_digits = !digits.empty() && digits.size() <= 5 &&
+                            std::all_of(digits.begin(), digits.end(), [](unsigned char c) { return std::isdigit(c); });
+    const int port = all_digits ? std::stoi(digits) : 0;
+    const bool parsed = colon > 0 && all_digits && port > 0 && port < 65536;
     if (!parsed) throw InputError("--connect", 0, "'" + options.connect + "' is not HOST:PORT (e.g. 127.0.0.1:8813)");
     context.backend.kind = sumo::BackendKind::Connect;
     context.backend.host = options.connect.substr(0, colon);
     context.backend.port = port;
-    context.backend.client_order = options.client_order;
+    context.backend.client_order = std::max(1, options.client_order);
   }
   return context;
 }
 
 int run(const RunOptions& options) {
   std::optional<Scenario> scenario;
+  // Ctrl-C / SIGTERM unwind the run (sumo-gui stopped by its PID, an error summary written).
+  sumo::install_interruption_handlers();
   try {
     scenario = load_scenario(options.scenario_path, options.overrides);
     const RunContext context = run_context(options);
     const sumo::NetIndex net = sumo::NetIndex::load(scenario->net);
     PlannedRun planned = plan_run(*scenario, net);
     check_expectations_apply(planned.scenario, planned.plan.map);
-    std::filesystem::create_directories(options.out_dir);  // SUMO's log and outputs go there
+    // SUMO writes into the run directory while it runs: a previous run's files must go first, so
+    // that an interrupted or failed run never leaves them looking like this one's.
+    clear_run_outputs(options.out_dir);
 
     const auto start = std::chrono::steady_clock::now();
     RunRecord record;
     sumo::RoutePlan plan;
     {
       StartedRun started = start_run(std::move(planned), net, context);
-      record = drive(started, net);
+      record = context.sumo_drives ? observe_sumo_drive(started, net) : drive(started, net);
       scenario = started.scenario;  // as run: a taken-over vehicle's values
       plan = std::move(started.plan);
     }  // SUMO closes here: its log is complete
@@ -95,8 +110,8 @@ int run(const RunOptions& options) {
     const RunStatus status = run_status(results);
     write_run_outputs(options.out_dir, *scenario, plan, record, results, status);
     if (!options.quiet) {
-      std::printf("%s: %s (%zu steps, %.1f s simulated, %zu events, %.2f s wall)\n", scenario->name.c_str(),
-                  std::string(to_string(status)).c_str(), record.rows.size(),
+      std::printf("%s%s: %s (%zu steps, %.1f s simulated, %zu events, %.2f s wall)\n", scenario->name.c_str(),
+                  context.sumo_drives ? " (driven by SUMO)" : "", std::string(to_string(status)).c_str(), record.rows.size(),
                   record.rows.empty() ? 0.0 : record.rows.back().time, record.events.size(), wall);
       for (const auto& r : results)
         std::printf("  [%s] %s: %s\n", r.passed ? "ok" : "FAIL", r.description.c_str(), r.detail.c_str());
@@ -105,6 +120,9 @@ int run(const RunOptions& options) {
     }
     if (options.plot) run_plot_tool({options.out_dir});  // a failed plot is reported, the run's verdict stands
     return status == RunStatus::Failed ? kExitFailed : 0;
+  } catch (const sumo::Interrupted& e) {
+    fail(options, scenario, options.scenario_path + ": " + e.what());
+    return kExitInterrupted;
   } catch (const InputError& e) {
     return fail(options, scenario, e.what());
   } catch (const sumo::NetError& e) {
@@ -128,6 +146,11 @@ Command add_run_command(CLI::App& app) {
                   "(turn_signal_search_time=2.5); repeatable");
   sub->add_flag("--quiet", options->quiet, "Print nothing on success");
   sub->add_flag("--plot", options->plot, "Draw PNGs of the run into OUT/plots with tools/plot");
+  sub->add_option("--driver", options->driver,
+                  "Who drives the ego: signalsim (its decider, judge and planners) or sumo (SUMO's own blinker, "
+                  "lights and lane changes, observed only)")
+      ->check(CLI::IsMember({"signalsim", "sumo"}))
+      ->capture_default_str();
   sub->add_flag("--gui", options->gui,
                 "Run in sumo-gui (needs a display): the ego tracked in the view, a screenshot in OUT/gui.png");
   sub->add_option("--gui-delay", options->gui_delay_ms, "With --gui: sumo-gui's delay between steps [ms]")

@@ -123,8 +123,9 @@ ExpectationResult check(const ExpectStopsBeforeLight& e, const RouteMap&, const 
     std::ostringstream out;
     out.setf(std::ios::fixed);
     out.precision(3);
-    out << "at rest at t=" << stop.time << " s, " << stop.error << " m from the stop point ("
-        << to_string(stop.decision) << ", " << to_string(stop.worst_level) << " level)";
+    out << "at rest at t=" << stop.time << " s, " << stop.error << " m from the stop point (";
+    if (stop.by_judge) out << to_string(stop.decision) << ", " << to_string(stop.worst_level) << " level)";
+    else out << "SUMO stopped on its own)";
     return {"", std::abs(stop.error) <= e.tolerance, out.str()};
   }
   return {"", false, "the ego never came to rest for a stop at light " + e.light};

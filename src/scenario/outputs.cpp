@@ -77,6 +77,8 @@ std::string_view to_string(RunStatus status) {
   return "error";
 }
 
+std::string_view to_string(Driver driver) { return driver == Driver::Sumo ? "sumo" : "signalsim"; }
+
 RunStatus run_status(const std::vector<ExpectationResult>& results) {
   if (results.empty()) return RunStatus::NoExpectations;
   for (const ExpectationResult& r : results)
@@ -130,6 +132,7 @@ void write_run_outputs(const std::string& dir, const Scenario& scenario, const s
   summary["file"] = scenario.path;
   summary["net"] = scenario.net;
   summary["status"] = to_string(status);
+  summary["driver"] = to_string(record.driver);
   summary["seed"] = scenario.seed;
   summary["step_length"] = scenario.step_length;
   summary["duration"] = scenario.duration;
@@ -200,13 +203,21 @@ void write_run_outputs(const std::string& dir, const Scenario& scenario, const s
                    {"junction", n->junction}};
   }
   summary["not_arrived"] = not_arrived;
+  if (record.driver == Driver::Sumo) {  // where SUMO left the lane plan (its own lane changes)
+    nlohmann::ordered_json off_plan = nlohmann::ordered_json::array();
+    for (const OffPlanStretch& o : record.off_plan)
+      off_plan.push_back({{"lane", o.lane}, {"planned_lane", o.planned_lane}, {"s_from", std::stod(fixed(o.s_from, 3))},
+                          {"s_to", std::stod(fixed(o.s_to, 3))}, {"steps", o.steps}});
+    summary["off_plan"] = off_plan;
+  }
   nlohmann::ordered_json lights;
   nlohmann::ordered_json stops = nlohmann::ordered_json::array();
   for (const LightStop& stop : record.stops)
     stops.push_back({{"light", stop.tl_id}, {"time", std::stod(fixed(stop.time, 3))},
                      {"stop_s", std::stod(fixed(stop.stop_s, 3))}, {"rest_s", std::stod(fixed(stop.rest_s, 3))},
-                     {"error", std::stod(fixed(stop.error, 3))}, {"decision", to_string(stop.decision)},
-                     {"level", to_string(stop.worst_level)}});
+                     {"error", std::stod(fixed(stop.error, 3))},
+                     {"decision", stop.by_judge ? nlohmann::ordered_json(to_string(stop.decision)) : nullptr},
+                     {"level", stop.by_judge ? nlohmann::ordered_json(to_string(stop.worst_level)) : nullptr}});
   lights["stops"] = stops;
   nlohmann::ordered_json violations = nlohmann::ordered_json::array();
   for (const RedLightViolation& v : record.red_violations)
@@ -241,6 +252,11 @@ void write_run_outputs(const std::string& dir, const Scenario& scenario, const s
   summary["parameters"] = parameters_json(scenario.params);
   summary["sumo"] = sumo_json(scenario, record.sumo);
   write_atomically((fs::path(dir) / "summary.json").string(), summary.dump(2) + "\n");
+}
+
+void clear_run_outputs(const std::string& dir) {
+  fs::create_directories(dir);
+  for (const char* name : {"summary.json", "timeline.csv", "events.csv", "gui.png"}) fs::remove(fs::path(dir) / name);
 }
 
 void write_error_summary(const std::string& dir, const Scenario* scenario, const std::string& message) {

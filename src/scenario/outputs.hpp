@@ -32,6 +32,10 @@ void write_run_outputs(const std::string& dir, const Scenario& scenario, const s
                        const RunRecord& record, const std::vector<ExpectationResult>& results,
                        RunStatus status);
 
+/// Creates `dir` and removes the files of an earlier run there (summary.json first, then the timeline,
+/// the events and the gui screenshot), before SUMO starts writing into it.
+void clear_run_outputs(const std::string& dir);
+
 /// Writes only summary.json, status "error", with the message (a run that could not finish).
 void write_error_summary(const std::string& dir, const Scenario* scenario, const std::string& message);
 

@@ -24,6 +24,9 @@ sumo::LaneChangeEgo lane_change_ego(const Scenario& scenario) {
   ego.depart_pos = scenario.ego.depart_pos;
   ego.max_speed = scenario.ego.max_speed;
   ego.max_lateral_accel = scenario.ego.emergency_decel;
+  // A taken-over vehicle's departure lane is SUMO's: the plan starts where it is (an added ego's
+  // depart_lane asks for a lane change onto the planned lane instead).
+  if (!scenario.ego.id.empty()) ego.first_lane = scenario.ego.depart_lane;
   return ego;
 }
 

@@ -11,6 +11,7 @@
 #include <set>
 
 #include "scenario/parameters.hpp"
+#include "sumo/lane_change_room.hpp"
 #include "sumo/sumo_options.hpp"
 #include "traffic_light/perception_model.hpp"
 
@@ -81,8 +82,9 @@ struct LaneChangeManeuver {
   double length = 50.0;  ///< [m] of route s over which the ego shifts one lane
   double approval_delay = 0.0;  ///< [s] after the blinker came on (an operator's RTC approval)
 };
-inline constexpr double kDefaultLaneChangeLead = 20.0;    ///< [m]
-inline constexpr double kDefaultLaneChangeLength = 50.0;  ///< [m]
+// The defaults are the lane plan's own (one rule for the plan and the lateral planner).
+inline constexpr double kDefaultLaneChangeLead = sumo::kLaneChangeLead;      ///< [m]
+inline constexpr double kDefaultLaneChangeLength = sumo::kLaneChangeLength;  ///< [m]
 
 /// `obstacles: [{id, edge, lane, pos, length}]`: a vehicle standing still on a lane for the whole run
 /// (SUMO: inserted with a stop at its position), 1.8 m wide like SUMO's default vehicle type.

@@ -1,5 +1,7 @@
 #include "scenario/session_setup.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <filesystem>
 
 #include "scenario/input_error.hpp"
@@ -9,12 +11,33 @@ namespace signalsim {
 namespace fs = std::filesystem;
 namespace {
 
-// A taken-over vehicle's departure lane is SUMO's: unless departLane="best" (the lane its route
-// continues from, as planned), it may need a lane change from the start, which needs the sublane model.
-bool may_depart_off_plan(const sumo::RouteFileVehicle& v) { return v.depart_lane != "best"; }
+// SUMO's departLane of a taken-over vehicle, as far as it is known before SUMO starts: a lane index
+// ("2"), "first" (SUMO's default: the rightmost lane a passenger car may use), "best" (a lane its
+// route continues from: no lane change at the start); nullopt for random, free, allowed, ... (SUMO
+// decides at insertion). -1 stands for "best".
+constexpr int kBestLane = -1;
+std::optional<int> known_departure_lane(const sumo::RouteFileVehicle& v, const sumo::NetIndex& net,
+                                        const std::string& first_edge) {
+  const std::string& d = v.depart_lane;
+  if (d == "best") return kBestLane;
+  if (!d.empty() && std::all_of(d.begin(), d.end(), [](unsigned char c) { return std::isdigit(c); }))
+    return std::stoi(d);
+  if (d.empty() || d == "first") {
+    if (const sumo::NetEdge* edge = net.edge(first_edge))
+      for (const sumo::NetLane& lane : edge->lanes)
+        if (lane.allows_passenger) return lane.index;
+  }
+  return std::nullopt;
+}
 
 // Waiting for a taken-over vehicle: until the sumocfg's end, else a day.
 double take_over_deadline(const Scenario& s) { return s.sumo.end ? *s.sumo.end : s.sumo.begin + 86400.0; }
+
+std::string joined(const std::vector<std::string>& edges) {
+  std::string out;
+  for (const std::string& e : edges) out += (out.empty() ? "" : " ") + e;
+  return out;
+}
 
 }  // namespace
 
@@ -65,6 +88,12 @@ sumo::SessionConfig session_config(const Scenario& scenario, const sumo::RoutePl
   if (lateral.active()) config.lateral_resolution = 0.1;
   config.depart_pos_lat = lateral.depart_offset;
   for (const ObstacleSpec& o : scenario.obstacles) config.standing.push_back({o.id, o.edge, o.lane, o.pos, o.length});
+  // SUMO driving: its own lane changes; maneuvers (a pull out's depart offset included) are signalsim's.
+  if (context.sumo_drives) {
+    config.sumo_drives = true;
+    config.keep_planned_lanes = false;
+    config.depart_pos_lat = 0.0;
+  }
   return config;
 }
 
@@ -72,6 +101,11 @@ PlannedRun plan_run(const Scenario& scenario, const sumo::NetIndex& net) {
   PlannedRun planned;
   planned.scenario = scenario;
   planned.taken_over = resolve_route_file_ego(planned.scenario);  // a taken-over vehicle's route
+  if (planned.taken_over && !planned.scenario.ego.route.empty()) {
+    const auto lane = known_departure_lane(*planned.taken_over, net, planned.scenario.ego.route.front());
+    planned.departure_known = lane.has_value();
+    if (lane && *lane >= 0) planned.scenario.ego.depart_lane = *lane;  // plan from where it will be
+  }
   planned.plan = plan_route(planned.scenario, net);
   return planned;
 }
@@ -92,17 +126,26 @@ StartedRun start_run(PlannedRun planned, const sumo::NetIndex& net, const RunCon
   run.lateral = plan_lateral(run.scenario, plan, net);
   sumo::SessionConfig& config = run.config;
   config = session_config(run.scenario, plan, run.lateral, context);
-  if (definition && may_depart_off_plan(*definition)) config.lateral_resolution = 0.1;
+  // A departure lane SUMO chooses at insertion (random, free, ...) may need a lane change at once:
+  // signalsim drives it with the sublane model, which must be on from the start.
+  if (definition && !planned.departure_known && config.lateral_resolution <= 0.0) config.lateral_resolution = 0.1;
   run.session = sumo::open_session(config);
   if (definition) {
-    // SUMO's values for the vehicle; its lanes re-planned if it departed on another lane.
-    run.scenario = with_taken_over_ego(run.scenario, run.session->ego_vehicle(), *definition);
+    const sumo::EgoVehicle& vehicle = run.session->ego_vehicle();
+    if (vehicle.route != run.scenario.ego.route)
+      throw InputError(definition->file, definition->line,
+                       "vehicle '" + vehicle.id + "' drives [" + joined(vehicle.route) + "] in SUMO, not the route [" +
+                           joined(run.scenario.ego.route) + "] of its route file (did the SUMO at the other end "
+                           "load other route files?)");
+    // SUMO's values for the vehicle; its lanes planned from the lane it departed on.
+    run.scenario = with_taken_over_ego(run.scenario, vehicle, *definition);
+    plan = plan_route(run.scenario, net);
     run.lateral = plan_lateral(run.scenario, plan, net);
-    if (run.lateral.active() && config.lateral_resolution <= 0.0)
-      throw InputError(run.scenario.path, 0, "vehicle '" + run.scenario.ego.id + "' departed on lane " +
-                                                 std::to_string(run.scenario.ego.depart_lane) +
-                                                 ", from which its route needs a lane change right away, but SUMO "
-                                                 "runs without the sublane model (its departLane is \"best\")");
+    if (run.lateral.active() && config.lateral_resolution <= 0.0 && !context.sumo_drives)
+      throw InputError(definition->file, definition->line,
+                       "vehicle '" + vehicle.id + "' departed on lane " + std::to_string(vehicle.depart_lane) +
+                           " and its route needs a lane change, which signalsim drives with SUMO's sublane model; "
+                           "SUMO runs without it (the route file's departLane did not say that a change is needed)");
   }
   run.plan = std::move(plan);
   return run;

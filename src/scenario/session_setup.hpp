@@ -23,6 +23,10 @@ struct RunContext {
   /// The run's output directory: SUMO's messages go to OUT/sumo.log and relative output paths of
   /// sumo_args (and of the sumocfg's outputs) land here. Empty: no log, paths as written.
   std::string out_dir;
+  /// SUMO drives the ego (`run --driver sumo`): same insertion, vType, traffic and lights, but SUMO's
+  /// own speed, lane changes and blinkers (sumo::SessionConfig::sumo_drives); observe with
+  /// observe_sumo_drive (sumo_driven.hpp), never drive().
+  bool sumo_drives = false;
 };
 
 /// The file SUMO's messages go to in `out_dir`.
@@ -40,6 +44,9 @@ struct PlannedRun {
   Scenario scenario;
   sumo::RoutePlan plan;
   std::optional<sumo::RouteFileVehicle> taken_over;  ///< the route-file definition of `ego.id`
+  /// Taken over: its departure lane is known before SUMO starts (departLane a lane index, "first" or
+  /// "best"); otherwise SUMO chooses it at insertion.
+  bool departure_known = true;
 };
 
 /// Reads the route files (for `ego.id`: the vehicle's route; otherwise: no file may use the id "ego")

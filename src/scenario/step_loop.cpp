@@ -160,16 +160,11 @@ RunRecord drive(const StartedRun& run, const sumo::NetIndex& net) {
     if (seg.kind == LateralKind::PullOver) pull_over_goal = &seg;
 
   StuckWatch stuck(scenario.params.number("stuck_rest_time"));
-  // SUMO's leader of the ego for a not-arrived reason: the nearest other vehicle ahead on the ego's
-  // own lane. A session query that also looks onto the next lanes (Vehicle::getLeader) is to replace it.
+  // SUMO's leader of the ego for a not-arrived reason (Vehicle::getLeader: also on the lanes ahead).
   const LeaderQuery leader = [&session](double range) -> std::optional<LeaderInfo> {
-    const sumo::EgoState now = session.ego();
-    std::optional<LeaderInfo> nearest;
-    for (const sumo::SumoSession::LaneVehicle& v : session.vehicles_on_lane(now.lane)) {
-      const double gap = v.pos - v.length - now.lane_pos;
-      if (gap >= -1e-6 && gap <= range && (!nearest || gap < nearest->gap)) nearest = LeaderInfo{v.id, gap};
-    }
-    return nearest;
+    const auto found = session.ego_leader(range);
+    if (!found) return std::nullopt;
+    return LeaderInfo{found->id, found->gap};
   };
   sumo::EgoState observed = session.ego();
   while (true) {
@@ -248,6 +243,10 @@ RunRecord drive(const StartedRun& run, const sumo::NetIndex& net) {
                 : goal_level  ? "the pull-over goal"
                               : "its speed plan";
     }
+    // In the queue before a red light the ego rests behind others, short of its own stop point: the
+    // stuck clock pauses while a judge asks for a stop (a red lasting longer than stuck_rest_time is
+    // no deadlock), but does not restart, so a car parked before a light is still found out.
+    const bool queued = stopping != nullptr && held_by.empty();
     session.command(signal_mask(blinker), speed);
     // The plan's offset where base_link will be after the step (normal lanes of the plan's edge only).
     if (segment)
@@ -313,7 +312,7 @@ RunRecord drive(const StartedRun& run, const sumo::NetIndex& net) {
       record.arrived = true;
       break;
     }
-    if (stuck.observe(record.rows.back().time, record.rows.back().speed, held_by)) {
+    if (stuck.observe(record.rows.back().time, record.rows.back().speed, held_by, queued)) {
       record.not_arrived = not_arrived("stuck", scenario.duration, record.rows.back(), stuck, leader, route);
       break;
     }

@@ -29,22 +29,31 @@ std::string junction_at(const RouteMap& route, double s_front) {
 
 }  // namespace
 
-bool StuckWatch::observe(double time, double speed, const std::string& held_by) {
+bool StuckWatch::observe(double time, double speed, const std::string& held_by, bool queued) {
+  const double since_last = observed_ ? time - last_time_ : 0.0;
+  observed_ = true;
   last_time_ = time;
   held_by_ = held_by;
   const bool at_rest = speed < kRestSpeed && speed > -kRestSpeed;  // backing up moves backward
   if (!at_rest) {
     rest_since_.reset();
-    free_since_.reset();
+    free_for_ = 0.0;
+    counting_ = false;
     return false;
   }
   if (!rest_since_) rest_since_ = time;
-  if (!held_by.empty()) {
-    free_since_.reset();
+  if (!held_by.empty()) {  // signalsim keeps it at rest: the clock restarts
+    free_for_ = 0.0;
+    counting_ = false;
     return false;
   }
-  if (!free_since_) free_since_ = time;
-  return limit_ > 0.0 && time - *free_since_ >= limit_ - 1e-9;
+  if (queued) {  // a red light ahead keeps the queue: the clock pauses
+    counting_ = false;
+    return false;
+  }
+  if (counting_) free_for_ += since_last;
+  counting_ = true;
+  return limit_ > 0.0 && free_for_ >= limit_ - 1e-9;
 }
 
 NotArrived not_arrived(const std::string& reason, double duration, const TimelineRow& last, const StuckWatch& watch,

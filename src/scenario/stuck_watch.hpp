@@ -30,22 +30,26 @@ class StuckWatch {
   explicit StuckWatch(double stuck_rest_time) : limit_(stuck_rest_time) {}
 
   /// One step at `time` [s]: the ego's `speed` [m/s] and what of signalsim holds it (`held_by`,
-  /// "" when signalsim commands a speed above rest). Returns true when the run must end as stuck.
-  bool observe(double time, double speed, const std::string& held_by);
+  /// "" when signalsim commands a speed above rest). `queued`: a light ahead asks for a stop while the
+  /// ego rests short of it (behind others): the stuck clock pauses, it does not restart. Returns true
+  /// when the run must end as stuck.
+  bool observe(double time, double speed, const std::string& held_by, bool queued = false);
 
   /// The ego was at rest at the last observation.
   bool at_rest() const { return rest_since_.has_value(); }
   /// [s] how long the ego has been at rest as of the last observation (0 while moving).
   double at_rest_for() const { return rest_since_ ? last_time_ - *rest_since_ : 0.0; }
-  /// [s] how long it has been at rest and not held by signalsim (the stuck clock).
-  double stuck_for() const { return free_since_ ? last_time_ - *free_since_ : 0.0; }
+  /// [s] how long it has been at rest, not held by signalsim and not queued (the stuck clock).
+  double stuck_for() const { return free_for_; }
   const std::string& held_by() const { return held_by_; }
 
  private:
   double limit_;
   double last_time_ = 0.0;
   std::optional<double> rest_since_;  // first row of the current rest
-  std::optional<double> free_since_;  // first row of the current rest not held by signalsim
+  double free_for_ = 0.0;             // the stuck clock
+  bool counting_ = false;             // the previous row counted (at rest, not held, not queued)
+  bool observed_ = false;
   std::string held_by_;
 };
 

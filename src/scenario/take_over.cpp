@@ -36,20 +36,21 @@ std::optional<sumo::RouteFileVehicle> resolve_route_file_ego(Scenario& scenario)
   const std::string& id = scenario.ego.id;
   if (files.empty()) {
     if (!id.empty())
-      throw InputError(scenario.path, line_of(scenario, "id"), "ego.id '" + id + "': the scenario loads no route files (routes: or a sumocfg "
-                                         "with route-files) that could define it");
+      throw InputError(scenario.path, line_of(scenario, "id"),
+                       "ego.id '" + id + "': the scenario loads no route files (routes: or a sumocfg with "
+                       "route-files) that could define it");
     return std::nullopt;
   }
-  const sumo::RouteFiles defined = sumo::RouteFiles::scan(files);
   if (id.empty()) {
-    if (const sumo::RouteFileVehicle* clash = defined.vehicle(sumo::kDefaultEgoId))
+    // A <flow id="ego"> names its vehicles ego.0, ego.1, ...: no clash.
+    if (const auto clash = sumo::find_route_file_vehicle(files, sumo::kDefaultEgoId, false))
       throw InputError(clash->file, clash->line,
                        "<" + clash->kind + "> '" + clash->id + "' has the id signalsim gives the ego it adds (" +
                            scenario.path + "): take it over with ego.id: " + clash->id + ", or rename it");
     return std::nullopt;
   }
-  const sumo::RouteFileVehicle* v = defined.vehicle(id);
-  if (v == nullptr)
+  const std::optional<sumo::RouteFileVehicle> v = sumo::find_route_file_vehicle(files, id);
+  if (!v)
     throw InputError(scenario.path, line_of(scenario, "id"),
                      "ego.id '" + id + "': no <vehicle>, <trip> or <flow> of the route files defines it (" +
                          joined(files) + ")");
@@ -58,9 +59,25 @@ std::optional<sumo::RouteFileVehicle> resolve_route_file_ego(Scenario& scenario)
                      "<" + v->kind + "> '" + v->id + "' (ego.id) has no edges of its own (a trip, or a route "
                      "distribution): SUMO computes its route only when it departs, and signalsim plans the ego's "
                      "lanes before SUMO starts; give it a <route> (e.g. with duarouter) or take over another vehicle");
+  if (v->stops > 0)
+    throw InputError(v->file, v->line,
+                     "<" + v->kind + "> '" + v->id + "' (ego.id) has " + std::to_string(v->stops) +
+                         " <stop>(s): SUMO would stop it on its own, while signalsim drives the ego's speed; take "
+                         "over a vehicle without stops (a pull-over is a maneuver of the scenario)");
+  // SUMO never inserts a vehicle that departs before the simulation begins: waiting for it is futile.
+  double depart = 0.0;
+  if (std::istringstream(v->depart) >> depart; !v->depart.empty() && depart < scenario.sumo.begin)
+    throw InputError(v->file, v->line,
+                     "<" + v->kind + "> '" + v->id + "' (ego.id) departs at " + v->depart + " s, before the simulation "
+                     "begins (" + number(scenario.sumo.begin) + " s): SUMO never inserts it");
+  if (scenario.sumo.end && !v->depart.empty() && depart >= *scenario.sumo.end)
+    throw InputError(v->file, v->line,
+                     "<" + v->kind + "> '" + v->id + "' (ego.id) departs at " + v->depart + " s, at or after the end of "
+                     "the simulation (" + number(*scenario.sumo.end) + " s)");
   if (scenario.ego.given.count("route") && scenario.ego.route != v->edges)
-    throw InputError(scenario.path, line_of(scenario, "route"), "ego.route [" + joined(scenario.ego.route) + "] contradicts the route of '" + id +
-                                           "' in " + where(*v) + " [" + joined(v->edges) + "]");
+    throw InputError(scenario.path, line_of(scenario, "route"),
+                     "ego.route [" + joined(scenario.ego.route) + "] contradicts the route of '" + id + "' in " +
+                         where(*v) + " [" + joined(v->edges) + "]");
   scenario.ego.route = v->edges;
   return *v;
 }

@@ -3,6 +3,7 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "planning/stop/jerk_limited_stop.hpp"
@@ -53,6 +54,7 @@ struct LightStop {
   double error = 0.0;            ///< rest_s - stop_s [m]; > 0 beyond the stop point
   JudgeDecision decision = JudgeDecision::Stop;
   StopLevel worst_level = StopLevel::Normal;
+  bool by_judge = true;          ///< false: SUMO stopped on its own (`--driver sumo`); no decision or level
 };
 
 /// The front crossed a stop line while the ego's link showed red.
@@ -126,7 +128,22 @@ struct NotArrived {
   std::string detail;              ///< one sentence with all of the above
 };
 
+/// Who drove the ego: signalsim's decider, judge and planners, or SUMO on its own (`run --driver sumo`).
+enum class Driver { Signalsim, Sumo };
+std::string_view to_string(Driver driver);
+
+/// Consecutive steps a SUMO-driven ego spent on a lane the lane plan does not list there: another
+/// lane of a route edge (SUMO changed lanes) or an internal lane of another connection.
+struct OffPlanStretch {
+  std::string lane;          ///< the lane the ego was on
+  std::string planned_lane;  ///< the route's lanelet at that position
+  double s_from = 0.0;       ///< [m] route s of the front at the first step
+  double s_to = 0.0;         ///< [m] at the last step
+  int steps = 0;
+};
+
 struct RunRecord {
+  Driver driver = Driver::Signalsim;
   std::vector<TimelineRow> rows;
   std::vector<TimelineEvent> events;
   std::vector<LightStop> stops;
@@ -136,6 +153,7 @@ struct RunRecord {
   bool arrived = false;          ///< the ego reached the end of its route
   std::optional<NotArrived> not_arrived;  ///< why not, when it did not
   int off_route_steps = 0;       ///< steps on a lane not on the planned route (route position held)
+  std::vector<OffPlanStretch> off_plan;  ///< SUMO-driven runs: stretches off the planned lanes
   int collisions = 0;
   double base_link_to_front = 0.0;
   RunSumoInfo sumo;

@@ -34,6 +34,9 @@ struct LaneChangeEgo {
   double depart_pos = 0.0;          ///< [m] front bumper on the first edge
   double max_speed = 13.89;         ///< [m/s] the ego drives no faster, nor faster than the lane
   double max_lateral_accel = 9.0;   ///< [m/s^2] its grip (ego.emergency_decel: the same tyres)
+  /// The lane the ego is on when it enters the first edge, when that is not signalsim's choice (a
+  /// taken-over vehicle departs where SUMO put it); -1: the plan chooses.
+  int first_lane = -1;
 };
 
 /// What a lane change on one route edge has.

@@ -113,6 +113,11 @@ LanePlan plan_lanes(const std::vector<std::vector<bool>>& usable,
     if (better(cost[0][static_cast<std::size_t>(l)], lane < 0 ? Cost{} : cost[0][static_cast<std::size_t>(lane)])) lane = l;
   }
   if (lane < 0) return plan;
+  // An ego already on a lane of the first edge keeps it when the route goes on from there; else the
+  // best plan stands and the ego changes onto its lane on the first edge.
+  const int given = ego.first_lane;
+  if (given >= 0 && given < static_cast<int>(cost[0].size()) && cost[0][static_cast<std::size_t>(given)].possible)
+    lane = given;
 
   const Cost& total = cost[0][static_cast<std::size_t>(lane)];
   plan.lane_changes = total.changes;

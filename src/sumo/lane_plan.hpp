@@ -36,6 +36,8 @@ struct LanePlan {
 ///   3. its tightest lane change (least room) has more room,
 ///   4. ties: at each edge the lowest next lane m, then the connection whose from-lane is closest to
 ///      l (then the rightmost); on the first edge the lowest lane (the rightmost plan).
+/// With `ego.first_lane` (the lane a taken-over vehicle departed on) the plan starts on that lane
+/// whenever the route can be driven from it, however it ranks.
 /// Each criterion is monotone along the route, so the backward programme finds the best plan.
 /// `lanes` is empty when no lane sequence exists.
 ///

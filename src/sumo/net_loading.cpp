@@ -151,13 +151,13 @@ std::vector<std::size_t> NetLoader::lane_order(const XmlElement& e, const NetEdg
   const std::size_t n = edge.lanes.size();
   std::vector<std::size_t> at(n, n);  // at[index] = position in the file
   std::string problem;
+  const auto lane = [&](std::size_t i) { return "lane '" + edge.lanes[i].id + "'"; };
   for (std::size_t i = 0; i < n && problem.empty(); ++i) {
-    const std::string lane = "lane '" + edge.lanes[i].id + "'";
-    if (!indices[i]) problem = lane + " has no integer index";
+    if (!indices[i]) problem = lane(i) + " has no integer index";
     else if (*indices[i] < 0 || static_cast<std::size_t>(*indices[i]) >= n)
-      problem = lane + " has index " + std::to_string(*indices[i]);
+      problem = lane(i) + " has index " + std::to_string(*indices[i]);
     else if (at[static_cast<std::size_t>(*indices[i])] != n)
-      problem = lane + " repeats index " + std::to_string(*indices[i]);
+      problem = lane(i) + " repeats index " + std::to_string(*indices[i]);
     else at[static_cast<std::size_t>(*indices[i])] = i;
   }
   if (problem.empty()) return at;
@@ -190,10 +190,12 @@ void NetLoader::edge(pugi::xml_node node) {
     edge.lanes.push_back(lane(lane_node, edge, self));
   }
   const std::vector<std::size_t> order = lane_order(e, edge, indices);
-  std::vector<NetLane> lanes;
-  lanes.reserve(order.size());
-  for (std::size_t k : order) lanes.push_back(std::move(edge.lanes[k]));
-  edge.lanes = std::move(lanes);
+  if (!std::is_sorted(order.begin(), order.end())) {  // netconvert writes them in order
+    std::vector<NetLane> lanes;
+    lanes.reserve(order.size());
+    for (std::size_t k : order) lanes.push_back(std::move(edge.lanes[k]));
+    edge.lanes = std::move(lanes);
+  }
 
   const std::size_t edge_pos = net_.edges_.size();
   net_.edge_by_id_.emplace(edge.id, edge_pos);

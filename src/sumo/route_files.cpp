@@ -2,13 +2,13 @@
 
 #include <pugixml.hpp>
 
+#include <algorithm>
 #include <cctype>
 #include <cstring>
 #include <sstream>
 
 #include "sumo/net_file.hpp"
 #include "sumo/net_index.hpp"
-#include "sumo/xml_lines.hpp"
 
 namespace signalsim::sumo {
 namespace {
@@ -20,65 +20,120 @@ std::vector<std::string> blank_separated(const char* text) {
   return out;
 }
 
-bool is(pugi::xml_node node, const char* name) { return std::strcmp(node.name(), name) == 0; }
+int line_at(const std::string& text, std::size_t offset) {
+  return 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(offset), '\n'));
+}
 
-}  // namespace
+// One element of a file found by its id attribute: its name, where it starts, and its text.
+struct FoundElement {
+  std::string name;
+  std::size_t start = 0;
+  std::string text;  // the element with its children
+};
 
-RouteFiles RouteFiles::scan(const std::vector<std::string>& files) {
-  RouteFiles out;
-  out.files_ = files;
-  std::unordered_map<std::string, std::string> route_of;  // vehicle id -> route id to resolve
-  for (const std::string& file : files) {
-    const std::string text = read_net_file(file);
-    const LineIndex lines(text);
-    pugi::xml_document doc;
-    const pugi::xml_parse_result parsed = doc.load_buffer(text.data(), text.size());
-    if (!parsed)
-      throw NetError(file + ":" + std::to_string(lines.line_of(parsed.offset)) + ": not XML: " + parsed.description());
-    for (pugi::xml_node node : doc.document_element().children()) {
-      if (node.type() != pugi::node_element) continue;
-      const int line = lines.line_of(node.offset_debug());
-      if (is(node, "route")) {
-        if (const char* id = node.attribute("id").value(); *id != '\0')
-          out.routes_[id] = blank_separated(node.attribute("edges").value());
-        continue;
-      }
-      if (!is(node, "vehicle") && !is(node, "trip") && !is(node, "flow")) continue;
-      RouteFileVehicle v;
-      v.id = node.attribute("id").value();
-      if (v.id.empty()) throw NetError(file + ":" + std::to_string(line) + ": <" + node.name() + "> without an id");
-      v.kind = node.name();
-      v.file = file;
-      v.line = line;
-      v.type = node.attribute("type").value();
-      v.depart_lane = node.attribute("departLane").value();
-      v.depart_pos = node.attribute("departPos").value();
-      v.depart_speed = node.attribute("departSpeed").value();
-      if (const pugi::xml_node inline_route = node.child("route"))
-        v.edges = blank_separated(inline_route.attribute("edges").value());
-      else if (const char* route = node.attribute("route").value(); *route != '\0')
-        route_of[v.id] = route;
-      out.vehicles_.emplace(v.id, std::move(v));  // SUMO itself refuses a second definition of an id
+// The elements named one of `names` whose attribute id is `id` (written id="x" or id='x', blanks
+// around '=' allowed), in file order. Only the element's own text is cut out for parsing.
+std::vector<FoundElement> elements_with_id(const std::string& text, const std::string& id,
+                                           std::initializer_list<const char*> names) {
+  std::vector<FoundElement> out;
+  for (std::size_t at = text.find(id); at != std::string::npos; at = text.find(id, at + 1)) {
+    const std::size_t end = at + id.size();
+    if (at == 0 || end >= text.size()) continue;
+    const char quote = text[at - 1];
+    if ((quote != '"' && quote != '\'') || text[end] != quote) continue;
+    std::size_t k = at - 1;  // back over '=' and blanks to the attribute name
+    while (k > 0 && std::isspace(static_cast<unsigned char>(text[k - 1]))) --k;
+    if (k == 0 || text[k - 1] != '=') continue;
+    --k;
+    while (k > 0 && std::isspace(static_cast<unsigned char>(text[k - 1]))) --k;
+    if (k < 3 || text.compare(k - 2, 2, "id") != 0 || !std::isspace(static_cast<unsigned char>(text[k - 3]))) continue;
+    const std::size_t open = text.rfind('<', at);
+    if (open == std::string::npos || text.find('>', open) < at) continue;  // not inside a start tag
+    std::size_t name_end = open + 1;
+    while (name_end < text.size() && (std::isalnum(static_cast<unsigned char>(text[name_end])) != 0)) ++name_end;
+    const std::string name = text.substr(open + 1, name_end - open - 1);
+    if (std::none_of(names.begin(), names.end(), [&](const char* n) { return name == n; })) continue;
+    const std::size_t tag_end = text.find('>', end);
+    if (tag_end == std::string::npos) continue;
+    std::size_t close = tag_end + 1;  // a self-closing tag, or up to its closing tag
+    if (text[tag_end - 1] != '/') {
+      const std::size_t closing = text.find("</" + name, tag_end);
+      const std::size_t closing_end = closing == std::string::npos ? closing : text.find('>', closing);
+      // Never closed: the rest of the file, for the parser to name the fault.
+      close = closing_end == std::string::npos ? text.size() : closing_end + 1;
     }
-  }
-  // `route=` may name a route of another file, or one defined after the vehicle. A route
-  // distribution's id is not a route: its vehicles keep no edges (SUMO draws one at departure).
-  for (const auto& [vehicle, route] : route_of) {
-    const auto it = out.routes_.find(route);
-    if (it != out.routes_.end()) out.vehicles_[vehicle].edges = it->second;
+    out.push_back({name, open, text.substr(open, close - open)});
   }
   return out;
 }
 
-const RouteFileVehicle* RouteFiles::vehicle(const std::string& id) const {
-  if (const auto it = vehicles_.find(id); it != vehicles_.end()) return &it->second;
-  // A flow's vehicles are "<flow id>.<index>".
+struct LoadedFile {
+  std::string path;
+  std::string text;
+};
+
+pugi::xml_node parse_element(pugi::xml_document& doc, const LoadedFile& file, const FoundElement& e) {
+  const pugi::xml_parse_result parsed = doc.load_buffer(e.text.data(), e.text.size());
+  if (!parsed)
+    throw NetError(file.path + ":" + std::to_string(line_at(file.text, e.start)) + ": <" + e.name +
+                   "> is not well-formed XML: " + parsed.description());
+  return doc.document_element();
+}
+
+// The edges of <route id="route_id"> in any of the files (empty: none, e.g. a route distribution).
+std::vector<std::string> named_route(const std::vector<LoadedFile>& files, const std::string& route_id) {
+  for (const LoadedFile& f : files)
+    for (const FoundElement& e : elements_with_id(f.text, route_id, {"route"})) {
+      pugi::xml_document doc;
+      return blank_separated(parse_element(doc, f, e).attribute("edges").value());
+    }
+  return {};
+}
+
+// A flow's vehicles are "<flow id>.<index>": the flow's id, when `id` has that form.
+std::optional<std::string> flow_of(const std::string& id) {
   const std::size_t dot = id.rfind('.');
-  if (dot == std::string::npos || dot + 1 == id.size()) return nullptr;
+  if (dot == std::string::npos || dot == 0 || dot + 1 == id.size()) return std::nullopt;
   for (std::size_t i = dot + 1; i < id.size(); ++i)
-    if (std::isdigit(static_cast<unsigned char>(id[i])) == 0) return nullptr;
-  const auto it = vehicles_.find(id.substr(0, dot));
-  return it != vehicles_.end() && it->second.kind == "flow" ? &it->second : nullptr;
+    if (std::isdigit(static_cast<unsigned char>(id[i])) == 0) return std::nullopt;
+  return id.substr(0, dot);
+}
+
+}  // namespace
+
+std::optional<RouteFileVehicle> find_route_file_vehicle(const std::vector<std::string>& paths, const std::string& id,
+                                                        bool include_flows) {
+  if (id.empty()) return std::nullopt;
+  std::vector<LoadedFile> files;
+  for (const std::string& path : paths) files.push_back({path, read_net_file(path)});
+  const std::optional<std::string> flow = include_flows ? flow_of(id) : std::nullopt;
+  for (const LoadedFile& f : files) {
+    std::vector<FoundElement> found = elements_with_id(f.text, id, {"vehicle", "trip"});
+    if (found.empty() && flow) found = elements_with_id(f.text, *flow, {"flow"});
+    if (found.empty()) continue;
+    const FoundElement& e = found.front();  // SUMO itself refuses a second definition of an id
+    pugi::xml_document doc;
+    const pugi::xml_node node = parse_element(doc, f, e);
+    RouteFileVehicle v;
+    v.id = node.attribute("id").value();
+    v.kind = e.name;
+    v.file = f.path;
+    v.line = line_at(f.text, e.start);
+    v.type = node.attribute("type").value();
+    v.depart = e.name == "flow" ? node.attribute("begin").value() : node.attribute("depart").value();
+    v.depart_lane = node.attribute("departLane").value();
+    v.depart_pos = node.attribute("departPos").value();
+    v.depart_speed = node.attribute("departSpeed").value();
+    for (pugi::xml_node stop : node.children("stop")) (void)stop, ++v.stops;
+    if (const pugi::xml_node inline_route = node.child("route")) {
+      v.edges = blank_separated(inline_route.attribute("edges").value());
+      for (pugi::xml_node stop : inline_route.children("stop")) (void)stop, ++v.stops;
+    } else if (const char* route = node.attribute("route").value(); *route != '\0') {
+      v.edges = named_route(files, route);
+    }
+    return v;
+  }
+  return std::nullopt;
 }
 
 }  // namespace signalsim::sumo

@@ -1,12 +1,11 @@
-// What a user's route (and additional) files define, read before SUMO starts: the vehicles, trips and
-// flows by id (so that signalsim can take one over as its ego, or refuse to add an ego whose id a file
-// already uses) and the routes they drive. Vehicle types are SUMO's: signalsim reads them from SUMO
-// once the ego departed (a type distribution is only drawn then).
+// Vehicles of a user's route (and additional) files by id, found before SUMO starts: the one signalsim
+// takes over as its ego (with the route it drives), or one that already uses the id of an ego
+// signalsim would add. Route files can be large (a city's day of demand): they are searched for the
+// id's attribute, and only the element found is parsed; nothing else is kept in memory.
 #pragma once
 
 #include <optional>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
 namespace signalsim::sumo {
@@ -16,30 +15,20 @@ struct RouteFileVehicle {
   std::string kind;                ///< "vehicle", "trip" or "flow" (then `id` is the flow's, e.g. "f")
   std::string file;
   int line = 0;
-  /// Its edges when the file gives them (an inline <route>, or `route=` naming a <route>); empty
-  /// when SUMO computes them at departure (a trip, from/to, a route distribution).
+  /// Its edges when the file gives them (an inline <route>, or `route=` naming a <route> of one of
+  /// the files); empty when SUMO computes them at departure (a trip, a route distribution).
   std::vector<std::string> edges;
   std::string type;                ///< `type`, empty for SUMO's default type
+  std::string depart;              ///< `depart` (a flow's `begin`), as written
   std::string depart_lane, depart_pos, depart_speed;  ///< as written, empty when absent
+  int stops = 0;                   ///< <stop> children of the vehicle (or of its inline route)
 };
 
-class RouteFiles {
- public:
-  /// Reads each file (plain or gzip). Throws NetError "<file>:<line>: <reason>" for a missing or
-  /// malformed file or a vehicle without an id.
-  static RouteFiles scan(const std::vector<std::string>& files);
-
-  /// The definition of vehicle `id`: a <vehicle> or <trip> of that id, or the <flow> whose vehicles
-  /// SUMO names "<flow>.<n>". Null when no file defines it.
-  const RouteFileVehicle* vehicle(const std::string& id) const;
-
-  std::size_t vehicle_count() const { return vehicles_.size(); }
-  const std::vector<std::string>& files() const { return files_; }
-
- private:
-  std::vector<std::string> files_;
-  std::unordered_map<std::string, RouteFileVehicle> vehicles_;  // vehicles, trips and flows by id
-  std::unordered_map<std::string, std::vector<std::string>> routes_;  // <route id> -> edges
-};
+/// The definition of vehicle `id` in `files`: a <vehicle> or <trip> of that id, or the <flow> whose
+/// vehicles SUMO names "<flow>.<n>" (only when `include_flows`). Nothing when no file defines it.
+/// Throws NetError "<file>:<line>: <reason>" for a missing or unreadable file, or a found element
+/// that is not well-formed XML.
+std::optional<RouteFileVehicle> find_route_file_vehicle(const std::vector<std::string>& files, const std::string& id,
+                                                        bool include_flows = true);
 
 }  // namespace signalsim::sumo

@@ -11,8 +11,10 @@
 #include <iomanip>
 #include <sstream>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
+#include "sumo/interruption.hpp"
 #include "sumo/sumo_session.hpp"
 
 namespace signalsim::sumo {
@@ -30,6 +32,8 @@ inline bool contains_id(const std::vector<std::string>& ids, const std::string& 
 // Speed-mode bits (spec SUMO §4): 0 safe speed, 1 max accel, 2 max decel, 3 right of way; bit 4
 // (hard braking for red lights) is never set: the traffic-light judge decides at lights.
 inline constexpr int kSpeedModeSafeSpeed = 1, kSpeedModeMaxAccel = 2, kSpeedModeMaxDecel = 4, kSpeedModeRightOfWay = 8;
+// SUMO's defaults, for a vehicle signalsim hands back (TraCI docs: speed mode 31, lane-change mode 1621).
+inline constexpr int kSumoDefaultSpeedMode = 31, kSumoDefaultLaneChangeMode = 0b011001010101;
 
 template <class Api>
 class SessionImpl : public SumoSession {
@@ -41,16 +45,19 @@ class SessionImpl : public SumoSession {
   double delta_t() const override { return guarded("the step length", [] { return Api::Simulation::getDeltaT(); }); }
 
   bool step() override {
+    throw_if_interrupted();
     try {
       Api::Simulation::step();
       for (const auto& c : Api::Simulation::getCollisions())
         if (c.collider == ego_ || c.victim == ego_) ++ego_collisions_;
       const bool alive = !contains_id(Api::Simulation::getArrivedIDList(), ego_);
+      if (!alive) ego_present_ = false;
       on_stepped();
       return alive;
     } catch (const SumoError&) {
       throw;
     } catch (const std::exception& e) {
+      throw_if_interrupted();
       throw SumoError("SUMO failed during a step: " + failure_reason(e));
     }
   }
@@ -107,7 +114,7 @@ class SessionImpl : public SumoSession {
 
   double lateral_offset_from(const std::string& reference_lane_id) const override {
     try {
-      const std::string reference_edge = Api::Lane::getEdgeID(reference_lane_id);
+      const std::string& reference_edge = lane_edge(reference_lane_id);
       const double in_lane = Api::Vehicle::getLateralLanePosition(ego_);
       if (Api::Vehicle::getRoadID(ego_) != reference_edge) return in_lane;  // documented fallback
       const int reference_index = lane_index_on(reference_edge, reference_lane_id);
@@ -124,7 +131,7 @@ class SessionImpl : public SumoSession {
       throw SumoError("lateral offsets can only be commanded with SUMO's sublane model: set the session's "
                       "lateral_resolution > 0 (--lateral-resolution)");
     try {
-      const std::string reference_edge = Api::Lane::getEdgeID(reference_lane_id);
+      const std::string& reference_edge = lane_edge(reference_lane_id);
       const std::string ego_edge = Api::Vehicle::getRoadID(ego_);
       if (ego_edge != reference_edge)
         throw SumoError("cannot command a lateral offset from lane '" + reference_lane_id + "': the ego is on '" +
@@ -133,17 +140,16 @@ class SessionImpl : public SumoSession {
       // move past it and leaves the ego where it was, short of the border, instead of clamping.
       const int reference_index = lane_index_on(reference_edge, reference_lane_id);
       const int ego_index = Api::Vehicle::getLaneIndex(ego_);
-      const int lanes = Api::Edge::getLaneNumber(reference_edge);
-      const std::string vclass = Api::Vehicle::getVehicleClass(ego_);
+      const int lanes = lane_count(reference_edge);
+      if (vclass_.empty()) vclass_ = Api::Vehicle::getVehicleClass(ego_);
+      const std::string& vclass = vclass_;
       const auto lane = [&](int k) { return reference_edge + "_" + std::to_string(k); };
       int lo = ego_index, hi = ego_index;
       while (lo > 0 && permits(lane(lo - 1), vclass)) --lo;
       while (hi + 1 < lanes && permits(lane(hi + 1), vclass)) ++hi;
-      const double half_width = 0.5 * Api::Vehicle::getWidth(ego_);
-      const double lowest =
-          centre_distance(reference_edge, reference_index, lo) - 0.5 * Api::Lane::getWidth(lane(lo)) + half_width;
-      const double highest =
-          centre_distance(reference_edge, reference_index, hi) + 0.5 * Api::Lane::getWidth(lane(hi)) - half_width;
+      const double half_width = 0.5 * vehicle_.width;
+      const double lowest = centre_distance(reference_edge, reference_index, lo) - 0.5 * lane_width(lane(lo)) + half_width;
+      const double highest = centre_distance(reference_edge, reference_index, hi) + 0.5 * lane_width(lane(hi)) - half_width;
       double target = target_offset_next_step;
       if (lowest <= highest) target = std::clamp(target, lowest, highest);
       Api::Vehicle::changeSublane(ego_, target - lateral_offset_from(reference_lane_id));
@@ -226,6 +232,14 @@ class SessionImpl : public SumoSession {
     apply_speed_mode();
   }
 
+  std::optional<Leader> ego_leader(double range) const override {
+    return guarded("the ego's leader", [&]() -> std::optional<Leader> {
+      const auto [id, distance] = Api::Vehicle::getLeader(ego_, range);
+      if (id.empty()) return std::nullopt;
+      return Leader{id, distance + Api::Vehicle::getMinGap(ego_)};  // getLeader measures from front + minGap
+    });
+  }
+
   int ego_collisions() const override { return ego_collisions_; }
 
  protected:
@@ -246,6 +260,25 @@ class SessionImpl : public SumoSession {
       throw;
     } catch (const std::exception& e) {
       throw SumoError("SUMO rejected the ego: " + failure_reason(e));
+    }
+  }
+
+  /// Hands the ego back when signalsim leaves a simulation that goes on (--connect): an ego it added
+  /// (and its standing obstacles) is removed; a taken-over vehicle drives on under SUMO's own models
+  /// (default speed and lane-change modes, its own speed and signals). Never throws.
+  void release_ego() noexcept {
+    try {
+      if (ego_present_ && config_.take_over.empty()) Api::Vehicle::remove(ego_);
+      if (ego_present_ && !config_.take_over.empty()) {
+        Api::Vehicle::setSpeed(ego_, -1.0);
+        Api::Vehicle::setSpeedMode(ego_, kSumoDefaultSpeedMode);
+        Api::Vehicle::setLaneChangeMode(ego_, kSumoDefaultLaneChangeMode);
+        Api::Vehicle::setSignals(ego_, -1);
+      }
+      ego_present_ = false;
+      for (const StandingVehicle& v : config_.standing)
+        if (contains_id(Api::Vehicle::getIDList(), v.id)) Api::Vehicle::remove(v.id);
+    } catch (...) {  // a lost connection: nothing left to hand back
     }
   }
 
@@ -299,12 +332,14 @@ class SessionImpl : public SumoSession {
     }
     Api::Vehicle::add(ego_, route, type, "now", std::to_string(config_.depart_lane), sumo_number(config_.depart_pos),
                       sumo_number(config_.depart_speed));
+    ego_present_ = true;  // from now on release_ego() removes it, departed or still waiting
   }
 
   // Steps until the ego departs: an added ego within 600 steps (its lane may be blocked for a while),
   // a taken-over one by take_over_until.
   bool wait_for_departure() {
     for (int i = 0;; ++i) {
+      throw_if_interrupted();
       if (config_.take_over.empty() ? i >= 600 : Api::Simulation::getTime() > config_.take_over_until + 1e-9)
         return false;
       Api::Simulation::step();
@@ -313,6 +348,7 @@ class SessionImpl : public SumoSession {
   }
 
   void take_control() {
+    ego_present_ = true;
     vehicle_.type = Api::Vehicle::getTypeID(ego_);  // before the setters below give it a type of its own
     if (!config_.take_over.empty()) {
       // The taken-over vehicle keeps its vType, but drives deterministically like an added ego.
@@ -320,9 +356,11 @@ class SessionImpl : public SumoSession {
       Api::Vehicle::setImperfection(ego_, 0.0);
       if (config_.lateral_resolution > 0.0) Api::Vehicle::setMaxSpeedLat(ego_, 10.0);
     }
-    apply_speed_mode();
-    if (config_.keep_planned_lanes) Api::Vehicle::setLaneChangeMode(ego_, 0);
-    if (config_.lateral_resolution > 0.0) Api::Vehicle::setParameter(ego_, "laneChangeModel.lcAccelLat", "20");
+    if (!config_.sumo_drives) {  // SUMO driving keeps its default speed and lane-change modes
+      apply_speed_mode();
+      if (config_.keep_planned_lanes) Api::Vehicle::setLaneChangeMode(ego_, 0);
+      if (config_.lateral_resolution > 0.0) Api::Vehicle::setParameter(ego_, "laneChangeModel.lcAccelLat", "20");
+    }
     vehicle_.id = ego_;
     vehicle_.length = Api::Vehicle::getLength(ego_);
     vehicle_.width = Api::Vehicle::getWidth(ego_);
@@ -331,12 +369,12 @@ class SessionImpl : public SumoSession {
     vehicle_.decel = Api::Vehicle::getDecel(ego_);
     vehicle_.emergency_decel = Api::Vehicle::getEmergencyDecel(ego_);
     vehicle_.route = Api::Vehicle::getRoute(ego_);
-    vehicle_.depart_time = Api::Simulation::getTime();
+    vehicle_.depart_time = Api::Simulation::getTime() - Api::Simulation::getDeltaT();  // inserted in the step just done
     vehicle_.depart_lane = Api::Vehicle::getLaneIndex(ego_);
     vehicle_.depart_pos = Api::Vehicle::getLanePosition(ego_);
     vehicle_.depart_speed = Api::Vehicle::getSpeed(ego_);
     on_ego_departed();
-    if (config_.depart_pos_lat != 0.0) move_to_depart_offset();
+    if (config_.depart_pos_lat != 0.0 && !config_.sumo_drives) move_to_depart_offset();
   }
 
   void apply_speed_mode() {
@@ -363,9 +401,27 @@ class SessionImpl : public SumoSession {
     }
   }
 
+  // Static net data asked over TraCI once and kept (lane widths, permissions, lane counts do not
+  // change during a run): a lane change would otherwise ask for them every step.
+  int lane_count(const std::string& edge_id) const {
+    auto it = lane_counts_.find(edge_id);
+    if (it == lane_counts_.end()) it = lane_counts_.emplace(edge_id, Api::Edge::getLaneNumber(edge_id)).first;
+    return it->second;
+  }
+  double lane_width(const std::string& lane_id) const {
+    auto it = lane_widths_.find(lane_id);
+    if (it == lane_widths_.end()) it = lane_widths_.emplace(lane_id, Api::Lane::getWidth(lane_id)).first;
+    return it->second;
+  }
+  const std::string& lane_edge(const std::string& lane_id) const {
+    auto it = lane_edges_.find(lane_id);
+    if (it == lane_edges_.end()) it = lane_edges_.emplace(lane_id, Api::Lane::getEdgeID(lane_id)).first;
+    return it->second;
+  }
+
   // The index of `lane_id` among the lanes of `edge_id` (SUMO names them <edge>_<index>), or -1.
-  static int lane_index_on(const std::string& edge_id, const std::string& lane_id) {
-    const int lanes = Api::Edge::getLaneNumber(edge_id);
+  int lane_index_on(const std::string& edge_id, const std::string& lane_id) const {
+    const int lanes = lane_count(edge_id);
     for (int k = 0; k < lanes; ++k)
       if (edge_id + "_" + std::to_string(k) == lane_id) return k;
     return -1;
@@ -373,10 +429,10 @@ class SessionImpl : public SumoSession {
 
   // Signed lateral distance [m, left positive] from the centre of lane `from` to the centre of lane
   // `to` on one edge (index 0 is the rightmost lane): half of both widths plus the lanes between.
-  static double centre_distance(const std::string& edge_id, int from, int to) {
+  double centre_distance(const std::string& edge_id, int from, int to) const {
     if (from == to) return 0.0;
     const int lo = std::min(from, to), hi = std::max(from, to);
-    const auto width = [&](int k) { return Api::Lane::getWidth(edge_id + "_" + std::to_string(k)); };
+    const auto width = [&](int k) { return lane_width(edge_id + "_" + std::to_string(k)); };
     double d = 0.5 * (width(lo) + width(hi));
     for (int k = lo + 1; k < hi; ++k) d += width(k);
     return to > from ? d : -d;
@@ -384,13 +440,25 @@ class SessionImpl : public SumoSession {
 
   // Whether vehicles of class `vclass` may use `lane_id` (SUMO keeps a vehicle off lanes it may not
   // use, also sideways in the sublane model: a sidewalk is a road border).
-  static bool permits(const std::string& lane_id, const std::string& vclass) {
-    if (contains_id(Api::Lane::getDisallowed(lane_id), vclass)) return false;
-    const auto allowed = Api::Lane::getAllowed(lane_id);  // empty: every class
-    return allowed.empty() || contains_id(allowed, vclass);
+  bool permits(const std::string& lane_id, const std::string& vclass) const {
+    const std::string key = lane_id + "\n" + vclass;
+    auto it = permits_.find(key);
+    if (it == permits_.end()) {
+      const auto allowed = Api::Lane::getAllowed(lane_id);  // empty: every class
+      const bool ok = !contains_id(Api::Lane::getDisallowed(lane_id), vclass) &&
+                      (allowed.empty() || contains_id(allowed, vclass));
+      it = permits_.emplace(key, ok).first;
+    }
+    return it->second;
   }
 
+  mutable std::unordered_map<std::string, int> lane_counts_;
+  mutable std::unordered_map<std::string, double> lane_widths_;
+  mutable std::unordered_map<std::string, std::string> lane_edges_;
+  mutable std::unordered_map<std::string, bool> permits_;
   EgoVehicle vehicle_;
+  mutable std::string vclass_;  // the ego's vehicle class, asked once
+  bool ego_present_ = false;  // inserted (or taken over) and not arrived: release_ego() has work
   int ego_collisions_ = 0;
   bool emergency_braking_ = false;
   bool right_of_way_ = true;

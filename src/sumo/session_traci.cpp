@@ -4,18 +4,22 @@
 //   connect  signalsim attaches to a SUMO someone else started with --remote-port and --num-clients,
 //            takes its place in the stepping order (setOrder), checks the step length, and at the end
 //            closes only its own connection: the simulation goes on for the other clients.
+#include <algorithm>
 #include <chrono>
 #include <csignal>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <thread>
 
+#include <netdb.h>
 #include <unistd.h>
 
 #include <libsumo/libtraci.h>
 
 #include "sumo/session_factory.hpp"
+#include "sumo/interruption.hpp"
 #include "sumo/session_impl.hpp"
 #include "sumo/sumo_command_line.hpp"
 #include "sumo/sumo_process.hpp"
@@ -43,7 +47,29 @@ std::string short_number(double v) {
   return out.str();
 }
 
+// Whether the user's options already give `name` (SUMO refuses an option given twice).
+bool gives_option(const std::vector<std::string>& args, const std::string& name) {
+  return std::find(args.begin(), args.end(), "--" + name) != args.end();
+}
+
+double parse_number(const std::string& text) {
+  try {
+    return std::stod(text);
+  } catch (const std::exception&) {
+    return 0.0;
+  }
+}
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
 std::string endpoint(const BackendOptions& b) { return b.host + ":" + std::to_string(b.port); }
+
+constexpr unsigned kHandshakeTimeout = 10;  // [s] for a server to answer TraCI's first commands
 
 // One connection attempt (libtraci's own retries print to stdout and wait 1 s each).
 bool try_connect(int port, const std::string& host) {
@@ -54,6 +80,38 @@ bool try_connect(int port, const std::string& host) {
     return false;
   }
 }
+
+// Whether `host` has an address (a name lookup, no connection).
+bool resolves(const std::string& host) {
+  addrinfo* found = nullptr;
+  const int status = getaddrinfo(host.c_str(), nullptr, nullptr, &found);
+  if (found != nullptr) freeaddrinfo(found);
+  return status == 0;
+}
+
+// While it lives, blocking socket calls give up after `seconds` (SIGALRM without SA_RESTART makes
+// recv() return EINTR, which libtraci turns into an exception): a port that accepts but never speaks
+// TraCI must not hang the run.
+class HandshakeDeadline {
+ public:
+  explicit HandshakeDeadline(unsigned seconds) {
+    struct sigaction action {};
+    action.sa_handler = [](int) {};
+    sigemptyset(&action.sa_mask);
+    action.sa_flags = 0;
+    sigaction(SIGALRM, &action, &previous_);
+    alarm(seconds);
+  }
+  ~HandshakeDeadline() {
+    alarm(0);
+    sigaction(SIGALRM, &previous_, nullptr);
+  }
+  HandshakeDeadline(const HandshakeDeadline&) = delete;
+  HandshakeDeadline& operator=(const HandshakeDeadline&) = delete;
+
+ private:
+  struct sigaction previous_ {};
+};
 
 class TraciSession final : public SessionImpl<LibtraciApi> {
  public:
@@ -67,6 +125,8 @@ class TraciSession final : public SessionImpl<LibtraciApi> {
 
   ~TraciSession() override {
     if (connected_) {
+      // connect: the simulation goes on for the other clients, without signalsim's ego
+      if (config_.backend.kind == BackendKind::Connect) release_ego();
       try {
         libtraci::Simulation::close();  // connect: only this client leaves; gui: sumo-gui quits
       } catch (...) {  // a lost connection: nothing left to close
@@ -81,10 +141,12 @@ class TraciSession final : public SessionImpl<LibtraciApi> {
  protected:
   std::string failure_reason(const std::exception& e) const override {
     std::string reason = e.what();
-    if (config_.backend.kind == BackendKind::Connect)
+    // SUMO answered with an error (TraCIException): a refusal, not a lost connection.
+    const bool refused = dynamic_cast<const libsumo::TraCIException*>(&e) != nullptr;
+    if (config_.backend.kind == BackendKind::Connect && !refused)
       reason = "the connection to SUMO at " + endpoint(config_.backend) + " failed or was lost: " + reason;
     if (gui_ && !gui_->running()) {
-      const std::string said = first_error_line(gui_->output());
+      const std::string said = gui_error();
       reason = "sumo-gui ended" + (said.empty() ? std::string() : ": " + said);
     }
     return reason;
@@ -95,13 +157,16 @@ class TraciSession final : public SessionImpl<LibtraciApi> {
     libtraci::Vehicle::setColor(ego_, libsumo::TraCIColor(255, 0, 255, 255));  // magenta: easy to find
     libtraci::GUI::trackVehicle(kView, ego_);
     libtraci::GUI::setZoom(kView, kGuiZoom);
-    take_screenshot();  // replaced by the one at the first blinker, if any
+    shots_left_ = kShotsPerPicture;  // the view at departure, replaced by the one at the first blinker
   }
 
   void on_command(int signal_mask) override {
-    if (config_.backend.kind != BackendKind::Gui || blinker_shot_ || (signal_mask & kBlinkerMask) == 0) return;
-    blinker_shot_ = true;
-    take_screenshot();
+    if (config_.backend.kind != BackendKind::Gui) return;
+    if (!blinker_seen_ && (signal_mask & kBlinkerMask) != 0) {
+      blinker_seen_ = true;
+      shots_left_ = kShotsPerPicture;
+    }
+    if (shots_left_ > 0) take_screenshot();
   }
 
   // sumo-gui draws in its own thread, after the step: the simulation waits until the picture of
@@ -109,6 +174,7 @@ class TraciSession final : public SessionImpl<LibtraciApi> {
   void on_stepped() override {
     if (!screenshot_pending_) return;
     screenshot_pending_ = false;
+    --shots_left_;
     const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(5);
     std::uintmax_t previous = 0;
     while (std::chrono::steady_clock::now() < until) {
@@ -140,8 +206,11 @@ class TraciSession final : public SessionImpl<LibtraciApi> {
       throw SumoError("--gui needs a display, and DISPLAY is not set (run it on a desktop, or under xvfb-run)");
     const int port = free_local_port();
     std::vector<std::string> argv = sumo_command_line(config_, config_.backend.sumo_gui_binary);
+    // SUMO 1.15 waits --delay x step length between steps: --gui-delay MS is per step.
+    const double delay = config_.backend.gui_delay_ms / config_.step_length;
     argv.insert(argv.end(), {"--remote-port", std::to_string(port), "--start", "true", "--quit-on-end", "true",
-                             "--delay", std::to_string(config_.backend.gui_delay_ms), "--window-size", "1024,768"});
+                             "--delay", sumo_number(delay)});
+    if (!gives_option(config_.extra_args, "window-size")) argv.insert(argv.end(), {"--window-size", "1024,768"});
     gui_output_.path = (std::filesystem::temp_directory_path() /
                         ("signalsim-gui-" + std::to_string(getpid()) + "-" + std::to_string(port) + ".txt")).string();
     try {
@@ -151,8 +220,9 @@ class TraciSession final : public SessionImpl<LibtraciApi> {
     }
     const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(kGuiStartTimeout);
     while (!try_connect(port, "127.0.0.1")) {
+      throw_if_interrupted();
       if (!gui_->running()) {
-        const std::string said = first_error_line(gui_->output());
+        const std::string said = gui_error();
         throw SumoError("sumo-gui could not start" + (said.empty() ? std::string() : ": " + said));
       }
       if (std::chrono::steady_clock::now() >= until)
@@ -160,6 +230,16 @@ class TraciSession final : public SessionImpl<LibtraciApi> {
                         std::to_string(static_cast<int>(kGuiStartTimeout)) + " s");
       std::this_thread::sleep_for(std::chrono::milliseconds(100));
     }
+    // Another program could have taken the port between free_local_port() and sumo-gui's bind: then
+    // our sumo-gui has ended and the connection is someone else's.
+    if (!gui_->running()) throw SumoError("sumo-gui could not start: " + gui_error());
+  }
+
+  // sumo-gui's first error: what it printed, else (with --log) its log file.
+  std::string gui_error() const {
+    std::string said = first_error_line(gui_->output());
+    if (said.empty() && !config_.log_file.empty()) said = first_error_line(read_text(config_.log_file));
+    return said;
   }
 
   void attach() {
@@ -167,14 +247,28 @@ class TraciSession final : public SessionImpl<LibtraciApi> {
     // A few quick attempts: a server that was just started may not listen yet.
     bool connected = false;
     for (int attempt = 0; attempt < 5 && !connected; ++attempt) {
+      throw_if_interrupted();
       if (attempt > 0) std::this_thread::sleep_for(std::chrono::milliseconds(200));
-      connected = try_connect(b.port, b.host);
+      const auto started = std::chrono::steady_clock::now();
+      {
+        const HandshakeDeadline deadline(kHandshakeTimeout);  // init waits for SUMO's version answer
+        connected = try_connect(b.port, b.host);
+      }
+      // A refused connection fails at once; one that took long was accepted but never answered.
+      if (!connected && std::chrono::steady_clock::now() - started > std::chrono::seconds(1))
+        throw SumoError("something at " + endpoint(b) + " accepted the connection but did not answer TraCI within " +
+                        std::to_string(kHandshakeTimeout) + " s (is it a SUMO started with --remote-port?)");
     }
+    // libtraci's own message after a failed connect is about its clean-up ("send failed: Broken
+    // pipe"), not the cause: name the cause that can be told without connecting (a probe connection
+    // would take one of the server's client places).
+    if (!connected && !resolves(b.host))
+      throw SumoError("cannot connect to SUMO at " + endpoint(b) + ": host '" + b.host + "' not found");
     if (!connected)
-      throw SumoError("cannot connect to SUMO at " + endpoint(b) +
-                      ": connection refused (start it with: sumo -c FILE.sumocfg --remote-port " +
-                      std::to_string(b.port) + " --num-clients N)");
+      throw SumoError("cannot connect to SUMO at " + endpoint(b) + ": connection refused or host unreachable (start "
+                      "it with: sumo -c FILE.sumocfg --remote-port " + std::to_string(b.port) + " --num-clients N)");
     try {
+      const HandshakeDeadline deadline(kHandshakeTimeout);
       try {
         libtraci::Simulation::setOrder(b.client_order);
       } catch (const std::exception& e) {
@@ -186,15 +280,28 @@ class TraciSession final : public SessionImpl<LibtraciApi> {
         throw SumoError("the scenario's step_length " + short_number(config_.step_length) +
                         " s differs from the step length of SUMO at " + endpoint(b) + ", " +
                         short_number(server_step) + " s (Simulation::getDeltaT)");
-    } catch (...) {
-      try {
-        libtraci::Simulation::close();  // leave politely: the other clients go on
-      } catch (...) {
-      }
+      // Lateral motion needs SUMO's sublane model, which only the server's start can switch on.
+      if (config_.lateral_resolution > 0.0 &&
+          !(parse_number(libtraci::Simulation::getOption("lateral-resolution")) > 0.0))
+        throw SumoError("the scenario drives lateral motion (a lane change or another maneuver), which needs "
+                        "SUMO's sublane model: start SUMO at " + endpoint(b) + " with --lateral-resolution " +
+                        short_number(config_.lateral_resolution));
+    } catch (const SumoError&) {
+      leave();
       throw;
+    } catch (const std::exception& e) {
+      leave();
+      throw SumoError("SUMO at " + endpoint(b) + " did not answer TraCI within " + std::to_string(kHandshakeTimeout) +
+                      " s, or dropped the connection (" + e.what() + ")");
     }
   }
 
+  static void leave() noexcept {
+    try {
+      libtraci::Simulation::close();  // leave politely: the other clients go on
+    } catch (...) {
+    }
+  }
   // sumo-gui's own output (read for its first error line), removed after the process is stopped.
   struct TempFile {
     std::string path;
@@ -206,7 +313,11 @@ class TraciSession final : public SessionImpl<LibtraciApi> {
   TempFile gui_output_;             // destroyed after gui_ (declared before it)
   std::unique_ptr<SumoProcess> gui_;
   bool connected_ = false;
-  bool blinker_shot_ = false;
+  // A busy sumo-gui may draw the first frame after a view change without the vehicles: each picture
+  // is taken on two consecutive steps, the second one kept.
+  static constexpr int kShotsPerPicture = 2;
+  int shots_left_ = 0;
+  bool blinker_seen_ = false;
   bool screenshot_pending_ = false;
 };
 

@@ -44,12 +44,25 @@ std::vector<std::string> sumo_command_line(const SessionConfig& config, const st
 
 std::string first_error_line(const std::string& text) {
   std::istringstream in(text);
-  std::string line, first_line;
+  std::string line, first_line, error;
+  bool in_error = false;
   while (std::getline(in, line)) {
-    if (line.rfind("Error: ", 0) == 0) return line.substr(7);
-    if (first_line.empty() && !line.empty() && line.rfind("Warning: ", 0) != 0) first_line = line;
+    if (in_error) {
+      // SUMO continues a message on lines that start with a blank: one line for the user.
+      if (line.empty() || line.front() != ' ') break;
+      const auto first = line.find_first_not_of(' ');
+      if (first != std::string::npos) error += " " + line.substr(first);
+      continue;
+    }
+    if (line.rfind("Error: ", 0) == 0) {
+      error = line.substr(7);
+      in_error = true;
+      continue;
+    }
+    if (first_line.empty() && !line.empty() && line.rfind("Warning: ", 0) != 0 && line.front() != ' ')
+      first_line = line;
   }
-  return first_line;
+  return in_error ? error : first_line;
 }
 
 }  // namespace signalsim::sumo

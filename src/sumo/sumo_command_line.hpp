@@ -16,7 +16,8 @@ namespace signalsim::sumo {
 /// are left out when extra_args gives them (SUMO refuses an option given twice).
 std::vector<std::string> sumo_command_line(const SessionConfig& config, const std::string& binary);
 
-/// SUMO's first "Error: " line without the prefix (else the first non-empty line) of `text`.
+/// SUMO's first "Error: " message without the prefix, its continuation lines (starting with a blank)
+/// joined to it with one blank (else the first non-empty line that is not a warning) of `text`.
 std::string first_error_line(const std::string& text);
 
 }  // namespace signalsim::sumo

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -86,6 +87,11 @@ struct SessionConfig {
   double decel = 4.5;              ///< vehicle type decel: the most SUMO brakes with speed-mode bit 2
   double emergency_decel = 9.0;
   bool keep_planned_lanes = true;  ///< switch SUMO's own lane changes off for the ego
+  /// SUMO drives the ego (`run --driver sumo`): it is inserted as configured, with the same vType,
+  /// but no speed mode, lane-change mode or depart offset is applied (SUMO's defaults: its own
+  /// lane changes, blinkers and stops at lights; spec SUMO §5). The caller only observes it, and
+  /// must not call command(), command_lateral_offset(), move_back() or the speed-mode setters.
+  bool sumo_drives = false;
   /// Sublane width [m] for SUMO's sublane model (`--lateral-resolution`). 0 = SUMO's default lane
   /// model (lane changes jump, no lateral motion inside a lane). > 0 also makes the ego's lateral
   /// dynamics fast enough to follow command_lateral_offset() exactly: vehicle-type maxSpeedLat
@@ -211,6 +217,14 @@ class SumoSession {
   /// a slow ego 1 m (jmStoplineGap) before a red line while crossing traffic approaches, overriding
   /// the judge (measured on bologna/acosta: 5 of 113 approaches; none with the bit off).
   virtual void set_right_of_way(bool respect) = 0;
+
+  /// SUMO's leader of the ego within `range` metres along its route (Vehicle::getLeader), with the
+  /// gap from the ego's front bumper to the leader's rear; nothing when there is none.
+  struct Leader {
+    std::string id;
+    double gap = 0.0;  ///< [m]
+  };
+  virtual std::optional<Leader> ego_leader(double range) const = 0;
 
   /// Collisions involving the ego so far.
   virtual int ego_collisions() const = 0;

@@ -11,6 +11,7 @@ std::string_view to_string(RequestSource source) {
     case RequestSource::Avoidance: return "avoidance";
     case RequestSource::PullOut: return "pull_out";
     case RequestSource::PullOver: return "pull_over";
+    case RequestSource::Sumo: return "sumo";
     case RequestSource::None: break;
   }
   return "none";

@@ -22,6 +22,7 @@ enum class RequestSource : std::uint8_t {
   Avoidance,
   PullOut,
   PullOver,
+  Sumo,  ///< not a request: SUMO's own blinker logic, observed (`run --driver sumo`, spec SUMO §5)
 };
 
 std::string_view to_string(RequestSource source);

@@ -130,7 +130,20 @@ grep -q "step_length 0.1 s differs from the step length of SUMO at 127.0.0.1:$po
 grep -q '"status": "error"' "$work/mismatch/summary.json" || fail "step-length mismatch: no error summary"
 wait "$server"  # signalsim left politely: the server ends by itself
 
-# 4. The server dies mid-run (kill -9 after 1 s, while the other client paces the run): one line,
+# 4. A server whose route files give the taken-over vehicle another route: exit 2, both routes named.
+port=$(free_port)
+sumo -n "$src/sumo_nets/cross/cross.net.xml" -r "$src/tests/data/user_sumo/other_demand.rou.xml" \
+  -a "$src/tests/data/user_sumo/vtypes.add.xml" --remote-port "$port" --step-length 0.1 --no-step-log true \
+  >"$work/other.server.log" 2>&1 &
+server=$!; pids+=($server)
+"$bin" run "$s2" --out "$work/other" --connect "127.0.0.1:$port" >/dev/null 2>"$work/other.err"
+code=$?
+[ $code -eq 2 ] || fail "other route: exit code $code, want 2"
+grep -q "vehicle 'veh42' drives \[in_S out_N\] in SUMO, not the route \[in_S out_W\] of its route file" "$work/other.err" ||
+  fail "other route: $(cat "$work/other.err")"
+wait "$server"
+
+# 5. The server dies mid-run (kill -9 after 1 s, while the other client paces the run): one line,
 # exit 2, an error summary, and no timeline passed off as a finished run.
 port=$(free_port)
 sumo -n "$src/sumo_nets/cross/cross.net.xml" --remote-port "$port" --num-clients 2 --step-length 0.1 \

@@ -66,7 +66,7 @@ check forbidden_sumo_arg run "$bad/forbidden_sumo_arg.yaml" -- "forbidden_sumo_a
 check route_file_has_ego run "$bad/route_file_has_ego.yaml" -- "ego_id_taken.rou.xml:2" "<vehicle> 'ego' has the id signalsim gives the ego"
 # The back-ends: nothing listens on the port (one bound and released here), no display for sumo-gui.
 port=$(python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')
-check refused_port run "$src/scenarios/intersection_left.yaml" --connect "127.0.0.1:$port" -- "cannot connect to SUMO at 127.0.0.1:$port" "connection refused"
+check refused_port run "$src/scenarios/intersection_left.yaml" --connect "127.0.0.1:$port" -- "cannot connect to SUMO at 127.0.0.1:$port" "connection refused or host unreachable"
 check bad_connect_address run "$src/scenarios/intersection_left.yaml" --connect nowhere -- "--connect" "not HOST:PORT"
 DISPLAY= check gui_without_display run "$src/scenarios/intersection_left.yaml" --gui -- "--gui needs a display" "DISPLAY is not set"
 

@@ -8,6 +8,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -91,6 +94,30 @@ TEST(RealNet, ALaneChangeAcrossABusLaneIsRefusedAtLoad) {
               s.path + ": ego.route: the lane change the route needs on edge '31' (lane 0 -> 2) crosses lane "
                        "'31_1', which a passenger car may not use; no other lane sequence connects the route edges");
   }
+}
+
+TEST(RealNet, ADefectTheScenarioRouteUsesNamesTheNetsLineAndTheScenario) {
+  // tests/data/nets/line.net.xml with a NaN length on bc_1, which the route ab -> bc drives.
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "signalsim_real_net_defect";
+  std::filesystem::create_directories(dir);
+  std::ifstream in(std::string(SIGNALSIM_SOURCE_DIR) + "/tests/data/nets/line.net.xml");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string from = "id=\"bc_1\" index=\"1\" speed=\"13.89\" length=\"48.50\"";
+  ASSERT_NE(text.find(from), std::string::npos);
+  const int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(text.find(from)), '\n'));
+  text.replace(text.find(from), from.size(), "id=\"bc_1\" index=\"1\" speed=\"13.89\" length=\"nan\"");
+  std::ofstream((dir / "nan.net.xml").string()) << text;
+  std::ofstream((dir / "s.yaml").string()) << "name: s\nnet: nan.net.xml\nego:\n  route: [ab, bc]\n";
+  const Scenario s = load_scenario((dir / "s.yaml").string());
+  try {
+    plan_route(s, sumo::NetIndex::load(s.net));
+    FAIL() << "the route was accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), s.net + ":" + std::to_string(line) +
+                                         ": lane 'bc_1': attribute 'length' is not a number: 'nan' (a lane the route "
+                                         "drives on edge 'bc') in ego.route of " + s.path);
+  }
+  std::filesystem::remove_all(dir);
 }
 
 // ---- the lane-change checks on the bundled nets (plan_route reads the net only) ------------------

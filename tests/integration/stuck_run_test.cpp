@@ -45,8 +45,19 @@ TEST(StuckRun, BehindAVehicleThatNeverMovesTheRunEndsAsAFailureWithTheReason) {
   ASSERT_TRUE(r.record.not_arrived.has_value());
   const NotArrived& n = *r.record.not_arrived;
   EXPECT_EQ(n.reason, "stuck");
-  EXPECT_NEAR(r.record.rows.back().time - rest_start(r.record), 60.0, 1e-6) << "after stuck_rest_time at rest";
-  EXPECT_LT(r.record.rows.back().time, 100.0) << "long before the 300 s duration";
+  // The light 'C' after the parked car is red part of the time: while a judge asks for a stop the
+  // stuck clock pauses (a queue at a long red is no deadlock), so the run ends once the rests
+  // without a stop request add up to stuck_rest_time.
+  double unheld = 0.0, paused = 0.0;
+  const double start = rest_start(r.record);
+  for (std::size_t i = 1; i < r.record.rows.size(); ++i) {
+    const TimelineRow& row = r.record.rows[i];
+    if (row.time <= start) continue;
+    (r.record.rows[i - 1].stop_s ? paused : unheld) += row.time - r.record.rows[i - 1].time;
+  }
+  EXPECT_NEAR(unheld, 60.0, 0.15) << "after stuck_rest_time at rest without a stop request";
+  EXPECT_GT(paused, 1.0) << "the red phases paused the clock";
+  EXPECT_LT(r.record.rows.back().time, 150.0) << "long before the 300 s duration";
   EXPECT_EQ(n.edge, "mid");
   EXPECT_EQ(n.lane, "mid_0");
   EXPECT_NEAR(n.s_front, 152.58 + 100.0 - 4.5 - 2.5, 0.05) << "the parked car's rear less SUMO's minGap";
@@ -111,6 +122,20 @@ TEST(StuckWatch, OnlyAnUnheldRestRunsTheClock) {
   EXPECT_FALSE(w.observe(1.8, -0.3, ""));  // backing up is not a rest
   StuckWatch off(0.0);
   for (int k = 0; k < 100; ++k) EXPECT_FALSE(off.observe(k, 0.0, ""));
+}
+
+TEST(StuckWatch, AQueueBeforeARedLightPausesTheClockWithoutRestartingIt) {
+  StuckWatch w(1.0);
+  EXPECT_FALSE(w.observe(0.0, 0.0, ""));
+  EXPECT_FALSE(w.observe(0.6, 0.0, ""));        // 0.6 s counted
+  EXPECT_FALSE(w.observe(0.7, 0.0, "", true));  // queued: paused
+  EXPECT_FALSE(w.observe(5.0, 0.0, "", true));  // a long red: still paused
+  EXPECT_NEAR(w.stuck_for(), 0.6, 1e-12);
+  EXPECT_FALSE(w.observe(5.1, 0.0, ""));        // green again: counting resumes from here
+  EXPECT_FALSE(w.observe(5.4, 0.0, ""));
+  EXPECT_TRUE(w.observe(5.5, 0.0, ""));         // 0.6 + 0.4 s
+  EXPECT_NEAR(w.stuck_for(), 1.0, 1e-12);
+  EXPECT_NEAR(w.at_rest_for(), 5.5, 1e-12);
 }
 
 TEST(StuckWatch, WithoutALeaderTheJunctionTheEgoWaitsAtIsNamed) {

@@ -44,6 +44,16 @@ PY
 [ -e "$data/tripinfo.xml" ] && fail "the sumocfg's output was written beside it, not into --out"
 [ -e "$data/user_sumo.log" ] && fail "the sumocfg's own log option was not ignored"
 
+# A flow's vehicle, departLane="best": SUMO chose lane 1 of in_W, which leads on: no lane change.
+"$bin" run "$data/take_over_flow.yaml" --out "$work/flow" --quiet || fail "take_over_flow: exit code $?"
+python3 - "$work/flow/summary.json" <<'PY' || fail "take_over_flow: summary"
+import json, sys
+s = json.load(open(sys.argv[1]))
+assert s["ego"]["id"] == "east.0" and s["ego"]["depart_lane"] == 1, s["ego"]
+assert s["route"]["lane_changes"] == 0 and s["lane_changes"] == [], (s["route"], s["lane_changes"])
+assert s["counts"]["arrived"], s["counts"]
+PY
+
 "$bin" run "$data/fcd_signals.yaml" --out "$work/fcd" --quiet || fail "fcd_signals: exit code $?"
 python3 - "$work/fcd" <<'PY' || fail "fcd_signals: SUMO's FCD signals differ from the timeline's sumo_signals"
 import csv, os, sys

@@ -23,10 +23,14 @@ def main(argv):
     parser.add_argument("--metric", help="sweep: results.csv column to show (default: the first *.lead_distance)")
     parser.add_argument("--x", help="sweep: swept column along x")
     parser.add_argument("--y", help="sweep: swept column along y")
+    parser.add_argument("--quiet", action="store_true", help="do not print the files written")
     args = parser.parse_args(argv)
     try:
         path = args.path
-        if os.path.isfile(path) and path.endswith(".csv"):
+        from plotting import comparison_plots
+        if os.path.isfile(path) and path.endswith(".csv") and comparison_plots.is_comparison(path):
+            written = comparison_plots.plot_comparison(path, args.out or os.path.dirname(path) or ".")
+        elif os.path.isfile(path) and path.endswith(".csv"):
             from plotting import sweep_plots
             out = args.out or os.path.join(os.path.dirname(path) or ".", "plots")
             written = sweep_plots.plot_results(path, out, args.metric, args.x, args.y)
@@ -43,6 +47,6 @@ def main(argv):
     except InputError as e:
         print(f"tools/plot: {e}", file=sys.stderr)
         return 2
-    for f in written:
+    for f in written if not args.quiet else []:
         print(f)
     return 0

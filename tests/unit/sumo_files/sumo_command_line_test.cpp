@@ -44,8 +44,9 @@ TEST(SumoCommandLine, AUsersValueReplacesADefaultInsteadOfRepeatingIt) {
 }
 
 TEST(SumoCommandLine, FirstErrorLine) {
-  EXPECT_EQ(first_error_line("Warning: x\nLoading\nError: The edge 'q' is not known.\n more\n"),
-            "The edge 'q' is not known.");
+  EXPECT_EQ(first_error_line("Warning: x\nLoading\nError: The edge 'q' is not known.\n The route can not be build.\n"
+                             "Quitting (on error).\n"),
+            "The edge 'q' is not known. The route can not be build.");
   EXPECT_EQ(first_error_line("Warning: x\nFXApp::openDisplay: unable to open display :9\n"),
             "FXApp::openDisplay: unable to open display :9");
 }

@@ -6,17 +6,13 @@
 
 #include "sumo/net_index.hpp"
 #include "sumo/sumocfg.hpp"
+#include "temp_dir.hpp"
 
 namespace signalsim::sumo {
 namespace {
 
 const std::string kSource = SIGNALSIM_SOURCE_DIR;
 
-std::string write_temp(const std::string& name, const std::string& text) {
-  const auto path = std::filesystem::temp_directory_path() / name;
-  std::ofstream(path) << text;
-  return path.string();
-}
 
 TEST(Sumocfg, ReadsFilesTimesSeedAndKeepsTheOtherOptionsWithTheirLines) {
   const SumoConfigFile cfg = read_sumocfg(kSource + "/tests/data/user_sumo/cross.sumocfg");
@@ -53,16 +49,17 @@ TEST(Sumocfg, BadFilesNameTheFileAndLine) {
     }
     return std::string("no error");
   };
-  const std::string missing_input = write_temp("signalsim_missing_input.sumocfg",
+  const TempDir dir("sumocfg");
+  const std::string missing_input = dir.file("signalsim_missing_input.sumocfg",
                                                "<configuration>\n<input>\n<net-file value=\"nowhere.net.xml\"/>\n"
                                                "</input>\n</configuration>\n");
   EXPECT_NE(message(missing_input).find("signalsim_missing_input.sumocfg:3: option 'net-file': file"), std::string::npos)
       << message(missing_input);
-  const std::string bad_number = write_temp("signalsim_bad_number.sumocfg",
+  const std::string bad_number = dir.file("signalsim_bad_number.sumocfg",
                                             "<configuration>\n<time>\n<end value=\"soon\"/>\n</time>\n</configuration>\n");
   EXPECT_NE(message(bad_number).find(":3: option 'end' is not a number: 'soon'"), std::string::npos)
       << message(bad_number);
-  const std::string not_cfg = write_temp("signalsim_not_cfg.sumocfg", "<net/>\n");
+  const std::string not_cfg = dir.file("signalsim_not_cfg.sumocfg", "<net/>\n");
   EXPECT_NE(message(not_cfg).find("not a SUMO configuration"), std::string::npos) << message(not_cfg);
   EXPECT_NE(message(kSource + "/nowhere.sumocfg").find("nowhere.sumocfg"), std::string::npos);
 }

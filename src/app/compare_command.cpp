@@ -1,0 +1,218 @@
+// `signalsim compare PATH... --out DIR` (issue 11): every scenario twice on the same route and traffic,
+// driven by signalsim and by SUMO on its own (run --driver sumo), then OUT/comparison.csv, the
+// picture OUT/comparison.png (tools/plot) and a one-screen summary.
+//
+//   check    every scenario is loaded and its route planned, no SUMO (bad input: one line, exit 2,
+//            nothing written; a comparison.csv/png left in OUT by an earlier compare is removed)
+//   run      per scenario NNNN two workers, OUT/runs/NNNN-<name>-signalsim and -sumo (same seed and
+//            --set values), at most --jobs at a time, each with the wall-clock --timeout
+//   table    app/comparison: one row per section or light and driver; a run that did not finish
+//            gives error rows
+//   picture  tools/plot OUT/comparison.csv --out OUT
+// Exit codes: 0 every run finished and no signalsim run failed an expectation (the SUMO runs'
+// expectation results are reported, not judged: they measure SUMO against the decider's law),
+// 1 a signalsim run failed or any run errored, 2 bad input, 3 the runs were fine but the picture
+// could not be drawn, 130 interrupted (no comparison written).
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <memory>
+
+#include "app/batch_cli.hpp"
+#include "app/command.hpp"
+#include "app/comparison.hpp"
+#include "app/plot_tool.hpp"
+#include "app/process_pool.hpp"
+#include "app/run_outputs.hpp"
+#include "scenario/expectations.hpp"
+#include "scenario/input_error.hpp"
+#include "scenario/scenario.hpp"
+#include "scenario/session_setup.hpp"
+#include "scenario/sweep.hpp"
+#include "sumo/net_index.hpp"
+
+namespace signalsim::app {
+namespace fs = std::filesystem;
+namespace {
+
+constexpr const char* kDrivers[] = {"signalsim", "sumo"};
+constexpr const char* kCsv = "comparison.csv";
+constexpr const char* kPicture = "comparison.png";
+
+struct CompareOptions {
+  std::vector<std::string> paths;
+  std::vector<std::string> set;
+  BatchCliOptions batch;
+};
+
+// One scenario as checked before anything runs.
+struct Checked {
+  std::string file;
+  ScenarioComparison comparison;
+};
+
+// Loads every scenario with the overrides and plans its route (nets read once each). Throws
+// InputError / sumo::NetError for the first bad one.
+std::vector<Checked> check_scenarios(const std::vector<std::string>& files, const std::vector<std::string>& set) {
+  std::map<std::string, sumo::NetIndex> nets;
+  std::vector<Checked> out;
+  for (const std::string& file : files) {
+    const Scenario scenario = load_scenario(file, ScenarioOverrides{set});
+    auto net = nets.find(scenario.net);
+    if (net == nets.end()) net = nets.emplace(scenario.net, sumo::NetIndex::load(scenario.net)).first;
+    const PlannedRun planned = plan_run(scenario, net->second);
+    check_expectations_apply(planned.scenario, planned.plan.map);
+    Checked c;
+    c.file = file;
+    c.comparison.scenario = scenario.name;
+    c.comparison.base_link_to_front = planned.scenario.ego.base_link_to_front;
+    c.comparison.items = compared_items(planned.plan.map, planned.scenario.params);
+    out.push_back(std::move(c));
+  }
+  return out;
+}
+
+// "runs/0003-intersection_left-sumo"
+std::string run_dir_name(std::size_t index, const std::string& name, const std::string& driver) {
+  std::string safe;
+  for (const char c : name) safe += (std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-') ? c : '_';
+  char prefix[32];
+  std::snprintf(prefix, sizeof prefix, "runs/%04zu-", index);
+  return prefix + safe + "-" + driver;
+}
+
+// A finished worker's run: its summary and timeline, or why there is none.
+DriverRun driver_run(const std::string& out_dir, const std::string& run_dir, const std::string& driver,
+                     const ProcessResult& result, double timeout) {
+  DriverRun run;
+  run.driver = driver;
+  run.run_dir = run_dir;
+  run.status = "error";
+  const std::string message = stderr_one_line(result.stderr_text);
+  if (result.timed_out) {
+    char text[128];
+    std::snprintf(text, sizeof text, "timed out: still running after the %g s limit (worker killed)", timeout);
+    run.error = text;
+    return run;
+  }
+  if (!result.exited) {
+    run.error = "worker killed by " + signal_name(result.signal) + (message.empty() ? "" : ": " + message);
+    return run;
+  }
+  if (result.exit_code != 0 && result.exit_code != 1) {
+    run.error = message.empty() ? "exit code " + std::to_string(result.exit_code) : message;
+    return run;
+  }
+  const fs::path dir = fs::path(out_dir) / run_dir;
+  try {
+    run.summary = read_json_file((dir / "summary.json").string());
+    const std::string status = run.summary.value("status", "");
+    if (!is_finished_status(status)) {
+      run.error = run.summary.value("error", "summary.json status '" + status + "'");
+      return run;
+    }
+    run.timeline = read_timeline_csv((dir / "timeline.csv").string());
+    run.status = status;
+  } catch (const std::exception& e) {
+    run.error = "exit code " + std::to_string(result.exit_code) + " but " + e.what();
+  }
+  return run;
+}
+
+// A bad-input exit: the comparison files of an earlier compare must not pass for this one's.
+int bad_input(const std::string& out_dir, const std::string& message) {
+  std::error_code ignored;
+  for (const char* name : {kCsv, kPicture}) fs::remove(fs::path(out_dir) / name, ignored);
+  return report_bad_input(message);
+}
+
+int compare(const CompareOptions& o) {
+  const auto start = std::chrono::steady_clock::now();
+  const BatchSettings settings = to_settings(o.batch, "out/compare", 300.0);
+  std::vector<Checked> scenarios;
+  if (o.paths.empty()) return bad_input(settings.out_dir, "compare: no scenario given (signalsim compare PATH... --out DIR)");
+  try {
+    scenarios = check_scenarios(scenario_files(o.paths), o.set);
+  } catch (const std::exception& e) {
+    return bad_input(settings.out_dir, e.what());
+  }
+  std::vector<ProcessJob> jobs;
+  std::vector<std::string> run_dirs;
+  try {
+    fs::create_directories(fs::path(settings.out_dir) / "runs");
+    for (const char* name : {kCsv, kPicture}) fs::remove(fs::path(settings.out_dir) / name);
+    const std::string self = self_executable();
+    for (std::size_t i = 0; i < scenarios.size(); ++i)
+      for (const char* driver : kDrivers) {
+        const std::string dir = run_dir_name(i, scenarios[i].comparison.scenario, driver);
+        fs::remove_all(fs::path(settings.out_dir) / dir);  // a stale run of an earlier compare
+        ProcessJob job;
+        job.id = run_dirs.size();
+        job.timeout = settings.timeout;
+        job.argv = {self, "run", scenarios[i].file, "--out", (fs::path(settings.out_dir) / dir).string(), "--quiet",
+                    "--driver", driver};
+        for (const std::string& item : o.set) job.argv.insert(job.argv.end(), {"--set", item});
+        jobs.push_back(std::move(job));
+        run_dirs.push_back(dir);
+      }
+  } catch (const std::exception& e) {
+    return bad_input(settings.out_dir, settings.out_dir + ": " + e.what());
+  }
+  if (!settings.quiet) {
+    std::printf("compare: %zu scenario%s x 2 drivers (signalsim, sumo), %d at a time -> %s\n", scenarios.size(),
+                scenarios.size() == 1 ? "" : "s", settings.jobs, settings.out_dir.c_str());
+    std::fflush(stdout);
+  }
+
+  std::vector<DriverRun> runs(jobs.size());
+  const bool completed = run_processes(jobs, settings.jobs, [&](const ProcessJob& job, const ProcessResult& result) {
+    runs[job.id] = driver_run(settings.out_dir, run_dirs[job.id], kDrivers[job.id % 2], result, settings.timeout);
+  });
+  if (!completed) {
+    std::printf("interrupted: no comparison written; the finished runs are in %s/runs\n", settings.out_dir.c_str());
+    return kExitInterrupted;
+  }
+  std::vector<ScenarioComparison> table;
+  bool failed = false;
+  for (std::size_t i = 0; i < scenarios.size(); ++i) {
+    ScenarioComparison c = std::move(scenarios[i].comparison);
+    c.runs = {std::move(runs[2 * i]), std::move(runs[2 * i + 1])};
+    failed = failed || c.runs[0].status == "failed" || c.runs[0].status == "error" || c.runs[1].status == "error";
+    table.push_back(std::move(c));
+  }
+  const std::string csv = (fs::path(settings.out_dir) / kCsv).string();
+  try {
+    write_file_atomically(csv, comparison_csv(table));
+  } catch (const std::exception& e) {
+    return report_bad_input(e.what());
+  }
+  const int plotted = run_plot_tool({csv, "--out", settings.out_dir, "--quiet"});
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!settings.quiet) {
+    std::size_t errors = 0;
+    for (const ScenarioComparison& c : table)
+      for (const DriverRun& r : c.runs) errors += r.status == "error";
+    std::printf("%s", comparison_screen(table).c_str());
+    std::printf("%zu runs, %zu error%s in %.1f s; comparison: %s%s\n", jobs.size(), errors, errors == 1 ? "" : "s",
+                wall, csv.c_str(),
+                plotted == 0 ? (", " + (fs::path(settings.out_dir) / kPicture).string()).c_str() : " (no picture)");
+  }
+  if (failed) return kExitFailed;
+  return plotted == 0 ? 0 : 3;
+}
+
+}  // namespace
+
+Command add_compare_command(CLI::App& app) {
+  auto o = std::make_shared<CompareOptions>();
+  CLI::App* sub = app.add_subcommand(
+      "compare", "Run each scenario driven by signalsim and by SUMO alone; comparison.csv and comparison.png");
+  // Not required() for CLI11: with no path, compare itself refuses (and removes an earlier comparison).
+  sub->add_option("paths", o->paths, "Scenario files or directories of them (*.yaml)");
+  sub->add_option("--set", o->set, "Override for every run: a scenario key or a parameter (key=value); repeatable");
+  add_batch_options(sub, o->batch, "out/compare", false);
+  return {sub, [o] { return compare(*o); }};
+}
+
+}  // namespace signalsim::app

@@ -1,0 +1,23 @@
+// Ctrl-C and SIGTERM during a run: the handlers only set a flag (and make blocking socket calls return
+// with EINTR); the step loop and the session's waits check it and unwind, so sumo-gui is stopped by its
+// PID, temporary files are removed and the run directory says "error" rather than keeping old files.
+#pragma once
+
+#include "sumo/sumo_session.hpp"
+
+namespace signalsim::sumo {
+
+/// A run stopped by SIGINT or SIGTERM.
+class Interrupted : public SumoError {
+ public:
+  Interrupted() : SumoError("interrupted (SIGINT or SIGTERM)") {}
+};
+
+/// Installs the SIGINT and SIGTERM handlers (without SA_RESTART). Idempotent.
+void install_interruption_handlers();
+/// Whether a handled signal arrived.
+bool interruption_requested();
+/// Throws Interrupted when one did.
+void throw_if_interrupted();
+
+}  // namespace signalsim::sumo
