@@ -13,6 +13,7 @@ namespace {
 constexpr double kScanStep = 0.1;      // [m] resolution of the activation scan
 constexpr double kMinBlinkerOn = 1.0;  // [m] a shorter guaranteed stretch is not stated
 constexpr double kMinEntryQuiet = 2.0; // [m] a shorter no-entry-signal stretch is not stated
+// (and neither is a stretch shorter than the step's travel, step_room)
 
 std::string name_of(const Section& s) {
   std::string what = to_string(s.kind);
@@ -101,6 +102,12 @@ Window initial_window(const Section& s, const SpeedProfile& speed, const RulePar
   w.to = w.possible_to;
   w.to_why = "until base_link leaves it (its desired end, spec TSD §4.3/§5)";
   return w;
+}
+
+// A stretch shorter than this may hold no step at all: the ego moves up to upper speed x step per
+// step (the generated scenarios' 0.1 s), so a stated stretch is at least that and a metre more.
+double step_room(const SpeedProfile& speed, double from, double to) {
+  return speed.max_planned(from, to) * kStepLength + kSpeedSlack * kStepLength + 1.0;
 }
 
 bool overlaps(double a_from, double a_to, double b_from, double b_to) { return a_from <= b_to && b_from <= a_to; }
@@ -200,7 +207,7 @@ Derivation derive_expectations(const std::vector<Section>& sections, const Route
       e.lead = std::max(0.0, floor_tenth(s.start - w.from - kMargin));
       e.why = name_of(s) + " (s " + fixed(s.start) + "-" + fixed(s.end) + "): " + e.blinker + " from " + fixed(e.lead) +
               " m before it (" + fixed(kMargin) + " m kept): " + w.from_why + "; " + w.to_why;
-    } else if (w.to - w.from >= kMinBlinkerOn + 2 * kMargin) {
+    } else if (w.to - w.from >= std::max(kMinBlinkerOn, step_room(speed, w.from, w.to)) + 2 * kMargin) {
       e.kind = Kind::BlinkerOn;
       e.from_s = ceil_tenth(w.from + kMargin);
       e.to_s = floor_tenth(w.to - kMargin);
@@ -245,7 +252,7 @@ Derivation derive_expectations(const std::vector<Section>& sections, const Route
     std::optional<Interval> best;
     bool best_contains = false;
     for (const Interval& q : free_parts(from, to, blocked)) {
-      if (q.second - q.first < kMinEntryQuiet) continue;
+      if (q.second - q.first < std::max(kMinEntryQuiet, step_room(speed, q.first, q.second))) continue;
       const bool contains = q.first <= s.start && s.start <= q.second;
       if (!best || (contains && !best_contains) ||
           (contains == best_contains && q.second - q.first > best->second - best->first)) {

@@ -42,6 +42,8 @@ namespace signalsim::generate {
 
 /// [m] kept from every rule's boundary (numeric noise, the step's discrete positions).
 inline constexpr double kMargin = 0.5;
+/// [s] the generated scenarios' step_length.
+inline constexpr double kStepLength = 0.1;
 
 struct RuleParameters {
   double search_time = 3.0;              ///< turn_signal_search_time [s]

@@ -25,6 +25,30 @@ const sumo::NetConnection* link_between(const RouteMap& route, std::size_t i, co
   return nullptr;
 }
 
+// The program SUMO runs for a light: the last one the net defines for its id (a newly loaded
+// program becomes the default, MSTLLogicControl::add).
+const sumo::NetTlLogic* running_program(const sumo::NetIndex& net, const std::string& tls) {
+  const sumo::NetTlLogic* last = nullptr;
+  for (const sumo::NetTlLogic& logic : net.tl_logics())
+    if (logic.id == tls) last = &logic;
+  return last;
+}
+
+bool ever_passable(const sumo::NetTlLogic& logic, int link_index) {
+  for (const sumo::NetPhase& p : logic.phases) {
+    if (link_index < 0 || static_cast<std::size_t>(link_index) >= p.state.size()) continue;
+    const char c = p.state[static_cast<std::size_t>(link_index)];
+    if (c == 'G' || c == 'g' || c == 's' || c == 'o' || c == 'O') return true;
+  }
+  return false;
+}
+
+void check_link(const sumo::NetIndex& net, const std::string& tls, int link_index, PlannedRouteFacts& f) {
+  const sumo::NetTlLogic* logic = running_program(net, tls);
+  if (logic == nullptr || !ever_passable(*logic, link_index))
+    f.never_green.push_back(tls + " link " + std::to_string(link_index));
+}
+
 }  // namespace
 
 PlannedRouteFacts route_facts(const sumo::RoutePlan& plan, const LateralPlan& lateral, const sumo::NetIndex& net) {
@@ -35,9 +59,10 @@ PlannedRouteFacts route_facts(const sumo::RoutePlan& plan, const LateralPlan& la
     if (!l.is_internal && l.traffic_light) {
       f.lights.push_back({l.traffic_light->tls_id, l.stop_line_s()});
       double cycle = 0.0;
-      if (const sumo::NetTlLogic* logic = net.tl_logic(l.traffic_light->tls_id))
+      if (const sumo::NetTlLogic* logic = running_program(net, l.traffic_light->tls_id))
         for (const sumo::NetPhase& p : logic->phases) cycle += p.duration;
       f.light_cycles.push_back(cycle);
+      check_link(net, l.traffic_light->tls_id, l.traffic_light->link_index, f);
       f.stops.push_back({l.stop_line_s(), true, "light " + l.traffic_light->tls_id});
       continue;
     }
@@ -45,8 +70,10 @@ PlannedRouteFacts route_facts(const sumo::RoutePlan& plan, const LateralPlan& la
     const sumo::NetConnection* c = link_between(route, i, net);
     if (c == nullptr) continue;
     const std::string junction = route.at(i + 1).is_internal ? route.at(i + 1).junction_id : l.junction_id;
-    if (!c->tl.empty() && l.is_internal)
+    if (!c->tl.empty() && l.is_internal) {
       f.stops.push_back({l.s_end(), true, "light " + c->tl + " inside junction " + junction});
+      check_link(net, c->tl, c->link_index, f);
+    }
     else if (c->tl.empty() && yields(c->state))
       f.stops.push_back({l.s_end(), false,
                          "the yield at junction " + junction + " (link state " + std::string(1, c->state) + ")"});

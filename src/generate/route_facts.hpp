@@ -28,6 +28,10 @@ struct PlannedRouteFacts {
   };
   std::vector<Stop> stops;
   std::vector<LaneChangeFact> lane_changes;
+  /// Lights whose program never shows the route's link green (G, g, s) nor off (o, O): the ego would
+  /// wait there forever, as SUMO's own vehicles do ("<tls> link <index>"). SUMO runs the program
+  /// loaded last for an id, so that one is read.
+  std::vector<std::string> never_green;
 };
 
 PlannedRouteFacts route_facts(const sumo::RoutePlan& plan, const LateralPlan& lateral, const sumo::NetIndex& net);

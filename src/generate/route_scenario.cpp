@@ -94,17 +94,20 @@ std::optional<RouteScenario> route_scenario(const sumo::NetIndex& net, const std
   }
 
   const PlannedRouteFacts facts = route_facts(plan, lateral, net);
+  if (!facts.never_green.empty()) {
+    rejection.reason = "a light never lets the route's link go";
+    return std::nullopt;
+  }
   const double v0 = depart_speed(route, o);
   const SpeedLimits limits{o.max_speed, o.accel, o.decel};
-  constexpr double kStep = 0.1;  // the generated scenarios' step_length
   // Stop zones from the planned speed without stops (the ego is no faster than that).
-  const SpeedProfile free_run(route, 0.0, v0, limits, kStep, {});
+  const SpeedProfile free_run(route, 0.0, v0, limits, kStepLength, {});
   std::vector<StopPoint> stops;
   for (const PlannedRouteFacts::Stop& s : facts.stops) {
     const double v = free_run.max_planned(s.s - 200.0, s.s) + kSpeedSlack;
     stops.push_back({s.s, s.light ? light_braking_distance(v) : yield_braking_distance(v), s.what});
   }
-  const SpeedProfile speed(route, 0.0, v0, limits, kStep, stops);
+  const SpeedProfile speed(route, 0.0, v0, limits, kStepLength, stops);
 
   SectionParameters section_params;
   section_params.intersection_search_distance = params.number("turn_signal_intersection_search_distance");

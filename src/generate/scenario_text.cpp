@@ -45,7 +45,7 @@ std::string scenario_text(const ScenarioDraft& d) {
   out << "name: " << quoted(d.name) << "\n";
   out << "description: " << quoted(d.description) << "\n";
   out << "net: " << quoted(d.net) << "\n";
-  out << "step_length: 0.1\n";
+  out << "step_length: " << fixed(kStepLength) << "\n";
   out << "duration: " << fixed(d.duration, 0) << "\n";
   out << "seed: 1\n";
   if (!d.country.empty()) out << "country: " << d.country << "\n";
