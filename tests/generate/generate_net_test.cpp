@@ -86,6 +86,32 @@ TEST(RouteFacts, ALeftTurnAtALightYieldsInsideTheJunction) {
   EXPECT_TRUE(f.lane_changes.empty());
 }
 
+TEST(RouteFacts, ALightWhoseRunningProgramNeverLetsTheLinkGoIsAFact) {
+  // cross.net.xml with a second program for C after the first: SUMO runs the one loaded last. Red
+  // for every link in it: the route's link never goes (SUMO's bs3d game net has such lights).
+  std::ifstream in(kNets + "cross/cross.net.xml");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string end_of_logic = "</tlLogic>";
+  const auto at = text.find(end_of_logic);
+  ASSERT_NE(at, std::string::npos);
+  text.insert(at + end_of_logic.size(),
+              "\n    <tlLogic id=\"C\" type=\"static\" programID=\"red\" offset=\"0\">\n"
+              "        <phase duration=\"60\" state=\"rrrrrrrrrrrrrrrr\"/>\n    </tlLogic>");
+  const auto dir = std::filesystem::temp_directory_path() / "signalsim_generate_net_test";
+  std::filesystem::create_directories(dir);
+  const std::string path = (dir / "cross_red.net.xml").string();
+  std::ofstream(path) << text;
+  for (const auto& [net_path, never] : {std::pair{kNets + "cross/cross.net.xml", false}, {path, true}}) {
+    const auto net = sumo::NetIndex::load(net_path);
+    const Scenario s = scenario_for(net_path, {"in_S", "out_N"});
+    const sumo::RoutePlan plan = plan_route(s, net);
+    const PlannedRouteFacts f = route_facts(plan, plan_lateral(s, plan, net), net);
+    EXPECT_EQ(!f.never_green.empty(), never) << net_path;
+    ASSERT_EQ(f.light_cycles.size(), 1u);
+    EXPECT_DOUBLE_EQ(f.light_cycles[0], never ? 60.0 : 70.0);  // the running program's cycle
+  }
+}
+
 TEST(RouteFacts, TheLaneChangeARouteNeedsIsAFact) {
   const std::string path = kNets + "cross_feeder/cross_feeder.net.xml";
   const auto net = sumo::NetIndex::load(path);
