@@ -42,7 +42,19 @@ nlohmann::ordered_json sumo_json(const Scenario& scenario, const RunSumoInfo& in
   out["sumocfg"] = scenario.sumo.sumocfg;
   out["route_files"] = scenario.sumo.route_files;
   out["additional"] = scenario.additional;
-  out["options"] = info.args;
+  // Paths in the run's own directory are written relative to it: the summary is the same whatever
+  // --out (a batch's run folder or a run of its own).
+  nlohmann::ordered_json options = nlohmann::ordered_json::array();
+  const std::string prefix = info.out_dir.empty() ? std::string() : fs::path(info.out_dir).lexically_normal().string() + "/";
+  for (const std::string& a : info.args)
+    options.push_back(!prefix.empty() && a.rfind(prefix, 0) == 0 ? a.substr(prefix.size()) : a);
+  out["options"] = options;
+  if (!info.server_options.empty()) {
+    nlohmann::ordered_json server = nlohmann::ordered_json::object();
+    for (const auto& [name, value] : info.server_options) server[name] = value;
+    out["server_options"] = server;
+  }
+  if (!info.notes.empty()) out["notes"] = info.notes;
   if (!scenario.sumo.sumocfg.empty())
     out["sumocfg_used"] = {{"used", scenario.sumo.cfg_used},
                            {"replaced_by_scenario", scenario.sumo.cfg_overridden},

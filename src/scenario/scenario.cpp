@@ -6,18 +6,13 @@
 
 #include "scenario/countries.hpp"
 #include "scenario/input_error.hpp"
+#include "sumo/file_paths.hpp"
 #include "scenario/sumo_inputs.hpp"
 #include "scenario/yaml_fields.hpp"
 
 namespace signalsim {
 namespace fs = std::filesystem;
 namespace {
-
-std::string resolve_relative(const std::string& scenario_path, const std::string& path) {
-  const fs::path p(path);
-  if (p.is_absolute()) return p.lexically_normal().string();
-  return (fs::path(scenario_path).parent_path() / p).lexically_normal().string();
-}
 
 Blinker parse_blinker(const YamlFields& fields, const std::string& key) {
   const std::string v = fields.text(key);
@@ -375,7 +370,7 @@ Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrid
   YAML::Node set;
   if (top.has("params")) {
     YamlFields params(top.node("params"), path, "params");
-    for (const std::string& file : params.text_list("files")) s.params.apply_file(resolve_relative(path, file));
+    for (const std::string& file : params.text_list("files")) s.params.apply_file(sumo::resolve_beside(path, file));
     const YAML::Node given = params.node("set");
     if (given) set.reset(given);  // (assigning an absent node would throw)
     params.finish();

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdlib>
 #include <filesystem>
+#include <utility>
 
 #include "scenario/input_error.hpp"
 #include "scenario/take_over.hpp"
@@ -30,14 +32,10 @@ std::optional<int> known_departure_lane(const sumo::RouteFileVehicle& v, const s
   return std::nullopt;
 }
 
+constexpr double kSublaneWidth = 0.1;  // [m] SUMO --lateral-resolution when signalsim needs the sublane model
+
 // Waiting for a taken-over vehicle: until the sumocfg's end, else a day.
 double take_over_deadline(const Scenario& s) { return s.sumo.end ? *s.sumo.end : s.sumo.begin + 86400.0; }
-
-std::string joined(const std::vector<std::string>& edges) {
-  std::string out;
-  for (const std::string& e : edges) out += (out.empty() ? "" : " ") + e;
-  return out;
-}
 
 }  // namespace
 
@@ -51,18 +49,30 @@ sumo::SessionConfig session_config(const Scenario& scenario, const sumo::RoutePl
   if (connect && !scenario.sumo.sumo_args.empty())
     throw InputError(scenario.path, 0, "sumo_args cannot reach a SUMO someone else started (--connect): give the "
                                        "options to that sumo");
+  if (connect && !scenario.obstacles.empty())
+    throw InputError(scenario.path, 0, "obstacles would be vehicles in the simulation of every client of the SUMO at " +
+                                           context.backend.host + ":" + std::to_string(context.backend.port) +
+                                           "; --connect controls only the ego");
   sumo::SessionConfig config;
   config.backend = context.backend;
   config.net = scenario.net;
   config.route_files = scenario.sumo.route_files;
   config.additional = scenario.additional;
   const bool gui = context.backend.kind == sumo::BackendKind::Gui;
+  std::optional<double> user_lateral_resolution;  // a user's own sublane model, for their traffic too
   try {
-    config.extra_args =
-        sumo::sumo_tokens(scenario.sumo.cfg_options, scenario.sumo.sumocfg, context.out_dir, scenario.sumo.cfg_dir, gui);
-    const auto own = sumo::sumo_tokens(sumo::parse_sumo_tokens(scenario.sumo.sumo_args), "sumo_args", context.out_dir,
-                                       scenario.sumo.scenario_dir, gui);
-    config.extra_args.insert(config.extra_args.end(), own.begin(), own.end());
+    // sumo_args win over the sumocfg's options of the same name (SUMO refuses an option twice).
+    const std::vector<sumo::SumoOption> own = sumo::parse_sumo_tokens(scenario.sumo.sumo_args);
+    std::vector<sumo::SumoOption> cfg = scenario.sumo.cfg_options;
+    std::erase_if(cfg, [&](const sumo::SumoOption& c) {
+      return std::any_of(own.begin(), own.end(), [&](const sumo::SumoOption& o) { return o.name == c.name; });
+    });
+    for (const std::vector<sumo::SumoOption>* options : {&std::as_const(cfg), &own})
+      for (const sumo::SumoOption& o : *options)
+        if (o.name == "lateral-resolution") user_lateral_resolution = std::atof(o.value.c_str());
+    config.extra_args = sumo::sumo_tokens(cfg, scenario.sumo.sumocfg, context.out_dir, scenario.sumo.cfg_dir, gui);
+    const auto tokens = sumo::sumo_tokens(own, "sumo_args", context.out_dir, scenario.sumo.scenario_dir, gui);
+    config.extra_args.insert(config.extra_args.end(), tokens.begin(), tokens.end());
   } catch (const sumo::SumoOptionError& e) {
     throw InputError(scenario.path, 0, e.what());
   }
@@ -84,8 +94,16 @@ sumo::SessionConfig session_config(const Scenario& scenario, const sumo::RoutePl
   config.emergency_decel = scenario.ego.emergency_decel;
   // SUMO never changes lanes on its own: signalsim drives every lane change (plan_lateral).
   config.keep_planned_lanes = true;
-  // signalsim drives lateral motion with sublane offsets re-commanded every step (spec SUMO §4).
-  if (lateral.active()) config.lateral_resolution = 0.1;
+  // signalsim drives lateral motion with sublane offsets re-commanded every step (spec SUMO §4):
+  // SUMO's sublane model, the user's own resolution if they run one.
+  if (lateral.active()) config.lateral_resolution = kSublaneWidth;
+  if (user_lateral_resolution) {
+    if (lateral.active() && *user_lateral_resolution <= 0.0)
+      throw InputError(scenario.path, 0, "the scenario drives lateral motion (a lane change or another maneuver), "
+                                         "which needs SUMO's sublane model, but its SUMO options set "
+                                         "lateral-resolution " + std::to_string(*user_lateral_resolution));
+    config.lateral_resolution = *user_lateral_resolution;
+  }
   config.depart_pos_lat = lateral.depart_offset;
   for (const ObstacleSpec& o : scenario.obstacles) config.standing.push_back({o.id, o.edge, o.lane, o.pos, o.length});
   // SUMO driving: its own lane changes; maneuvers (a pull out's depart offset included) are signalsim's.
@@ -106,7 +124,15 @@ PlannedRun plan_run(const Scenario& scenario, const sumo::NetIndex& net) {
     planned.departure_known = lane.has_value();
     if (lane && *lane >= 0) planned.scenario.ego.depart_lane = *lane;  // plan from where it will be
   }
-  planned.plan = plan_route(planned.scenario, net);
+  try {
+    planned.plan = plan_route(planned.scenario, net);
+  } catch (const InputError& e) {
+    // A taken-over vehicle's route is its route file's: the fault is named there.
+    if (!planned.taken_over || e.file() != planned.scenario.path) throw;
+    const sumo::RouteFileVehicle& v = *planned.taken_over;
+    throw InputError(v.file, v.line, "<" + v.kind + "> '" + v.id + "' (ego.id of " + planned.scenario.path +
+                                         "): " + e.reason());
+  }
   return planned;
 }
 
@@ -120,6 +146,7 @@ PlannedRun plan_run(const Scenario& scenario, sumo::RoutePlan plan) {
 
 StartedRun start_run(PlannedRun planned, const sumo::NetIndex& net, const RunContext& context) {
   StartedRun run;
+  run.out_dir = context.out_dir;
   run.scenario = std::move(planned.scenario);
   const std::optional<sumo::RouteFileVehicle>& definition = planned.taken_over;
   sumo::RoutePlan& plan = planned.plan;
@@ -128,14 +155,20 @@ StartedRun start_run(PlannedRun planned, const sumo::NetIndex& net, const RunCon
   config = session_config(run.scenario, plan, run.lateral, context);
   // A departure lane SUMO chooses at insertion (random, free, ...) may need a lane change at once:
   // signalsim drives it with the sublane model, which must be on from the start.
-  if (definition && !planned.departure_known && config.lateral_resolution <= 0.0) config.lateral_resolution = 0.1;
+  if (definition && !planned.departure_known && config.lateral_resolution <= 0.0) config.lateral_resolution = kSublaneWidth;
+  if (context.backend.kind == sumo::BackendKind::Connect &&
+      (!run.scenario.sumo.route_files.empty() || !run.scenario.additional.empty() ||
+       !run.scenario.sumo.cfg_options.empty()))
+    run.notes.push_back("--connect: the scenario's route files, additional files and sumocfg options are the "
+                        "server's business; signalsim did not load them (the server reports its own in "
+                        "sumo.server_options)");
   run.session = sumo::open_session(config);
   if (definition) {
     const sumo::EgoVehicle& vehicle = run.session->ego_vehicle();
     if (vehicle.route != run.scenario.ego.route)
       throw InputError(definition->file, definition->line,
-                       "vehicle '" + vehicle.id + "' drives [" + joined(vehicle.route) + "] in SUMO, not the route [" +
-                           joined(run.scenario.ego.route) + "] of its route file (did the SUMO at the other end "
+                       "vehicle '" + vehicle.id + "' drives [" + edges_text(vehicle.route) + "] in SUMO, not the route [" +
+                           edges_text(run.scenario.ego.route) + "] of its route file (did the SUMO at the other end "
                            "load other route files?)");
     // SUMO's values for the vehicle; its lanes planned from the lane it departed on.
     run.scenario = with_taken_over_ego(run.scenario, vehicle, *definition);

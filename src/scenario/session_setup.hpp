@@ -62,6 +62,8 @@ struct StartedRun {
   sumo::RoutePlan plan;    ///< the route as driven
   LateralPlan lateral;
   sumo::SessionConfig config;  ///< what SUMO was started with
+  std::vector<std::string> notes;  ///< what of the scenario the back-end did not apply, and why
+  std::string out_dir;             ///< the run's output directory (RunContext)
   std::unique_ptr<sumo::SumoSession> session;
 };
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 
 #include "planning/speed_limit_planner.hpp"
@@ -118,7 +119,10 @@ RunRecord drive(const StartedRun& run, const sumo::NetIndex& net) {
     record.sumo.endpoint = run.config.backend.host + ":" + std::to_string(run.config.backend.port);
   record.sumo.ego = session.ego_vehicle();
   record.sumo.args = run.config.extra_args;
+  record.sumo.out_dir = run.out_dir;
   record.sumo.log = run.config.log_file;
+  record.sumo.server_options = session.server_options();
+  record.sumo.notes = run.notes;
   BehaviorStageConfig behavior_config;
   behavior_config.path_forward = scenario.params.number("forward_path_length");
   behavior_config.route_length = route.length();
@@ -147,7 +151,9 @@ RunRecord drive(const StartedRun& run, const sumo::NetIndex& net) {
   const auto light_state = [&session](const std::string& tls) { return session.light_state(tls); };
 
   for (const auto& [tls, offset] : scenario.light_offsets) session.shift_light_program(tls, offset);
-  const double end_time = session.time() + scenario.duration;
+  // `duration` from the ego's departure, and a sumocfg's `end`: whichever comes first.
+  const double end_time = std::min(session.time() + scenario.duration,
+                                   scenario.sumo.end.value_or(std::numeric_limits<double>::infinity()));
   std::size_t hint = 0;
   double last_s = scenario.ego.depart_pos;
   Blinker previous_blinker = Blinker::None;

@@ -4,23 +4,13 @@
 #include <sstream>
 
 #include "scenario/input_error.hpp"
+#include "sumo/number_parsing.hpp"
+#include "sumo/file_paths.hpp"
 #include "sumo/sumocfg.hpp"
 
 namespace signalsim {
 namespace fs = std::filesystem;
 namespace {
-
-std::string resolve_from(const std::string& dir, const std::string& path) {
-  const fs::path p(path);
-  if (p.is_absolute()) return p.lexically_normal().string();
-  return (fs::path(dir) / p).lexically_normal().string();
-}
-
-std::string number_text(double v) {
-  std::ostringstream out;
-  out << v;
-  return out.str();
-}
 
 // The sumo_args tokens, checked now so that a refused option stops the run before SUMO starts.
 std::vector<std::string> read_sumo_args(const YamlFields& top, const std::string& path) {
@@ -41,7 +31,7 @@ void read_simulation_keys(const YamlFields& top, const std::string& path, Scenar
   s.sumo.scenario_dir = dir;
   std::optional<sumo::SumoConfigFile> cfg;
   if (top.has("sumocfg")) {
-    s.sumo.sumocfg = resolve_from(dir, top.text("sumocfg"));
+    s.sumo.sumocfg = sumo::resolve_beside(path, top.text("sumocfg"));
     if (!fs::is_regular_file(s.sumo.sumocfg)) top.fail("sumocfg", "file '" + s.sumo.sumocfg + "' not found");
     cfg = sumo::read_sumocfg(s.sumo.sumocfg);  // NetError "<cfg>:<line>: ..." for a bad file
     s.sumo.cfg_dir = cfg->dir;
@@ -55,7 +45,7 @@ void read_simulation_keys(const YamlFields& top, const std::string& path, Scenar
 
   // The net: the scenario's own key wins over the sumocfg's net-file.
   if (top.has("net")) {
-    s.net = resolve_from(dir, top.text("net"));
+    s.net = sumo::resolve_beside(path, top.text("net"));
     if (!fs::is_regular_file(s.net)) top.fail("net", "net file '" + s.net + "' not found");
     if (cfg && cfg->net) overridden("net-file", *cfg->net, "net", s.net);
   } else if (cfg && cfg->net) {
@@ -75,11 +65,11 @@ void read_simulation_keys(const YamlFields& top, const std::string& path, Scenar
     for (const std::string& f : cfg->additional) used("additional-files " + f);
   }
   for (const std::string& r : top.text_list("routes")) {
-    in.route_files.push_back(resolve_from(dir, r));
+    in.route_files.push_back(sumo::resolve_beside(path, r));
     if (!fs::is_regular_file(in.route_files.back())) top.fail("routes", "file '" + in.route_files.back() + "' not found");
   }
   for (const std::string& a : top.text_list("additional")) {
-    s.additional.push_back(resolve_from(dir, a));
+    s.additional.push_back(sumo::resolve_beside(path, a));
     if (!fs::is_regular_file(s.additional.back())) top.fail("additional", "file '" + s.additional.back() + "' not found");
   }
 
@@ -87,8 +77,8 @@ void read_simulation_keys(const YamlFields& top, const std::string& path, Scenar
   s.step_length = top.number("step_length", cfg && cfg->step_length ? *cfg->step_length : 0.1, 0.001, 1.0);
   s.seed = top.integer("seed", cfg && cfg->seed ? *cfg->seed : 1, 0, 2147483647);
   if (cfg && cfg->step_length) {
-    if (top.has("step_length")) overridden("step-length", number_text(*cfg->step_length), "step_length", number_text(s.step_length));
-    else used("step-length " + number_text(s.step_length));
+    if (top.has("step_length")) overridden("step-length", sumo::short_number(*cfg->step_length), "step_length", sumo::short_number(s.step_length));
+    else used("step-length " + sumo::short_number(s.step_length));
   }
   if (cfg && cfg->seed) {
     if (top.has("seed")) overridden("seed", std::to_string(*cfg->seed), "seed", std::to_string(s.seed));
@@ -96,12 +86,14 @@ void read_simulation_keys(const YamlFields& top, const std::string& path, Scenar
   }
   if (cfg && cfg->begin) {
     in.begin = *cfg->begin;
-    used("begin " + number_text(in.begin));
+    used("begin " + sumo::short_number(in.begin));
   }
   if (cfg && cfg->end) {
-    if (*cfg->end <= in.begin) throw InputError(s.sumo.sumocfg, 0, "end " + number_text(*cfg->end) + " is not after begin");
+    if (*cfg->end <= in.begin)
+      throw InputError(s.sumo.sumocfg, cfg->end_line, "end " + sumo::short_number(*cfg->end) + " is not after begin " +
+                                                          sumo::short_number(in.begin));
     in.end = *cfg->end;
-    used("end " + number_text(*in.end));
+    used("end " + sumo::short_number(*in.end));
   }
   // duration: the scenario's; else until the sumocfg's end; else 60 s.
   const double default_duration = in.end ? *in.end - in.begin : 60.0;

@@ -15,6 +15,7 @@
 
 #include "scenario/behavior_stage.hpp"
 #include "scenario/input_error.hpp"
+#include "sumo/file_paths.hpp"
 #include "scenario/metrics.hpp"
 #include "scenario/route_planning.hpp"
 #include "scenario/take_over.hpp"
@@ -43,12 +44,6 @@ const std::vector<std::string>& trailing_columns() {
 
 bool contains(const std::vector<std::string>& list, const std::string& item) {
   return std::find(list.begin(), list.end(), item) != list.end();
-}
-
-std::string resolve_relative(const std::string& file, const std::string& path) {
-  const fs::path p(path);
-  if (p.is_absolute()) return p.lexically_normal().string();
-  return (fs::path(file).parent_path() / p).lexically_normal().string();
 }
 
 // A value as the text `--set key=<text>` parses back to the same YAML (flow style for lists).
@@ -229,11 +224,11 @@ Sweep load_sweep(const std::string& path) {
   s.scenarios_line = top.line_of("scenarios");
   std::vector<std::string> paths;
   if (scenarios.IsScalar()) {
-    paths.push_back(resolve_relative(path, scenarios.Scalar()));
+    paths.push_back(sumo::resolve_beside(path, scenarios.Scalar()));
   } else if (scenarios.IsSequence() && scenarios.size() > 0) {
     for (const YAML::Node& item : scenarios) {
       if (!item.IsScalar()) throw InputError(path, yaml_line(item), "scenarios: expected file or directory paths");
-      paths.push_back(resolve_relative(path, item.Scalar()));
+      paths.push_back(sumo::resolve_beside(path, item.Scalar()));
     }
   } else {
     top.fail("scenarios", "expected a path or a non-empty list of scenario files or directories");
@@ -294,7 +289,7 @@ Sweep load_sweep(const std::string& path) {
     }
   }
   if (top.has("timeout")) s.timeout = top.required_number("timeout", 0.1, 86400.0);
-  if (top.has("out")) s.out = resolve_relative(path, top.text("out"));
+  if (top.has("out")) s.out = sumo::resolve_beside(path, top.text("out"));
   if (top.has("plot")) {
     YamlFields plot(top.node("plot"), path, "plot");
     s.plot.metric_line = plot.line_of("metric");  // the line of plot: when a key is not given

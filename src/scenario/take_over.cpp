@@ -4,28 +4,17 @@
 #include <sstream>
 
 #include "scenario/input_error.hpp"
+#include "sumo/number_parsing.hpp"
 
 namespace signalsim {
 namespace {
 
 std::string where(const sumo::RouteFileVehicle& v) { return v.file + ":" + std::to_string(v.line); }
 
-std::string joined(const std::vector<std::string>& edges) {
-  std::string out;
-  for (const std::string& e : edges) out += (out.empty() ? "" : " ") + e;
-  return out;
-}
-
 // The scenario file's line of an ego key (0 when it came from --set or is not given).
 int line_of(const Scenario& s, const std::string& key) {
   const auto it = s.ego.lines.find(key);
   return it == s.ego.lines.end() ? 0 : it->second;
-}
-
-std::string number(double v) {
-  std::ostringstream out;
-  out << v;
-  return out.str();
 }
 
 }  // namespace
@@ -53,7 +42,7 @@ std::optional<sumo::RouteFileVehicle> resolve_route_file_ego(Scenario& scenario)
   if (!v)
     throw InputError(scenario.path, line_of(scenario, "id"),
                      "ego.id '" + id + "': no <vehicle>, <trip> or <flow> of the route files defines it (" +
-                         joined(files) + ")");
+                         edges_text(files) + ")");
   if (v->edges.empty())
     throw InputError(v->file, v->line,
                      "<" + v->kind + "> '" + v->id + "' (ego.id) has no edges of its own (a trip, or a route "
@@ -69,15 +58,15 @@ std::optional<sumo::RouteFileVehicle> resolve_route_file_ego(Scenario& scenario)
   if (std::istringstream(v->depart) >> depart; !v->depart.empty() && depart < scenario.sumo.begin)
     throw InputError(v->file, v->line,
                      "<" + v->kind + "> '" + v->id + "' (ego.id) departs at " + v->depart + " s, before the simulation "
-                     "begins (" + number(scenario.sumo.begin) + " s): SUMO never inserts it");
+                     "begins (" + sumo::short_number(scenario.sumo.begin) + " s): SUMO never inserts it");
   if (scenario.sumo.end && !v->depart.empty() && depart >= *scenario.sumo.end)
     throw InputError(v->file, v->line,
                      "<" + v->kind + "> '" + v->id + "' (ego.id) departs at " + v->depart + " s, at or after the end of "
-                     "the simulation (" + number(*scenario.sumo.end) + " s)");
+                     "the simulation (" + sumo::short_number(*scenario.sumo.end) + " s)");
   if (scenario.ego.given.count("route") && scenario.ego.route != v->edges)
     throw InputError(scenario.path, line_of(scenario, "route"),
-                     "ego.route [" + joined(scenario.ego.route) + "] contradicts the route of '" + id + "' in " +
-                         where(*v) + " [" + joined(v->edges) + "]");
+                     "ego.route [" + edges_text(scenario.ego.route) + "] contradicts the route of '" + id + "' in " +
+                         where(*v) + " [" + edges_text(v->edges) + "]");
   scenario.ego.route = v->edges;
   return *v;
 }
@@ -89,9 +78,9 @@ Scenario with_taken_over_ego(const Scenario& scenario, const sumo::EgoVehicle& v
   // A given key must repeat SUMO's value (to 1 mm, 1 mm/s); otherwise SUMO's value is the ego's.
   const auto take = [&](const char* key, double& field, double sumo_value) {
     if (ego.given.count(key) && std::abs(field - sumo_value) > 1e-3)
-      throw InputError(scenario.path, line_of(scenario, key), std::string("ego.") + key + " " + number(field) + " contradicts vehicle '" +
+      throw InputError(scenario.path, line_of(scenario, key), std::string("ego.") + key + " " + sumo::short_number(field) + " contradicts vehicle '" +
                                              vehicle.id + "' of " + where(definition) + ": its vType '" + vehicle.type +
-                                             "' has " + number(sumo_value));
+                                             "' has " + sumo::short_number(sumo_value));
     field = sumo_value;
   };
   take("length", ego.length, vehicle.length);
@@ -101,12 +90,18 @@ Scenario with_taken_over_ego(const Scenario& scenario, const sumo::EgoVehicle& v
   take("emergency_decel", ego.emergency_decel, vehicle.emergency_decel);
   if (!ego.given.count("base_link_to_front")) ego.base_link_to_front = kBaseLinkShare * ego.length;
   if (ego.base_link_to_front > ego.length)
-    throw InputError(scenario.path, 0, "ego.base_link_to_front " + number(ego.base_link_to_front) +
-                                           " m is longer than vehicle '" + vehicle.id + "' (" + number(ego.length) + " m)");
+    throw InputError(scenario.path, 0, "ego.base_link_to_front " + sumo::short_number(ego.base_link_to_front) +
+                                           " m is longer than vehicle '" + vehicle.id + "' (" + sumo::short_number(ego.length) + " m)");
   ego.depart_lane = vehicle.depart_lane;
   ego.depart_pos = vehicle.depart_pos;
   ego.depart_speed = vehicle.depart_speed;
   return s;
+}
+
+std::string edges_text(const std::vector<std::string>& edges) {
+  std::string out;
+  for (const std::string& e : edges) out += (out.empty() ? "" : " ") + e;
+  return out;
 }
 
 std::map<std::string, std::string> ego_sources(const Scenario& scenario, const std::string& vehicle_type) {

@@ -25,6 +25,9 @@ std::optional<sumo::RouteFileVehicle> resolve_route_file_ego(Scenario& scenario)
 Scenario with_taken_over_ego(const Scenario& scenario, const sumo::EgoVehicle& vehicle,
                              const sumo::RouteFileVehicle& definition);
 
+/// Edge ids as messages write them: "a b c".
+std::string edges_text(const std::vector<std::string>& edges);
+
 /// Where each ego value of the run came from ("scenario", "default", "vType 'passenger1'", ...), by
 /// EgoSpec key, for summary.json.
 std::map<std::string, std::string> ego_sources(const Scenario& scenario, const std::string& vehicle_type);

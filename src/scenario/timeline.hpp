@@ -105,7 +105,10 @@ struct RunSumoInfo {
   std::string endpoint;             ///< connect: host:port
   sumo::EgoVehicle ego;             ///< as SUMO had it at departure
   std::vector<std::string> args;    ///< the options passed through (sumo_args, the sumocfg's)
+  std::string out_dir;              ///< the run's output directory, where relative outputs landed
   std::string log;                  ///< SUMO's log file, empty when none
+  std::vector<std::pair<std::string, std::string>> server_options;  ///< connect: the server's own
+  std::vector<std::string> notes;   ///< what of the scenario the back-end did not apply, and why
   sumo::SumoLogCounts log_counts;   ///< counted after SUMO closed
 };
 

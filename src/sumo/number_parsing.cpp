@@ -1,5 +1,8 @@
 #include "sumo/number_parsing.hpp"
 
+#include <iomanip>
+#include <sstream>
+
 #include <charconv>
 #include <cmath>
 #include <system_error>
@@ -36,5 +39,17 @@ std::optional<double> parse_double(std::string_view text) {
 }
 
 std::optional<int> parse_int(std::string_view text) { return parse_whole<int>(text); }
+
+std::string exact_number(double v) {
+  std::ostringstream out;
+  out << std::setprecision(17) << v;
+  return out.str();
+}
+
+std::string short_number(double v) {
+  std::ostringstream out;
+  out << v;
+  return out.str();
+}
 
 }  // namespace signalsim::sumo

@@ -3,10 +3,12 @@
 // or libtraci (over a socket) have the same API in two namespaces whose headers cannot be included in
 // one translation unit (spec SUMO §1), so this header includes neither. session_embedded.cpp and
 // session_traci.cpp include their library, define Api and instantiate this template; they own only
-// how SUMO is started and closed.
+// how SUMO is started and closed. Include it after <libsumo/libsumo.h> or <libsumo/libtraci.h>
+// (it uses their shared types and constants, libsumo::TraCIResults, libsumo::VAR_*).
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -15,15 +17,10 @@
 #include <vector>
 
 #include "sumo/interruption.hpp"
+#include "sumo/number_parsing.hpp"
 #include "sumo/sumo_session.hpp"
 
 namespace signalsim::sumo {
-
-inline std::string sumo_number(double v) {
-  std::ostringstream out;
-  out << std::setprecision(17) << v;
-  return out.str();
-}
 
 inline bool contains_id(const std::vector<std::string>& ids, const std::string& id) {
   return std::find(ids.begin(), ids.end(), id) != ids.end();
@@ -48,9 +45,15 @@ class SessionImpl : public SumoSession {
     throw_if_interrupted();
     try {
       Api::Simulation::step();
-      for (const auto& c : Api::Simulation::getCollisions())
-        if (c.collider == ego_ || c.victim == ego_) ++ego_collisions_;
-      const bool alive = !contains_id(Api::Simulation::getArrivedIDList(), ego_);
+      const libsumo::TraCIResults sim = subscribed_ ? Api::Simulation::getSubscriptionResults() : libsumo::TraCIResults();
+      // Collisions are rare: their details are asked for only when the step had some.
+      if (!subscribed_ || subscribed_int(sim, libsumo::VAR_COLLIDING_VEHICLES_NUMBER, 1) > 0)
+        for (const auto& c : Api::Simulation::getCollisions())
+          if (c.collider == ego_ || c.victim == ego_) ++ego_collisions_;
+      const auto arrived = sim.find(libsumo::VAR_ARRIVED_VEHICLES_IDS);
+      const bool alive = arrived != sim.end()
+                             ? !contains_id(static_cast<const libsumo::TraCIStringList&>(*arrived->second).value, ego_)
+                             : !contains_id(Api::Simulation::getArrivedIDList(), ego_);
       if (!alive) ego_present_ = false;
       on_stepped();
       return alive;
@@ -62,12 +65,36 @@ class SessionImpl : public SumoSession {
     }
   }
 
-  double time() const override { return guarded("the time", [] { return Api::Simulation::getTime(); }); }
+  double time() const override {
+    return guarded("the time", [this] {
+      if (subscribed_) {
+        const libsumo::TraCIResults sim = Api::Simulation::getSubscriptionResults();
+        if (const auto it = sim.find(libsumo::VAR_TIME); it != sim.end())
+          return static_cast<const libsumo::TraCIDouble&>(*it->second).value;
+      }
+      return Api::Simulation::getTime();
+    });
+  }
 
+  // The ego's state comes with the step's answer (a TraCI subscription: one round trip a step
+  // instead of nine over a socket); before the first subscribed step it is asked for directly.
   EgoState ego() const override {
     return guarded("the ego", [this] {
+      const libsumo::TraCIResults v = subscribed_ ? Api::Vehicle::getSubscriptionResults(ego_) : libsumo::TraCIResults();
       EgoState s;
-      s.time = Api::Simulation::getTime();
+      s.time = time();
+      if (v.size() == kEgoVariables.size()) {
+        s.edge = text(v, libsumo::VAR_ROAD_ID);
+        s.lane = text(v, libsumo::VAR_LANE_ID);
+        s.lane_pos = number(v, libsumo::VAR_LANEPOSITION);
+        s.speed = number(v, libsumo::VAR_SPEED);
+        s.accel = number(v, libsumo::VAR_ACCELERATION);
+        const auto& p = static_cast<const libsumo::TraCIPosition&>(*v.at(libsumo::VAR_POSITION));
+        s.x = p.x;
+        s.y = p.y;
+        s.lateral_offset = number(v, libsumo::VAR_LANEPOSITION_LAT);
+        return s;
+      }
       s.edge = Api::Vehicle::getRoadID(ego_);
       s.lane = Api::Vehicle::getLaneID(ego_);
       s.lane_pos = Api::Vehicle::getLanePosition(ego_);
@@ -82,7 +109,14 @@ class SessionImpl : public SumoSession {
   }
 
   int ego_signals() const override {
-    return guarded("the ego's signals", [this] { return Api::Vehicle::getSignals(ego_); });
+    return guarded("the ego's signals", [this] {
+      if (subscribed_) {
+        const libsumo::TraCIResults v = Api::Vehicle::getSubscriptionResults(ego_);
+        if (const auto it = v.find(libsumo::VAR_SIGNALS); it != v.end())
+          return static_cast<const libsumo::TraCIInt&>(*it->second).value;
+      }
+      return Api::Vehicle::getSignals(ego_);
+    });
   }
 
   void command(int signal_mask, double speed) override {
@@ -122,7 +156,7 @@ class SessionImpl : public SumoSession {
       if (reference_index < 0 || ego_index < 0) return in_lane;
       return in_lane + centre_distance(reference_edge, reference_index, ego_index);
     } catch (const std::exception& e) {
-      throw SumoError("cannot measure the ego's offset from lane '" + reference_lane_id + "': " + e.what());
+      throw SumoError("cannot measure the ego's offset from lane '" + reference_lane_id + "': " + failure_reason(e));
     }
   }
 
@@ -156,7 +190,7 @@ class SessionImpl : public SumoSession {
     } catch (const SumoError&) {
       throw;
     } catch (const std::exception& e) {
-      throw SumoError("SUMO refused a lateral offset from lane '" + reference_lane_id + "': " + e.what());
+      throw SumoError("SUMO refused a lateral offset from lane '" + reference_lane_id + "': " + failure_reason(e));
     }
   }
 
@@ -169,7 +203,7 @@ class SessionImpl : public SumoSession {
       }
       return out;
     } catch (const std::exception& e) {
-      throw SumoError("SUMO cannot list the vehicles on lane '" + lane_id + "': " + e.what());
+      throw SumoError("SUMO cannot list the vehicles on lane '" + lane_id + "': " + failure_reason(e));
     }
   }
 
@@ -177,7 +211,7 @@ class SessionImpl : public SumoSession {
     try {
       return Api::TrafficLight::getRedYellowGreenState(tls_id);
     } catch (const std::exception& e) {
-      throw SumoError("SUMO does not know traffic light '" + tls_id + "': " + e.what());
+      throw SumoError("SUMO cannot report traffic light '" + tls_id + "': " + failure_reason(e));
     }
   }
 
@@ -188,7 +222,7 @@ class SessionImpl : public SumoSession {
         for (const auto& phase : logic.phases) states.push_back(phase->state);
       return states;
     } catch (const std::exception& e) {
-      throw SumoError("SUMO does not know traffic light '" + tls_id + "': " + e.what());
+      throw SumoError("SUMO cannot report traffic light '" + tls_id + "': " + failure_reason(e));
     }
   }
 
@@ -216,7 +250,7 @@ class SessionImpl : public SumoSession {
         return;
       }
     } catch (const std::exception& e) {
-      throw SumoError("cannot shift the program of traffic light '" + tls_id + "': " + e.what());
+      throw SumoError("cannot shift the program of traffic light '" + tls_id + "': " + failure_reason(e));
     }
   }
 
@@ -252,7 +286,7 @@ class SessionImpl : public SumoSession {
       if (!departed) {
         if (config_.take_over.empty())
           throw SumoError("the ego could not be inserted within 600 steps (its departure lane stays blocked)");
-        throw SumoError("vehicle '" + ego_ + "' (ego.id) did not depart by t=" + sumo_number(config_.take_over_until) +
+        throw SumoError("vehicle '" + ego_ + "' (ego.id) did not depart by t=" + exact_number(config_.take_over_until) +
                         " s: it is not in the route files SUMO loaded, or departs later");
       }
       take_control();
@@ -327,11 +361,11 @@ class SessionImpl : public SumoSession {
       Api::Route::add(standing_route, {v.edge});
       Api::VehicleType::copy("DEFAULT_VEHTYPE", standing_type);
       Api::VehicleType::setLength(standing_type, v.length);
-      Api::Vehicle::add(v.id, standing_route, standing_type, "now", std::to_string(v.lane), sumo_number(v.pos), "0");
+      Api::Vehicle::add(v.id, standing_route, standing_type, "now", std::to_string(v.lane), exact_number(v.pos), "0");
       Api::Vehicle::setStop(v.id, v.edge, v.pos, v.lane, 1e7);
     }
-    Api::Vehicle::add(ego_, route, type, "now", std::to_string(config_.depart_lane), sumo_number(config_.depart_pos),
-                      sumo_number(config_.depart_speed));
+    Api::Vehicle::add(ego_, route, type, "now", std::to_string(config_.depart_lane), exact_number(config_.depart_pos),
+                      exact_number(config_.depart_speed));
     ego_present_ = true;  // from now on release_ego() removes it, departed or still waiting
   }
 
@@ -375,6 +409,10 @@ class SessionImpl : public SumoSession {
     vehicle_.depart_speed = Api::Vehicle::getSpeed(ego_);
     on_ego_departed();
     if (config_.depart_pos_lat != 0.0 && !config_.sumo_drives) move_to_depart_offset();
+    Api::Vehicle::subscribe(ego_, std::vector<int>(kEgoVariables.begin(), kEgoVariables.end()));
+    Api::Simulation::subscribe(std::vector<int>{libsumo::VAR_TIME, libsumo::VAR_ARRIVED_VEHICLES_IDS,
+                                                libsumo::VAR_COLLIDING_VEHICLES_NUMBER});
+    subscribed_ = true;
   }
 
   void apply_speed_mode() {
@@ -457,6 +495,21 @@ class SessionImpl : public SumoSession {
   mutable std::unordered_map<std::string, std::string> lane_edges_;
   mutable std::unordered_map<std::string, bool> permits_;
   EgoVehicle vehicle_;
+  static constexpr std::array<int, 8> kEgoVariables = {
+      libsumo::VAR_ROAD_ID,      libsumo::VAR_LANE_ID,  libsumo::VAR_LANEPOSITION,     libsumo::VAR_SPEED,
+      libsumo::VAR_ACCELERATION, libsumo::VAR_POSITION, libsumo::VAR_LANEPOSITION_LAT, libsumo::VAR_SIGNALS};
+  static const std::string& text(const libsumo::TraCIResults& r, int variable) {
+    return static_cast<const libsumo::TraCIString&>(*r.at(variable)).value;
+  }
+  static double number(const libsumo::TraCIResults& r, int variable) {
+    return static_cast<const libsumo::TraCIDouble&>(*r.at(variable)).value;
+  }
+  static int subscribed_int(const libsumo::TraCIResults& r, int variable, int fallback) {
+    const auto it = r.find(variable);
+    return it == r.end() ? fallback : static_cast<const libsumo::TraCIInt&>(*it->second).value;
+  }
+
+  bool subscribed_ = false;     // the ego's and the simulation's variables come with each step
   mutable std::string vclass_;  // the ego's vehicle class, asked once
   bool ego_present_ = false;  // inserted (or taken over) and not arrived: release_ego() has work
   int ego_collisions_ = 0;

@@ -41,12 +41,6 @@ constexpr const char* kView = "View #0";
 constexpr double kGuiStartTimeout = 30.0;  // [s] for sumo-gui to load the net and listen
 constexpr double kGuiZoom = 1500.0;        // [%] about 60 m across the view: the ego and its blinkers
 
-std::string short_number(double v) {
-  std::ostringstream out;
-  out << v;
-  return out.str();
-}
-
 // Whether the user's options already give `name` (SUMO refuses an option given twice).
 bool gives_option(const std::vector<std::string>& args, const std::string& name) {
   return std::find(args.begin(), args.end(), "--" + name) != args.end();
@@ -136,6 +130,7 @@ class TraciSession final : public SessionImpl<LibtraciApi> {
   }
 
   BackendKind backend() const override { return config_.backend.kind; }
+  std::vector<std::pair<std::string, std::string>> server_options() const override { return server_options_; }
   using SessionImpl<LibtraciApi>::insert_ego;
 
  protected:
@@ -209,7 +204,7 @@ class TraciSession final : public SessionImpl<LibtraciApi> {
     // SUMO 1.15 waits --delay x step length between steps: --gui-delay MS is per step.
     const double delay = config_.backend.gui_delay_ms / config_.step_length;
     argv.insert(argv.end(), {"--remote-port", std::to_string(port), "--start", "true", "--quit-on-end", "true",
-                             "--delay", sumo_number(delay)});
+                             "--delay", exact_number(delay)});
     if (!gives_option(config_.extra_args, "window-size")) argv.insert(argv.end(), {"--window-size", "1024,768"});
     gui_output_.path = (std::filesystem::temp_directory_path() /
                         ("signalsim-gui-" + std::to_string(getpid()) + "-" + std::to_string(port) + ".txt")).string();
@@ -280,6 +275,9 @@ class TraciSession final : public SessionImpl<LibtraciApi> {
         throw SumoError("the scenario's step_length " + short_number(config_.step_length) +
                         " s differs from the step length of SUMO at " + endpoint(b) + ", " +
                         short_number(server_step) + " s (Simulation::getDeltaT)");
+      for (const char* option : {"net-file", "route-files", "additional-files", "seed", "collision.action",
+                                 "time-to-teleport", "lateral-resolution"})
+        server_options_.emplace_back(option, libtraci::Simulation::getOption(option));
       // Lateral motion needs SUMO's sublane model, which only the server's start can switch on.
       if (config_.lateral_resolution > 0.0 &&
           !(parse_number(libtraci::Simulation::getOption("lateral-resolution")) > 0.0))
@@ -313,6 +311,7 @@ class TraciSession final : public SessionImpl<LibtraciApi> {
   TempFile gui_output_;             // destroyed after gui_ (declared before it)
   std::unique_ptr<SumoProcess> gui_;
   bool connected_ = false;
+  std::vector<std::pair<std::string, std::string>> server_options_;  // connect: as the server reports them
   // A busy sumo-gui may draw the first frame after a view change without the vehicles: each picture
   // is taken on two consecutive steps, the second one kept.
   static constexpr int kShotsPerPicture = 2;

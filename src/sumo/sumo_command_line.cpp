@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <sstream>
 
-#include "sumo/session_impl.hpp"
+#include "sumo/number_parsing.hpp"
 
 namespace signalsim::sumo {
 namespace {
@@ -24,9 +24,9 @@ bool sets(const std::vector<std::string>& extra, const std::string& name) {
 }  // namespace
 
 std::vector<std::string> sumo_command_line(const SessionConfig& config, const std::string& binary) {
-  std::vector<std::string> args = {binary, "-n", config.net, "--step-length", sumo_number(config.step_length),
+  std::vector<std::string> args = {binary, "-n", config.net, "--step-length", exact_number(config.step_length),
                                    "--seed", std::to_string(config.seed), "--collision.action", "warn"};
-  if (config.begin != 0.0) args.insert(args.end(), {"--begin", sumo_number(config.begin)});
+  if (config.begin != 0.0) args.insert(args.end(), {"--begin", exact_number(config.begin)});
   if (!config.route_files.empty()) args.insert(args.end(), {"-r", joined(config.route_files)});
   if (!config.additional.empty()) args.insert(args.end(), {"-a", joined(config.additional)});
   // Defaults a user may replace through sumo_args.
@@ -36,8 +36,8 @@ std::vector<std::string> sumo_command_line(const SessionConfig& config, const st
     if (!sets(config.extra_args, name)) args.insert(args.end(), {std::string("--") + name, value});
   if (config.log_file.empty()) args.insert(args.end(), {"--no-warnings", "true"});
   else args.insert(args.end(), {"--log", config.log_file});
-  if (config.lateral_resolution > 0.0)
-    args.insert(args.end(), {"--lateral-resolution", sumo_number(config.lateral_resolution)});
+  if (config.lateral_resolution > 0.0 && !sets(config.extra_args, "lateral-resolution"))
+    args.insert(args.end(), {"--lateral-resolution", exact_number(config.lateral_resolution)});
   args.insert(args.end(), config.extra_args.begin(), config.extra_args.end());
   return args;
 }

@@ -1,5 +1,7 @@
 #include "sumo/sumo_options.hpp"
 
+#include "sumo/file_paths.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
@@ -8,20 +10,59 @@
 namespace signalsim::sumo {
 namespace {
 
-// SUMO 1.15's synonyms of the options this file knows (`sumo --save-template`, `synonymes=`).
+// Every synonym of SUMO 1.15's options (`sumo --save-template` and `sumo-gui --save-template`, their
+// `synonymes=`; the test sumo_option_table checks the table against the installed SUMO).
 const std::map<std::string, std::string>& synonyms() {
   static const std::map<std::string, std::string> table = {
-      {"c", "configuration-file"}, {"configuration", "configuration-file"}, {"C", "save-configuration"},
-      {"save-config", "save-configuration"}, {"n", "net-file"}, {"net", "net-file"}, {"r", "route-files"},
-      {"routes", "route-files"}, {"a", "additional-files"}, {"additional", "additional-files"},
-      {"w", "weight-files"}, {"weights", "weight-files"}, {"b", "begin"}, {"e", "end"},
-      {"ndump", "netstate-dump"}, {"netstate", "netstate-dump"}, {"netstate-output", "netstate-dump"},
-      {"summary", "summary-output"}, {"tripinfo", "tripinfo-output"}, {"vehroutes", "vehroute-output"},
-      {"personroutes", "personroute-output"}, {"statistics-output", "statistic-output"}, {"l", "log"},
-      {"log-file", "log"}, {"g", "gui-settings-file"}, {"data-files", "edgedata-files"}, {"Q", "quit-on-end"},
-      {"S", "start"}, {"d", "delay"}, {"G", "game"}, {"B", "breakpoints"}, {"D", "demo"},
-      {"T", "disable-textures"}, {"?", "help"}, {"V", "version"}, {"abs-rand", "random"},
-      {"W", "no-warnings"}, {"suppress-warnings", "no-warnings"}, {"v", "verbose"}};
+      {"?", "help"}, {"B", "breakpoints"}, {"C", "save-configuration"}, {"D", "demo"}, {"G", "game"},
+      {"H", "human-readable-time"}, {"Q", "quit-on-end"}, {"S", "start"}, {"T", "disable-textures"},
+      {"V", "version"}, {"W", "no-warnings"}, {"X", "xml-validation"}, {"a", "additional-files"},
+      {"abs-rand", "random"}, {"additional", "additional-files"}, {"b", "begin"}, {"c", "configuration-file"},
+      {"carfollow.model", "default.carfollowmodel"}, {"configuration", "configuration-file"}, {"d", "delay"},
+      {"data-files", "edgedata-files"}, {"device.battery.knownveh", "device.battery.explicit"},
+      {"device.bluelight.knownveh", "device.bluelight.explicit"},
+      {"device.btreceiver.knownveh", "device.btreceiver.explicit"},
+      {"device.btsender.knownveh", "device.btsender.explicit"},
+      {"device.driverstate.knownveh", "device.driverstate.explicit"},
+      {"device.elechybrid.knownveh", "device.elechybrid.explicit"},
+      {"device.emissions.knownveh", "device.emissions.explicit"},
+      {"device.example.knownveh", "device.example.explicit"}, {"device.fcd.knownveh", "device.fcd.explicit"},
+      {"device.friction.knownveh", "device.friction.explicit"}, {"device.glosa.knownveh", "device.glosa.explicit"},
+      {"device.rerouting.knownveh", "device.rerouting.explicit"},
+      {"device.routing.adaptation-interval", "device.rerouting.adaptation-interval"},
+      {"device.routing.adaptation-steps", "device.rerouting.adaptation-steps"},
+      {"device.routing.adaptation-weight", "device.rerouting.adaptation-weight"},
+      {"device.routing.period", "device.rerouting.period"},
+      {"device.routing.pre-period", "device.rerouting.pre-period"},
+      {"device.routing.with-taz", "device.rerouting.with-taz"}, {"device.ssm.knownveh", "device.ssm.explicit"},
+      {"device.taxi.knownveh", "device.taxi.explicit"}, {"device.toc.knownveh", "device.toc.explicit"},
+      {"device.tripinfo.knownveh", "device.tripinfo.explicit"},
+      {"device.vehroute.knownveh", "device.vehroute.explicit"}, {"dump-empty-edges", "netstate-dump.empty-edges"},
+      {"dump-precision", "netstate-dump.precision"}, {"e", "end"}, {"g", "gui-settings-file"}, {"l", "log"},
+      {"log-file", "log"}, {"measure", "weight-attribute"},
+      {"meso.ignore-lanes.by-vclass", "meso-ignore-lanes-by-vclass"}, {"n", "net-file"}, {"ndump", "netstate-dump"},
+      {"net", "net-file"}, {"netstate", "netstate-dump"}, {"netstate-output", "netstate-dump"},
+      {"netstate-output.empty-edges", "netstate-dump.empty-edges"},
+      {"netstate-output.precision", "netstate-dump.precision"},
+      {"netstate.empty-edges", "netstate-dump.empty-edges"}, {"netstate.precision", "netstate-dump.precision"},
+      {"no-duration-log", "duration-log.disable"},
+      {"person-device.btreceiver.knownveh", "person-device.btreceiver.explicit"},
+      {"person-device.btsender.knownveh", "person-device.btsender.explicit"},
+      {"person-device.fcd.knownveh", "person-device.fcd.explicit"},
+      {"person-device.rerouting.knownveh", "person-device.rerouting.explicit"},
+      {"person-device.routing.period", "person-device.rerouting.period"}, {"personroutes", "personroute-output"},
+      {"r", "route-files"}, {"routes", "route-files"}, {"routing-threads", "device.rerouting.threads"},
+      {"s", "route-steps"}, {"save-config", "save-configuration"},
+      {"save-config.relative", "save-configuration.relative"}, {"save-template.commented", "save-commented"},
+      {"srand", "seed"}, {"statistics-output", "statistic-output"}, {"summary", "summary-output"},
+      {"suppress-warnings", "no-warnings"}, {"t", "duration-log.statistics"}, {"tripinfo", "tripinfo-output"},
+      {"v", "verbose"}, {"vehroutes", "vehroute-output"}, {"vehroutes.dua", "vehroute-output.dua"},
+      {"vehroutes.exit-times", "vehroute-output.exit-times"},
+      {"vehroutes.intended-depart", "vehroute-output.intended-depart"},
+      {"vehroutes.last-route", "vehroute-output.last-route"},
+      {"vehroutes.route-length", "vehroute-output.route-length"}, {"vehroutes.sorted", "vehroute-output.sorted"},
+      {"w", "weight-files"}, {"weights", "weight-files"}, {"with-taz", "device.rerouting.with-taz"},
+      {"x", "weight-attribute"}};
   return table;
 }
 
@@ -53,7 +94,6 @@ constexpr Owned kOwned[] = {
     {"error-log", "signalsim writes SUMO's messages to OUT/sumo.log"},
     {"no-warnings", "signalsim counts SUMO's warnings in OUT/sumo.log"},
     {"output-prefix", "it would move signalsim's own files; relative output paths already land in --out"},
-    {"lateral-resolution", "signalsim switches SUMO's sublane model on when a maneuver needs it"},
     {"collision.action", "signalsim counts collisions and needs the ego kept (warn)"},
     {"start", "signalsim starts sumo-gui itself (--gui)"},
     {"quit-on-end", "signalsim starts sumo-gui itself (--gui)"},
@@ -61,6 +101,8 @@ constexpr Owned kOwned[] = {
     {"demo", "it restarts the simulation"},
     {"game", "it hands the lights to a person"},
     {"breakpoints", "it halts the simulation"},
+    {"mesosim", "the decider and the judge need SUMO's microscopic model (lanes, positions, signals)"},
+    {"no-internal-links", "turn lanelets are the junctions' internal lanes (spec SUMO §3)"},
 };
 
 // FILE options of the output category: the files SUMO writes.
@@ -71,7 +113,9 @@ constexpr const char* kOutputFiles[] = {
     "vehroute-output", "personroute-output", "link-output", "railsignal-block-output", "bt-output",
     "lanechange-output", "stop-output", "collision-output", "edgedata-output", "lanedata-output",
     "statistic-output", "save-state.prefix", "save-state.files", "device.rerouting.output",
-    "device.taxi.dispatch-algorithm.output", "device.taxi.idle-algorithm.output", "gui-testing.setting-output"};
+    "device.taxi.dispatch-algorithm.output", "device.taxi.idle-algorithm.output", "gui-testing.setting-output",
+    // STR options that name output files
+    "device.ssm.file", "device.toc.file"};
 
 // FILE options SUMO reads (besides the owned net, route and additional files).
 constexpr const char* kInputFiles[] = {"weight-files",
@@ -100,11 +144,6 @@ bool is_option_name(const std::string& token) {
   return i > 0 && i < token.size() && (std::isalpha(static_cast<unsigned char>(token[i])) != 0 || token[i] == '?');
 }
 
-std::string relative_to(const std::string& dir, const std::string& path) {
-  if (path.empty() || dir.empty() || std::filesystem::path(path).is_absolute()) return path;
-  return (std::filesystem::path(dir) / path).lexically_normal().string();
-}
-
 // A list value ("a.xml,b.xml"): each entry resolved.
 std::string each_relative_to(const std::string& dir, const std::string& value) {
   std::string out;
@@ -112,7 +151,7 @@ std::string each_relative_to(const std::string& dir, const std::string& value) {
   while (start <= value.size()) {
     const std::size_t comma = value.find(',', start);
     const std::string entry = value.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-    out += (out.empty() ? "" : ",") + relative_to(dir, entry);
+    out += (out.empty() ? "" : ",") + resolve_path(dir, entry);
     if (comma == std::string::npos) break;
     start = comma + 1;
   }
@@ -172,6 +211,10 @@ std::vector<SumoOption> parse_sumo_tokens(const std::vector<std::string>& tokens
 std::vector<std::string> sumo_tokens(const std::vector<SumoOption>& options, const std::string& source,
                                      const std::string& out_dir, const std::string& input_dir, bool gui) {
   std::vector<std::string> out;
+  for (std::size_t i = 0; i < options.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (options[i].name == options[j].name)
+        throw SumoOptionError(source + ": SUMO option '" + options[i].name + "' is given twice");
   for (const SumoOption& option : options) {
     std::string reason;
     const OptionKind kind = option_kind(option.name, &reason);
@@ -182,7 +225,7 @@ std::vector<std::string> sumo_tokens(const std::vector<SumoOption>& options, con
     if (kind == OptionKind::OutputFile) {
       if (!option.has_value || value.empty())
         throw SumoOptionError(source + ": SUMO option '" + option.name + "' needs a file name");
-      value = relative_to(out_dir, value);
+      value = each_relative_to(out_dir, value);
     } else if (kind == OptionKind::InputFile) {
       value = each_relative_to(input_dir, value);
     }

@@ -11,6 +11,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace signalsim::sumo {
@@ -225,6 +226,11 @@ class SumoSession {
     double gap = 0.0;  ///< [m]
   };
   virtual std::optional<Leader> ego_leader(double range) const = 0;
+
+  /// The options of a SUMO someone else started that matter to a run (connect: seed, step length,
+  /// collision.action, time-to-teleport, lateral-resolution, its files), as it reports them
+  /// (Simulation::getOption); empty for a SUMO signalsim started itself.
+  virtual std::vector<std::pair<std::string, std::string>> server_options() const { return {}; }
 
   /// Collisions involving the ego so far.
   virtual int ego_collisions() const = 0;

@@ -1,5 +1,6 @@
-// A user's SUMO configuration file (.sumocfg): the options it sets, read as SUMO reads them (categories
-// holding `<option value="..."/>` elements; relative file names relative to the .sumocfg).
+// A user's SUMO configuration file (.sumocfg): the options it sets, read as SUMO reads them
+// (`<option value="..."/>` elements, in categories or not; `${VAR}` replaced by the environment
+// variable; relative file names relative to the .sumocfg).
 #pragma once
 
 #include <optional>
@@ -17,6 +18,7 @@ struct SumoConfigFile {
   std::vector<std::string> route_files;     ///< route-files, resolved, in order
   std::vector<std::string> additional;      ///< additional-files, resolved, in order
   std::optional<double> begin, end, step_length;
+  int end_line = 0;                         ///< the line of `end`
   std::optional<int> seed;
   /// Every other option, in file order (input file names still relative to `dir`), with its line.
   struct Other {

@@ -32,6 +32,15 @@ TEST(SumoOptionTable, EveryFileOptionOfTheInstalledSumoIsClassified) {
         << "SUMO's FILE option '" << name << "' is not classified in src/sumo/sumo_options.cpp";
   }
   EXPECT_GE(seen, 40);
+  // Every synonym SUMO knows maps onto its option's long name (a user may write either).
+  const std::regex with_synonyms(R"re(<([A-Za-z0-9._-]+) value="[^"]*"[^>]*synonymes="([^"]*)")re");
+  int synonyms = 0;
+  for (auto it = std::sregex_iterator(xml.begin(), xml.end(), with_synonyms); it != std::sregex_iterator(); ++it) {
+    std::istringstream names((*it)[2].str());
+    for (std::string synonym; names >> synonym; ++synonyms)
+      EXPECT_EQ(canonical_option(synonym), (*it)[1].str()) << "synonym '" << synonym << "'";
+  }
+  EXPECT_GE(synonyms, 80);
   std::filesystem::remove(path);
 }
 

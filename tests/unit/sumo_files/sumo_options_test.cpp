@@ -27,7 +27,8 @@ TEST(SumoOptions, TokensBecomeOptionsWithValuesOrBareSwitches) {
 TEST(SumoOptions, OwnedOptionsAreRefusedWithTheReason) {
   for (const Tokens& t : {Tokens{"--step-length", "0.5"}, Tokens{"-n", "x.net.xml"}, Tokens{"--remote-port", "9"},
                           Tokens{"-c", "x.sumocfg"}, Tokens{"--log", "x.log"}, Tokens{"--seed", "3"},
-                          Tokens{"--random"}, Tokens{"--lateral-resolution", "0.2"}}) {
+                          Tokens{"--random"}, Tokens{"--srand", "4"}, Tokens{"--mesosim"},
+                          Tokens{"--no-internal-links", "true"}}) {
     try {
       sumo_tokens(parse_sumo_tokens(t), "sumo_args", "/out", "/in", false);
       ADD_FAILURE() << t[0] << " was accepted";
@@ -46,6 +47,18 @@ TEST(SumoOptions, RelativeOutputsLandInOutAndInputsAreResolvedFromTheirFile) {
                          "--weight-files", "/scenarios/w1.xml,/scenarios/sub/w2.xml", "--fcd-output.geo", "true"}));
   EXPECT_THROW(sumo_tokens(parse_sumo_tokens({"--fcd-output"}), "sumo_args", "/o", "/i", false), SumoOptionError)
       << "an output option without a file";
+}
+
+TEST(SumoOptions, AnOptionGivenTwiceAndEveryEntryOfAnOutputList) {
+  EXPECT_THROW(sumo_tokens(parse_sumo_tokens({"--fcd-output", "a.xml", "--fcd-output", "b.xml"}), "sumo_args", "/o",
+                           "/i", false),
+               SumoOptionError);
+  EXPECT_EQ(sumo_tokens(parse_sumo_tokens({"--save-state.files", "sa.xml,sb.xml", "--device.ssm.file", "ssm.xml"}),
+                        "sumo_args", "/runs/1", "/in", false),
+            (Tokens{"--save-state.files", "/runs/1/sa.xml,/runs/1/sb.xml", "--device.ssm.file", "/runs/1/ssm.xml"}));
+  EXPECT_EQ(sumo_tokens(parse_sumo_tokens({"--lateral-resolution", "0.4"}), "sumo_args", "/o", "/i", false),
+            (Tokens{"--lateral-resolution", "0.4"}))
+      << "a user's own sublane model is theirs";
 }
 
 TEST(SumoOptions, GuiOnlyOptionsReachOnlySumoGui) {

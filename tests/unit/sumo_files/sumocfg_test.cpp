@@ -40,6 +40,33 @@ TEST(Sumocfg, ThePublishedShapeWithSeveralFilesPerOption) {
   EXPECT_FALSE(cfg.step_length);  // not given: the scenario's (or signalsim's 0.1 s)
 }
 
+TEST(Sumocfg, AFlatFileAndEnvironmentVariablesAsSumoReadsThem) {
+  const TempDir dir("sumocfg_flat");
+  setenv("SIGNALSIM_TEST_NETS", (kSource + "/sumo_nets/cross").c_str(), 1);
+  const std::string flat = dir.file("flat.sumocfg", "<configuration>\n  <net-file value=\"${SIGNALSIM_TEST_NETS}/cross.net.xml\"/>\n"
+                                                    "  <end value=\"30\"/>\n  <tripinfo-output v=\"t.xml\"/>\n"
+                                                    "</configuration>\n");
+  const SumoConfigFile cfg = read_sumocfg(flat);
+  ASSERT_TRUE(cfg.net);
+  EXPECT_EQ(*cfg.net, kSource + "/sumo_nets/cross/cross.net.xml");
+  EXPECT_EQ(cfg.end, 30.0);
+  EXPECT_EQ(cfg.end_line, 3);
+  ASSERT_EQ(cfg.others.size(), 1u);
+  EXPECT_EQ(cfg.others[0].option.value, "t.xml");
+  const std::string unset = dir.file("unset.sumocfg", "<configuration>\n<input>\n"
+                                                      "<net-file value=\"${SIGNALSIM_NOT_SET_ANYWHERE}/x.net.xml\"/>\n"
+                                                      "</input>\n</configuration>\n");
+  try {
+    read_sumocfg(unset);
+    ADD_FAILURE() << "an unset variable was accepted";
+  } catch (const NetError& e) {
+    EXPECT_NE(std::string(e.what()).find("unset.sumocfg:3: option 'net-file': environment variable "
+                                         "'SIGNALSIM_NOT_SET_ANYWHERE' is not set"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(Sumocfg, BadFilesNameTheFileAndLine) {
   const auto message = [](const std::string& path) {
     try {
