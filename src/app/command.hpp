@@ -27,6 +27,7 @@ Command add_countries_command(CLI::App& app);
 Command add_batch_command(CLI::App& app);
 Command add_sweep_command(CLI::App& app);
 Command add_check_command(CLI::App& app);
+Command add_generate_command(CLI::App& app);
 Command add_compare_command(CLI::App& app);
 
 }  // namespace signalsim::app

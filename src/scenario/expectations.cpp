@@ -168,6 +168,21 @@ ExpectationResult check(const ExpectNeverRunsRed&, const RouteMap&, const RunRec
   return {"", false, out.str()};
 }
 
+ExpectationResult check(const ExpectArrives&, const RouteMap& route, const RunRecord& record) {
+  std::ostringstream out;
+  out.setf(std::ios::fixed);
+  out.precision(2);
+  if (record.rows.empty()) return {"", false, "the run recorded no step"};
+  const TimelineRow& last = record.rows.back();
+  if (record.arrived) {
+    out << "arrived at t=" << last.time << " s";
+    return {"", true, out.str()};
+  }
+  out << "the run ended at t=" << last.time << " s with the front at s=" << last.s_front << " m of "
+      << route.length() << " m, before the ego arrived";
+  return {"", false, out.str()};
+}
+
 }  // namespace
 
 void check_expectations_apply(const Scenario& scenario, const RouteMap& route) {

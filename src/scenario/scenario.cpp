@@ -30,10 +30,11 @@ Expectation parse_expectation(const YAML::Node& item, const std::string& file, s
                                                     "'- blinker_never: right'");
   const std::string kind = item.begin()->first.Scalar();
   const YAML::Node body = item.begin()->second;
-  if (kind == "blinker_never" || kind == "never_runs_red") {
-    if (kind == "never_runs_red") {
+  if (kind == "blinker_never" || kind == "never_runs_red" || kind == "arrives") {
+    if (kind != "blinker_never") {
       if (!body.IsScalar() || body.Scalar() != "true")
-        throw InputError(file, yaml_line(body), where + ".never_runs_red: write 'never_runs_red: true'");
+        throw InputError(file, yaml_line(body), where + "." + kind + ": write '" + kind + ": true'");
+      if (kind == "arrives") return ExpectArrives{};
       return ExpectNeverRunsRed{};
     }
     YAML::Node wrapped;
@@ -96,7 +97,7 @@ Expectation parse_expectation(const YAML::Node& item, const std::string& file, s
                    where + ": unknown expectation '" + kind +
                        "' (known: blinker_through_junction, blinker_through_lanelet, blinker_on, no_blinker, blinker_never, "
                        "stops_before_light, passes_light, emergency_stop_at_light, never_runs_red, "
-                       "lateral_offset_follows_plan)");
+                       "lateral_offset_follows_plan, arrives)");
 }
 
 PerceptionModelParameters parse_perception(const YAML::Node& node, const std::string& file) {
@@ -208,6 +209,8 @@ std::string describe(const Expectation& expectation) {
           out << "lateral_offset_follows_plan tolerance " << e.tolerance;
         } else if constexpr (std::is_same_v<T, ExpectNeverRunsRed>) {
           out << "never_runs_red";
+        } else if constexpr (std::is_same_v<T, ExpectArrives>) {
+          out << "arrives";
         } else if constexpr (std::is_same_v<T, ExpectNoBlinker>) {
           out << "no_blinker from_s " << e.from_s << " to_s " << e.to_s;
         } else {

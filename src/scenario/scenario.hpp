@@ -173,9 +173,11 @@ struct ExpectEmergencyStopAtLight {
 };
 /// The front never crosses a stop line while the ego's link shows red (r or u).
 struct ExpectNeverRunsRed {};
+/// `arrives: true`: the ego reaches the end of its route within the run's duration.
+struct ExpectArrives {};
 using Expectation = std::variant<ExpectBlinkerThrough, ExpectNoBlinker, ExpectBlinkerNever, ExpectBlinkerOn,
                                  ExpectStopsBeforeLight, ExpectPassesLight, ExpectEmergencyStopAtLight,
-                                 ExpectNeverRunsRed, ExpectLateralFollowsPlan>;
+                                 ExpectNeverRunsRed, ExpectLateralFollowsPlan, ExpectArrives>;
 
 /// One line describing an expectation, e.g. "blinker_through_junction C left lead 30".
 std::string describe(const Expectation& e);

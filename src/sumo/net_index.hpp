@@ -133,6 +133,8 @@ class NetIndex {
   const NetTlLogic* tl_logic(const std::string& id) const;
 
   std::size_t edge_count() const { return edges_.size(); }
+  /// Every edge, internal ones included, in file order (for whole-net indexes such as generate's).
+  const std::vector<NetEdge>& edges() const { return edges_; }
 
   /// Every defect found while loading, in file order.
   const std::vector<NetDefect>& defects() const { return defects_; }

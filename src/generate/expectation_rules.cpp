@@ -1,0 +1,313 @@
+// The expectation rules of generate: windows per section, their narrowing by the others, emission.
+#include "generate/expectation_rules.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include "generate/number_text.hpp"
+
+namespace signalsim::generate {
+namespace {
+
+constexpr double kScanStep = 0.1;      // [m] resolution of the activation scan
+constexpr double kMinBlinkerOn = 1.0;  // [m] a shorter guaranteed stretch is not stated
+constexpr double kMinEntryQuiet = 2.0; // [m] a shorter no-entry-signal stretch is not stated
+// (and neither is a stretch shorter than the step's travel, step_room)
+
+std::string name_of(const Section& s) {
+  std::string what = to_string(s.kind);
+  std::replace(what.begin(), what.end(), '_', ' ');
+  if (s.kind == SectionKind::Turn) what = std::string(to_string(s.side)) + " turn";
+  return what + " " + (s.kind == SectionKind::LaneChange ? "on edge " : "at ") + s.id;
+}
+
+// Upper bound of the search distance of a turn or an entry (spec TSD §4.1, §5.1).
+double search_upper(const Section& s, const SpeedProfile& speed, const RuleParameters& p) {
+  if (s.search_override) return *s.search_override;
+  const double reach = p.search_time * 40.0 + s.search_distance;  // beyond any speed the planner gives
+  return p.search_time * (speed.max_planned(s.start - reach, s.start) + kSpeedSlack) + s.search_distance;
+}
+
+struct Activation {
+  double from = 0.0;
+  std::string why;
+};
+
+// The front position from which the request of a turn or an entry is certainly stored (§4.4): the
+// lowest s such that start - s' < search(lower speed at s') for every s' in [s, start].
+Activation guaranteed_activation(const Section& s, const SpeedProfile& speed, const RuleParameters& p,
+                                 double depart) {
+  const auto search_at = [&](double pos) {
+    return s.search_override ? *s.search_override : p.search_time * speed.lower(pos) + s.search_distance;
+  };
+  // Scan back from the start on a 0.1 m grid (positions start - k * step, no accumulated error).
+  std::size_t k = 0;
+  const auto grid = [&](std::size_t i) { return s.start - static_cast<double>(i) * kScanStep; };
+  while (grid(k + 1) >= depart && s.start - grid(k + 1) < search_at(grid(k + 1))) ++k;
+  Activation a;
+  a.from = grid(k);
+  if (grid(k + 1) < depart) {
+    a.from = depart;
+    a.why = "within its search distance from the departure (the first step stores the desired start, spec TSD §4.4)";
+    return a;
+  }
+  const double failing = grid(k + 1);
+  if (s.search_override) {
+    a.why = "the lanelet's turn_signal_distance " + fixed(*s.search_override) + " m (spec TSD §4.3)";
+  } else {
+    const double v = speed.lower(failing);
+    a.why = "search " + fixed(p.search_time) + " s x " + fixed(v) + " m/s + " + fixed(s.search_distance) + " m = " +
+            fixed(search_at(failing)) + " m (spec TSD §4.1/§5.1) at the lowest speed the ego can have there (" +
+            speed.lower_reason(failing) + ")";
+  }
+  return a;
+}
+
+struct Window {
+  double possible_from = 0.0, possible_to = 0.0;  // P
+  double from = 0.0, to = 0.0;                    // G
+  std::string from_why, to_why;
+};
+
+Window initial_window(const Section& s, const SpeedProfile& speed, const RuleParameters& p, double depart) {
+  Window w;
+  const double b2f = p.base_link_to_front;
+  switch (s.kind) {
+    case SectionKind::Turn:
+    case SectionKind::RoundaboutEntry: {
+      w.possible_from = s.start - search_upper(s, speed, p);
+      const Activation a = guaranteed_activation(s, speed, p, depart);
+      w.from = a.from;
+      w.from_why = a.why;
+      break;
+    }
+    case SectionKind::RoundaboutExit:
+      w.possible_from = s.exit_desired_start;
+      w.from = std::max(s.exit_desired_start, depart);
+      w.from_why = s.exit_desired_start < s.start - 1e-6
+                       ? "from the start of the enable_exit_turn_signal chain at s " + fixed(s.exit_desired_start) +
+                             " (spec TSD §5.3; the exit-signal marking from the previous exit)"
+                       : "from the exit lanelet's start: exit signals have no search distance (spec TSD §5.3, §12.1.8)";
+      break;
+    case SectionKind::LaneChange: {
+      const double v = speed.max_planned(s.lane_change_at - 150.0, s.lane_change_at) + kSpeedSlack;
+      w.possible_from = s.lane_change_at - std::max(v * p.search_time, p.minimum_search_distance) - kMargin;
+      w.possible_to = s.end + kMargin;  // the lateral motion ends before the front leaves the edge
+      w.from = w.to = w.possible_from;  // never guaranteed
+      return w;
+    }
+  }
+  w.possible_to = s.end + b2f;  // base_link leaves the section: its desired end (§4.3, §5.2, §5.3)
+  w.to = w.possible_to;
+  w.to_why = "until base_link leaves it (its desired end, spec TSD §4.3/§5)";
+  return w;
+}
+
+// A stretch shorter than this may hold no step at all: the ego moves up to upper speed x step per
+// step (the generated scenarios' 0.1 s), so a stated stretch is at least that and a metre more.
+double step_room(const SpeedProfile& speed, double from, double to) {
+  return speed.max_planned(from, to) * kStepLength + kSpeedSlack * kStepLength + 1.0;
+}
+
+bool overlaps(double a_from, double a_to, double b_from, double b_to) { return a_from <= b_to && b_from <= a_to; }
+
+// Narrows X's guaranteed window by Y (see the header).
+void narrow(const Section& x, Window& wx, const Section& y, const Window& wy, const RuleParameters& p) {
+  if (y.side == Side::None || (y.side == x.side && y.kind != SectionKind::LaneChange)) return;
+  if (!overlaps(wx.from, wx.to, wy.possible_from, wy.possible_to)) return;
+  const double b2f = p.base_link_to_front;
+  const bool y_first = y.kind == SectionKind::LaneChange ? y.end <= x.start + 1e-6 : y.start < x.start;
+  if (y_first) {
+    const double from = wy.possible_to + kMargin;
+    if (from > wx.from) {
+      wx.from = from;
+      wx.from_why = "after base_link leaves the " + name_of(y) + " (its request may win until then, spec TSD §6.2)";
+    }
+    return;
+  }
+  double to = wx.to;
+  std::string why;
+  if (y.kind == SectionKind::LaneChange) {
+    to = x.start + b2f - kMargin;
+    why = "until base_link reaches its start: the " + name_of(y) +
+          " follows and PRIOR_WINS keeps this request only to its required end (spec TSD §6.2, §7)";
+  } else if (module_of(y.kind) == module_of(x.kind)) {
+    if (x.kind == SectionKind::RoundaboutExit && y.kind == SectionKind::RoundaboutEntry) {
+      to = wy.possible_from - kMargin;
+      why = "until the " + name_of(y) + " may be queued: entries queue before exits (spec TSD §5.3, §12.1.7)";
+    } else {
+      to = x.start + b2f - kMargin;
+      why = "until base_link reaches its start: with the " + name_of(y) +
+            " queued, FIRST_ACTIVE drops it at its required end (spec TSD §4.3, §7)";
+    }
+  } else {
+    to = y.start - kMargin;
+    why = "until the front reaches the " + name_of(y) + ": PRIOR_WINS keeps it only that far (spec TSD §6.2)";
+  }
+  if (to < wx.to) {
+    wx.to = to;
+    wx.to_why = why;
+  }
+}
+
+using Interval = std::pair<double, double>;
+
+// [from, to] less the union of `blocked` (sorted or not).
+std::vector<Interval> free_parts(double from, double to, std::vector<Interval> blocked) {
+  std::sort(blocked.begin(), blocked.end());
+  std::vector<Interval> out;
+  double cursor = from;
+  for (const Interval& b : blocked) {
+    if (b.second < cursor) continue;
+    if (b.first > to) break;
+    if (b.first > cursor) out.push_back({cursor, std::min(b.first, to)});
+    cursor = std::max(cursor, b.second);
+  }
+  if (cursor < to) out.push_back({cursor, to});
+  return out;
+}
+
+}  // namespace
+
+double floor_tenth(double v) { return std::floor(v * 10.0 + 1e-6) / 10.0; }
+double ceil_tenth(double v) { return std::ceil(v * 10.0 - 1e-6) / 10.0; }
+
+Derivation derive_expectations(const std::vector<Section>& sections, const RouteFacts& facts,
+                               const SpeedProfile& speed, const RuleParameters& params) {
+  Derivation d;
+  std::vector<Window> windows;
+  windows.reserve(sections.size());
+  for (const Section& s : sections) windows.push_back(initial_window(s, speed, params, facts.depart_front));
+  std::vector<Window> narrowed = windows;
+  for (std::size_t i = 0; i < sections.size(); ++i) {
+    if (sections[i].side != Side::Left && sections[i].side != Side::Right) continue;
+    for (std::size_t j = 0; j < sections.size(); ++j)
+      if (j != i) narrow(sections[i], narrowed[i], sections[j], windows[j], params);
+  }
+
+  using Kind = GeneratedExpectation::Kind;
+  const double b2f = params.base_link_to_front;
+  for (std::size_t i = 0; i < sections.size(); ++i) {
+    const Section& s = sections[i];
+    const Window& w = narrowed[i];
+    d.windows.push_back({w.possible_from, w.possible_to, w.from, w.to, w.from_why, w.to_why});
+    if (s.side != Side::Left && s.side != Side::Right) continue;
+    GeneratedExpectation e;
+    e.blinker = to_string(s.side);
+    // Through expectations start at least kMargin before the section: an exit whose request starts
+    // at its own start (no marking) gets blinker_on from just after it, since the front exactly at
+    // the start has not reached it (spec TSD §5.3 "DIST - b2f >= 0"), and SUMO does hold the ego at
+    // a lane's very end for a step while the link ahead is not yet open.
+    const bool whole = w.to >= s.end + b2f - 1e-9 && w.from <= s.start - kMargin;
+    const bool named = !s.target.junction.empty() || !s.target.lanelet.empty();
+    if (whole && named) {
+      e.kind = s.target.junction.empty() ? Kind::ThroughLanelet : Kind::ThroughJunction;
+      e.target = s.target.junction.empty() ? s.target.lanelet : s.target.junction;
+      e.lead = std::max(0.0, floor_tenth(s.start - w.from - kMargin));
+      e.why = name_of(s) + " (s " + fixed(s.start) + "-" + fixed(s.end) + "): " + e.blinker + " from " + fixed(e.lead) +
+              " m before it (" + fixed(kMargin) + " m kept): " + w.from_why + "; " + w.to_why;
+    } else if (w.to - w.from >= std::max(kMinBlinkerOn, step_room(speed, w.from, w.to)) + 2 * kMargin) {
+      e.kind = Kind::BlinkerOn;
+      e.from_s = ceil_tenth(w.from + kMargin);
+      e.to_s = floor_tenth(w.to - kMargin);
+      e.why = name_of(s) + " (s " + fixed(s.start) + "-" + fixed(s.end) + "): " + e.blinker + " with the front in [" +
+              fixed(e.from_s) + ", " + fixed(e.to_s) + "] (" + fixed(kMargin) + " m kept): " + w.from_why + "; " +
+              w.to_why + (named ? "" : " (no single junction or lanelet to name)");
+    } else {
+      d.notes.push_back(name_of(s) + " (s " + fixed(s.start) + "-" + fixed(s.end) +
+                        "): no blinker expectation, the rules leave no stretch where its blinker is certain (" +
+                        w.from_why + "; " + w.to_why + ")");
+      continue;
+    }
+    d.expectations.push_back(std::move(e));
+  }
+
+  // Stretches where no request can be valid: no_blinker (route start and end kept clear).
+  std::vector<Interval> blocked;
+  for (std::size_t i = 0; i < sections.size(); ++i)
+    if (sections[i].side != Side::None)
+      blocked.push_back({windows[i].possible_from - kMargin, windows[i].possible_to + kMargin});
+  const std::vector<Interval> quiet = free_parts(facts.depart_front + 1.0, facts.route_end - 1.0, blocked);
+  std::vector<Interval> stated;
+  for (const Interval& q : quiet) {
+    if (q.second - q.first < params.straight) continue;
+    GeneratedExpectation e;
+    e.kind = Kind::NoBlinker;
+    e.from_s = ceil_tenth(q.first);
+    e.to_s = floor_tenth(q.second);
+    e.why = "no request can be valid with the front in [" + fixed(e.from_s) + ", " + fixed(e.to_s) +
+            "]: it is outside every turn's, roundabout's and lane change's possible stretch (search distance at "
+            "the upper speed, spec TSD §4.1, §5, §8.2)";
+    stated.push_back(q);
+    d.expectations.push_back(std::move(e));
+  }
+  // No entry signal where the country gives none (spec TSD §5.2: on_entry None, no exit tag).
+  for (std::size_t i = 0; i < sections.size(); ++i) {
+    const Section& s = sections[i];
+    if (s.kind != SectionKind::RoundaboutEntry || s.side != Side::None) continue;
+    const double from = std::max(facts.depart_front + 1.0, s.start - s.search_distance);
+    const double to = s.end + b2f;
+    // The free piece around the entry's start, else the longest one.
+    std::optional<Interval> best;
+    bool best_contains = false;
+    for (const Interval& q : free_parts(from, to, blocked)) {
+      if (q.second - q.first < std::max(kMinEntryQuiet, step_room(speed, q.first, q.second))) continue;
+      const bool contains = q.first <= s.start && s.start <= q.second;
+      if (!best || (contains && !best_contains) ||
+          (contains == best_contains && q.second - q.first > best->second - best->first)) {
+        best = q;
+        best_contains = contains;
+      }
+    }
+    const auto stated_already = [&](const Interval& piece) {
+      return std::any_of(stated.begin(), stated.end(),
+                         [&](const Interval& q) { return q.first <= piece.first && q.second >= piece.second; });
+    };
+    if (best && stated_already(*best)) continue;  // a no_blinker stretch above already covers it
+    if (!best) {
+      d.notes.push_back(name_of(s) + ": no entry signal (turn_signal_roundabout_on_entry None), but other requests "
+                                     "may be valid all along it: not stated");
+      continue;
+    }
+    GeneratedExpectation e;
+    e.kind = Kind::NoBlinker;
+    e.from_s = ceil_tenth(best->first);
+    e.to_s = floor_tenth(best->second);
+    e.why = name_of(s) + ": no entry signal (turn_signal_roundabout_on_entry None and no exit tag, spec TSD §5.2, §5.5)";
+    d.expectations.push_back(std::move(e));
+  }
+
+  bool left = false, right = false;
+  for (const Section& s : sections) {
+    left |= s.side == Side::Left || s.side == Side::Either;
+    right |= s.side == Side::Right || s.side == Side::Either;
+  }
+  for (const auto& [side, possible] : {std::pair<const char*, bool>{"left", left}, {"right", right}}) {
+    if (possible) continue;
+    GeneratedExpectation e;
+    e.kind = Kind::BlinkerNever;
+    e.blinker = side;
+    e.why = std::string("no section of the route asks for ") + side;
+    d.expectations.push_back(std::move(e));
+  }
+  GeneratedExpectation hazard;
+  hazard.kind = Kind::BlinkerNever;
+  hazard.blinker = "hazard";
+  hazard.why = "hazard lights only when a module drives backward (spec TSD §3.1): never here";
+  d.expectations.push_back(std::move(hazard));
+  if (!facts.lights.empty()) {
+    GeneratedExpectation e;
+    e.kind = Kind::NeverRunsRed;
+    e.why = std::to_string(facts.lights.size()) + " light(s) on the route: the judge never lets the front cross a red "
+            "stop line (spec TLJ §1-§2)";
+    d.expectations.push_back(std::move(e));
+  }
+  GeneratedExpectation arrives;
+  arrives.kind = Kind::Arrives;
+  arrives.why = "every generated route is drivable to its end within the duration";
+  d.expectations.push_back(std::move(arrives));
+  return d;
+}
+
+}  // namespace signalsim::generate

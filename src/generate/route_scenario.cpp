@@ -1,0 +1,204 @@
+// One route -> one scenario draft: lane plan, speed, sections, expectations, departure, duration, header.
+#include "generate/route_scenario.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "generate/expectation_rules.hpp"
+#include "generate/number_text.hpp"
+#include "generate/route_facts.hpp"
+#include "generate/speed_profile.hpp"
+#include "scenario/input_error.hpp"
+#include "scenario/route_planning.hpp"
+
+namespace signalsim::generate {
+namespace {
+
+constexpr double kSumoDecel = 4.5;       // [m/s^2] the ego vType's decel in SUMO (sumo/sumo_session.hpp)
+constexpr double kInsertionRoom = 5.0;   // [m] SUMO inserts the ego only if it can stop this short of the edge end
+constexpr double kDurationFactor = 1.3;  // duration = factor x (travel + waits) + slack, in 10 s steps
+constexpr double kDurationSlack = 30.0;  // [s]
+constexpr double kYieldWait = 5.0;       // [s] per link where SUMO makes the ego yield
+
+Scenario planning_scenario(const std::string& path, const std::string& net_path, const std::vector<std::string>& edges,
+                           const ParameterSet& params, const RouteScenarioOptions& o) {
+  Scenario s;
+  s.path = path;
+  s.name = "candidate";
+  s.net = net_path;
+  s.country = o.country;
+  s.params = params;
+  s.ego.route = edges;
+  s.ego.max_speed = o.max_speed;
+  s.ego.length = o.length;
+  s.ego.base_link_to_front = o.base_link_to_front;
+  s.ego.accel = o.accel;
+  s.ego.decel = o.decel;
+  return s;
+}
+
+// The departure speed: no faster than the ego, the first lane's limit, the speed planner's braking
+// envelope at s 0 (so the planner never starts above its own profile), and what SUMO can stop from
+// by the first edge's end (else it delays the insertion at a red light).
+double depart_speed(const RouteMap& route, const RouteScenarioOptions& o) {
+  double v = std::min(o.max_speed, route.at(0).speed_limit);
+  const double horizon = o.max_speed * o.max_speed / (2.0 * o.decel) + 1.0;
+  for (std::size_t i = 0; i < route.size() && route.at(i).s_start < horizon; ++i)
+    v = std::min(v, std::sqrt(route.at(i).speed_limit * route.at(i).speed_limit + 2.0 * o.decel * route.at(i).s_start));
+  v = std::min(v, std::sqrt(2.0 * kSumoDecel * std::max(0.0, route.at(0).length - kInsertionRoom)));
+  return std::max(0.0, floor_tenth(v));
+}
+
+std::string lanelet_list(const RouteMap& route) {
+  std::ostringstream out;
+  for (std::size_t i = 0; i < route.size(); ++i) {
+    const Lanelet& l = route.at(i);
+    if (i % 4 == 0) out << (i ? "\n" : "") << "  ";
+    else out << ", ";
+    out << l.lane_id;
+    if (l.is_internal && l.roundabout_role == RoundaboutRole::None &&
+        (l.turn_direction == TurnDirection::Left || l.turn_direction == TurnDirection::Right))
+      out << " (" << to_string(l.turn_direction) << ")";
+    if (l.roundabout_role != RoundaboutRole::None) out << " [" << to_string(l.roundabout_role) << "]";
+    out << " " << fixed(l.s_start) << "-" << fixed(l.s_end());
+  }
+  return out.str();
+}
+
+void split_lines(const std::string& text, std::vector<std::string>& into) {
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) into.push_back(line);
+}
+
+}  // namespace
+
+std::optional<RouteScenario> route_scenario(const sumo::NetIndex& net, const std::string& net_path,
+                                            const std::vector<std::string>& edges, const ParameterSet& params,
+                                            const RouteScenarioOptions& o, const std::string& scenario_path,
+                                            RouteRejection& rejection) {
+  const Scenario planning = planning_scenario(scenario_path, net_path, edges, params, o);
+  sumo::RoutePlan plan;
+  LateralPlan lateral;
+  try {
+    plan = plan_route(planning, net);  // the lane plan a run makes, with the exit-signal marking
+    lateral = plan_lateral(planning, plan, net);
+  } catch (const InputError& e) {
+    rejection.reason = "no lane plan";
+    return std::nullopt;
+  }
+  const RouteMap& route = plan.map;
+  if (route.at(0).length < o.min_edge || route.at(route.size() - 1).length < o.min_edge) {
+    rejection.reason = "first or last edge shorter than " + fixed(o.min_edge, 0) + " m";
+    return std::nullopt;
+  }
+
+  const PlannedRouteFacts facts = route_facts(plan, lateral, net);
+  if (!facts.never_green.empty()) {
+    rejection.reason = "a light never lets the route's link go";
+    return std::nullopt;
+  }
+  const double v0 = depart_speed(route, o);
+  const SpeedLimits limits{o.max_speed, o.accel, o.decel};
+  // Stop zones from the planned speed without stops (the ego is no faster than that).
+  const SpeedProfile free_run(route, 0.0, v0, limits, kStepLength, {});
+  std::vector<StopPoint> stops;
+  for (const PlannedRouteFacts::Stop& s : facts.stops) {
+    const double v = free_run.max_planned(s.s - 200.0, s.s) + kSpeedSlack;
+    stops.push_back({s.s, s.light ? light_braking_distance(v) : yield_braking_distance(v), s.what});
+  }
+  const SpeedProfile speed(route, 0.0, v0, limits, kStepLength, stops);
+
+  SectionParameters section_params;
+  section_params.intersection_search_distance = params.number("turn_signal_intersection_search_distance");
+  section_params.roundabout_search_distance = params.number("turn_signal_roundabout_search_distance");
+  section_params.on_entry = params.text("turn_signal_roundabout_on_entry");
+  section_params.on_exit = params.text("turn_signal_roundabout_on_exit");
+  const std::vector<Section> sections = route_sections(route, section_params, facts.lane_changes);
+  RuleParameters rules;
+  rules.search_time = params.number("turn_signal_search_time");
+  rules.minimum_search_distance = params.number("turn_signal_minimum_search_distance");
+  rules.base_link_to_front = o.base_link_to_front;
+  rules.straight = o.straight;
+  RouteFacts route_facts_for_rules{0.0, route.length(), facts.lights};
+  const Derivation derivation = derive_expectations(sections, route_facts_for_rules, speed, rules);
+
+  RouteScenario out;
+  out.length = route.length();
+  for (const Section& s : sections) {
+    if (s.kind == SectionKind::Turn) out.features.turns.push_back(s.id + " " + to_string(s.side));
+    if (s.kind == SectionKind::LaneChange) ++out.features.lane_changes;
+  }
+  for (std::size_t i = 0; i < sections.size(); ++i) {
+    if (sections[i].kind != SectionKind::RoundaboutEntry) continue;
+    std::string exit = "(ends on the ring)";
+    for (std::size_t j = i + 1; j < sections.size(); ++j)
+      if (sections[j].kind == SectionKind::RoundaboutExit) {
+        exit = sections[j].id;
+        break;
+      }
+    out.features.roundabouts.push_back(sections[i].id + " -> " + exit);
+  }
+  for (const LightFact& l : facts.lights)
+    if (std::find(out.features.lights.begin(), out.features.lights.end(), l.id) == out.features.lights.end())
+      out.features.lights.push_back(l.id);
+
+  double waits = 0.0;
+  int yields = 0;
+  for (double c : facts.light_cycles) waits += c;
+  for (const PlannedRouteFacts::Stop& s : facts.stops) yields += s.light ? 0 : 1;
+  waits += kYieldWait * yields;
+  const double duration = 10.0 * std::ceil((kDurationFactor * (speed.travel_time() + waits) + kDurationSlack) / 10.0);
+
+  ScenarioDraft& d = out.draft;
+  d.net = net_path;
+  d.country = o.country;
+  d.duration = duration;
+  d.route = edges;
+  d.depart_speed = v0;
+  d.max_speed = o.max_speed;
+  d.length = o.length;
+  d.base_link_to_front = o.base_link_to_front;
+  d.expect = derivation.expectations;
+
+  std::vector<std::string>& h = d.header;
+  h.push_back("Parameters: Autoware's defaults" + (o.country.empty() ? std::string() : " + country preset " + o.country) +
+              ": search " + fixed(rules.search_time) + " s x v + " + fixed(section_params.intersection_search_distance) +
+              " m (turns), + " + fixed(section_params.roundabout_search_distance) + " m (roundabout entries); entry " +
+              section_params.on_entry + ", exit " + section_params.on_exit + "; exit signal from the previous exit: " +
+              (params.boolean("turn_signal_roundabout_exit_signal_from_previous_exit") ? "yes" : "no"));
+  h.push_back("Ego: " + fixed(o.length) + " m, front " + fixed(o.base_link_to_front) + " m ahead of base_link, at most " +
+              fixed(o.max_speed, 2) + " m/s, accel/decel " + fixed(o.accel) + "/" + fixed(o.decel) +
+              " m/s^2; departs at s 0 on " + route.at(0).lane_id + " at " + fixed(v0) +
+              " m/s (the least of its top speed, the lane limit, the speed planner's braking envelope and what SUMO "
+              "can stop from by the edge's end)");
+  h.push_back("Duration " + fixed(duration, 0) + " s = " + fixed(kDurationFactor) + " x (" + fixed(speed.travel_time()) +
+              " s planned travel + " + fixed(waits) + " s of light cycles and yields) + " + fixed(kDurationSlack, 0) +
+              " s, in 10 s steps");
+  h.push_back("Speed: the step loop's planner (planning/speed_limit_planner) rolled out from the departure; where the "
+              "ego may stop (lights, yields), braking may start earlier and it restarts from rest (generate/speed_profile)");
+  h.push_back("Lanelets (route s of the front bumper, m):");
+  split_lines(lanelet_list(route), h);
+  if (!facts.stops.empty()) {
+    h.push_back("Where the ego may stop (braking may start that far before):");
+    for (const StopPoint& s : speed.stops()) h.push_back("  " + s.what + " at s " + fixed(s.s) + " (" + fixed(s.braking) + " m)");
+  }
+  if (!sections.empty()) {
+    h.push_back("Sections (front bumper; possible: its request may be valid; certain: its blinker is sure to show):");
+    for (std::size_t i = 0; i < sections.size(); ++i) {
+      const Section& s = sections[i];
+      const SectionWindows& w = derivation.windows[i];
+      std::string line = "  " + std::string(to_string(s.kind)) + " " + s.id + " " + to_string(s.side) + ", s " +
+                         fixed(s.start) + "-" + fixed(s.end);
+      if (s.side != Side::None) line += ": possible " + fixed(w.possible_from) + "-" + fixed(w.possible_to);
+      if (s.side == Side::Left || s.side == Side::Right)
+        line += w.guaranteed_to > w.guaranteed_from ? ", certain " + fixed(w.guaranteed_from) + "-" + fixed(w.guaranteed_to)
+                                                    : ", never certain";
+      h.push_back(line);
+    }
+  }
+  for (const std::string& note : derivation.notes) h.push_back("Note: " + note);
+  return out;
+}
+
+}  // namespace signalsim::generate

@@ -1,0 +1,83 @@
+// The speed planner rolled out along a route, and the bounds the rules use.
+#include "generate/speed_profile.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "generate/number_text.hpp"
+
+namespace signalsim::generate {
+
+double light_braking_distance(double v) { return v * v / 1.6 + 2.0 * v + 10.0; }
+double yield_braking_distance(double v) { return v * v / 6.0 + 15.0; }
+
+SpeedProfile::SpeedProfile(const RouteMap& route, double depart_front, double depart_speed, const SpeedLimits& limits,
+                           double dt, std::vector<StopPoint> stops)
+    : stops_(std::move(stops)), accel_(limits.accel) {
+  std::sort(stops_.begin(), stops_.end(), [](const StopPoint& a, const StopPoint& b) { return a.s < b.s; });
+  double s = depart_front, v = depart_speed;
+  const double end = route.length();
+  s_.push_back(s);
+  v_.push_back(v);
+  // The rollout ends at the route's end; a planner that would stand still forever (a zero limit)
+  // is cut off after a bounded number of steps.
+  const std::size_t max_steps = static_cast<std::size_t>(1e7);
+  for (std::size_t k = 0; s < end && k < max_steps; ++k) {
+    v = plan_speed_under_limits(route, s, v, dt, limits);
+    s += v * dt;  // SUMO's Euler update: the new speed over the step
+    travel_time_ += dt;
+    if (v <= 0.0) break;
+    s_.push_back(s);
+    v_.push_back(v);
+  }
+}
+
+double SpeedProfile::planned(double s) const {
+  if (s <= s_.front()) return v_.front();
+  if (s >= s_.back()) return v_.back();
+  const auto it = std::upper_bound(s_.begin(), s_.end(), s);
+  const std::size_t k = static_cast<std::size_t>(it - s_.begin());
+  const double t = (s - s_[k - 1]) / (s_[k] - s_[k - 1]);
+  return v_[k - 1] + t * (v_[k] - v_[k - 1]);
+}
+
+double SpeedProfile::upper(double s) const { return planned(s) + kSpeedSlack; }
+
+const StopPoint* SpeedProfile::stop_zone_at(double s) const {
+  for (const StopPoint& p : stops_)
+    if (s >= p.s - p.braking && s <= p.s) return &p;
+  return nullptr;
+}
+
+double SpeedProfile::lower(double s) const {
+  if (stop_zone_at(s)) return 0.0;
+  double v = planned(s) - kSpeedSlack;
+  // The latest stop point behind s: the ego may have restarted there from rest.
+  for (const StopPoint& p : stops_)
+    if (p.s < s) v = std::min(v, std::sqrt(2.0 * kRestartShare * accel_ * (s - p.s)));
+  return std::max(0.0, v);
+}
+
+std::string SpeedProfile::lower_reason(double s) const {
+  if (const StopPoint* p = stop_zone_at(s)) return "it may be braking for " + p->what;
+  const StopPoint* restart = nullptr;
+  double v = planned(s) - kSpeedSlack;
+  for (const StopPoint& p : stops_)
+    if (p.s < s) {
+      const double r = std::sqrt(2.0 * kRestartShare * accel_ * (s - p.s));
+      if (r < v) {
+        v = r;
+        restart = &p;
+      }
+    }
+  if (restart) return "it may be restarting from rest at " + restart->what;
+  return "the planned speed less " + fixed(kSpeedSlack, 1) + " m/s";
+}
+
+double SpeedProfile::max_planned(double from, double to) const {
+  double best = std::max(planned(from), planned(to));
+  for (double s = std::ceil(from); s < to; s += 1.0) best = std::max(best, planned(s));
+  return best;
+}
+
+}  // namespace signalsim::generate
