@@ -48,6 +48,16 @@ Lamp circle_of(const std::string& state, const ApproachLight& light) {
 
 bool is_turn(TurnDirection d) { return d == TurnDirection::Left || d == TurnDirection::Right; }
 
+// The turn links that make arrows: every turn link of the approach (one signal head for it, as an
+// Autoware map has one traffic light per approach), but of the ego's own direction only its own link.
+// A right turn of the same lane to another edge, or of another lane, that is green while the ego's
+// link is red is a signal for other vehicles: it must not let the ego go (found by `signalsim
+// generate` on SUMO's pasubio net, where it made the judge pass a red link).
+bool arrow_source(const ApproachLink& link, const ApproachLight& light) {
+  if (!is_turn(link.direction)) return false;
+  return link.direction != light.direction || link.link_index == light.link_index;
+}
+
 }  // namespace
 
 bool shows_arrow(const std::vector<std::string>& phase_states, const ApproachLight& light) {
@@ -55,7 +65,7 @@ bool shows_arrow(const std::vector<std::string>& phase_states, const ApproachLig
     if (circle_of(state, light) == Lamp::Green) continue;
     for (const ApproachLink& link : light.links) {
       const char link_state = state_at(state, link.link_index);
-      if (is_turn(link.direction) && (link_state == 's' || lamp_of(link_state) == Lamp::Green)) return true;
+      if (arrow_source(link, light) && (link_state == 's' || lamp_of(link_state) == Lamp::Green)) return true;
     }
   }
   return false;
@@ -96,7 +106,7 @@ std::optional<std::vector<SignalElement>> signal_elements(const std::string& sta
   elements.push_back({color_of(circle), SignalShape::Circle, SignalStatus::SolidOn, 1.0});
   bool left = false, right = false;  // one arrow per direction
   for (const ApproachLink& link : light.links) {
-    if (!is_turn(link.direction)) continue;
+    if (!arrow_source(link, light)) continue;
     const char link_state = state_at(state, link.link_index);
     // 's' is red as a circle but a green arrow for its turn (spec SUMO §3).
     const Lamp lamp = link_state == 's' ? Lamp::Green : lamp_of(link_state);

@@ -49,7 +49,9 @@ std::vector<ApproachLight> approach_lights(const NetIndex& net, const RouteMap& 
 ///    a red straight link is an arrow), or the own link when that lane has no straight link.
 ///    G/g green, y/Y amber, r/u/s red;
 ///  - a turn link (left/right) that is green (G, g, s) or amber while the circle is not shows an
-///    arrow of that colour and direction;
+///    arrow of that colour and direction; of the ego's own direction only its own link does (another
+///    link of that direction, to another edge or from another lane, is a signal for other vehicles:
+///    found on SUMO's pasubio net, where it made the judge pass a red link);
 ///  - nullopt when the ego's own link is off (o, O): the light is not regulating, the judge stays out.
 std::optional<std::vector<SignalElement>> signal_elements(const std::string& state, const ApproachLight& light);
 

@@ -53,6 +53,21 @@ TEST(SignalElements, TheEgosRedOrAmberLinkIsNeverAGreenCircle) {
   EXPECT_EQ(elements("rrrrrrrrrrGrrrrr", straight_lane1), "green");
 }
 
+TEST(SignalElements, AnotherLinkOfTheEgosDirectionIsNoArrowForTheEgo) {
+  // SUMO's pasubio net: one lane with two right turns to two edges; the other one green, the ego's red.
+  ApproachLight light;
+  light.link_index = 1;
+  light.lane_index = 0;
+  light.direction = TurnDirection::Right;
+  light.links = {{TurnDirection::Right, 0, 0}, {TurnDirection::Right, 1, 0}, {TurnDirection::Straight, 2, 0}};
+  EXPECT_EQ(elements("grr", light), "red");
+  EXPECT_TRUE(is_traffic_signal_stop(LaneTurnDirection::Right, *signal_elements("grr", light)));
+  EXPECT_EQ(elements("rgr", light), "red+green_right_arrow") << "its own link is its arrow";
+  EXPECT_FALSE(is_traffic_signal_stop(LaneTurnDirection::Right, *signal_elements("rgr", light)));
+  EXPECT_FALSE(shows_arrow({"grr", "rrG"}, light)) << "no arrow bulb for the ego from the other link";
+  EXPECT_TRUE(shows_arrow({"rgr"}, light));
+}
+
 TEST(SignalElements, ArrowsMatchTheJudgesTurnDirection) {
   const auto arrow = signal_elements("rrrrrrrrrrrGrrrr", south_approach(TurnDirection::Left, 11));
   ASSERT_TRUE(arrow);
