@@ -188,6 +188,7 @@ nlohmann::ordered_json metrics_from_run_dir(const std::string& run_dir, const st
         stop.decision = parse_enum(s.value("decision", ""), JudgeDecision::EmergencyStop, JudgeDecision::Stop);
         stop.worst_level = parse_enum(s.value("level", ""), StopLevel::Emergency, StopLevel::Normal);
         if (s.contains("queued_behind") && s["queued_behind"].is_string()) stop.queued_behind = s["queued_behind"];
+        if (s.contains("waiting_at") && s["waiting_at"].is_string()) stop.waiting_at = s["waiting_at"];
         record.stops.push_back(stop);
       }
     if (lights.contains("red_light_violations"))

@@ -127,6 +127,7 @@ ExpectationResult check(const ExpectStopsBeforeLight& e, const RouteMap&, const 
     if (stop.by_judge) out << to_string(stop.decision) << ", " << to_string(stop.worst_level) << " level)";
     else out << "SUMO stopped on its own)";
     if (!stop.queued_behind.empty()) out << ", in the queue behind vehicle '" << stop.queued_behind << "'";
+    if (!stop.waiting_at.empty()) out << ", waiting at junction '" << stop.waiting_at << "' before the light";
     return {"", std::abs(stop.error) <= e.tolerance, out.str()};
   }
   return {"", false, "the ego never came to rest for a stop at light " + e.light};

@@ -162,7 +162,8 @@ std::vector<LightMetrics> measure_lights(const RouteMap& route, const RunRecord&
     }
     // A rest in the queue before the light says where the queue ended: no stop position error.
     for (const LightStop& stop : record.stops)
-      if (stop.tl_id == m.id && stop.time >= t_from && stop.time <= t_to && stop.queued_behind.empty()) {
+      if (stop.tl_id == m.id && stop.time >= t_from && stop.time <= t_to && stop.queued_behind.empty() &&
+          stop.waiting_at.empty()) {
         m.stop_position_error = round3(stop.error);
         break;
       }

@@ -231,7 +231,9 @@ void write_run_outputs(const std::string& dir, const Scenario& scenario, const s
                      {"decision", stop.by_judge ? nlohmann::ordered_json(to_string(stop.decision)) : nullptr},
                      {"level", stop.by_judge ? nlohmann::ordered_json(to_string(stop.worst_level)) : nullptr},
                      {"queued_behind", stop.queued_behind.empty() ? nlohmann::ordered_json(nullptr)
-                                                                  : nlohmann::ordered_json(stop.queued_behind)}});
+                                                                  : nlohmann::ordered_json(stop.queued_behind)},
+                     {"waiting_at", stop.waiting_at.empty() ? nlohmann::ordered_json(nullptr)
+                                                            : nlohmann::ordered_json(stop.waiting_at)}});
   lights["stops"] = stops;
   nlohmann::ordered_json violations = nlohmann::ordered_json::array();
   for (const RedLightViolation& v : record.red_violations)

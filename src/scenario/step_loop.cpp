@@ -39,7 +39,7 @@ class LightOutcomes {
   /// `stopping`: the light whose stop the ego is braking for this step, if any.
   /// `leader`: SUMO's vehicle ahead, to tell a rest in the queue before a light from the ego's own stop.
   void observe(const TimelineRow& row, const std::vector<LightStep>& lights, const LightStep* stopping,
-               const LeaderQuery& leader, RunRecord& record) {
+               const LeaderQuery& leader, const RouteMap& route, RunRecord& record) {
     // A stop: the first step at rest while a stop is requested; a new one only after moving again.
     // The error is measured against the stop line minus stop_margin, not the judge's stop point,
     // which restart suppression moves to wherever the ego stands (spec TLJ §1.6).
@@ -49,8 +49,16 @@ class LightOutcomes {
       LightStop stop{stopping->light->tls_id, row.time, stop_s, row.s_front, row.s_front - stop_s,
                      stopping->result.decision, worst_level_};
       const double to_go = stop_s - row.s_front;
-      if (to_go > kQueueGap)
+      if (to_go > kQueueGap) {
         if (const auto ahead = leader(to_go); ahead && ahead->gap < to_go) stop.queued_behind = ahead->id;
+        const std::size_t here = route.index_at(row.s_front);
+        if (stop.queued_behind.empty() && here != stopping->light->route_index)
+          for (std::size_t i = here; i < stopping->light->route_index; ++i)
+            if (route.at(i).is_internal) {  // the junction the ego is in, or the next one ahead
+              stop.waiting_at = route.at(i).junction_id;
+              break;
+            }
+      }
       record.stops.push_back(stop);
       resting_ = true;
     }
@@ -317,7 +325,7 @@ RunRecord drive(const StartedRun& run, const sumo::NetIndex& net) {
                    std::string(to_string(row.tl_decision)), row.tl_id);
       previous_decision = row.tl_decision;
     }
-    outcomes.observe(row, light_steps, stopping, leader, record);
+    outcomes.observe(row, light_steps, stopping, leader, route, record);
     record.rows.push_back(std::move(row));
 
     if (!alive) {

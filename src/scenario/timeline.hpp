@@ -59,6 +59,9 @@ struct LightStop {
   /// then `error` says where the queue ended, not how well the ego stopped. Empty when nothing was
   /// between the ego and the stop point.
   std::string queued_behind;
+  /// The junction before the light the ego waited at (SUMO's right of way there), when it came to
+  /// rest on an earlier lanelet than the light's approach: no stop at the light either.
+  std::string waiting_at;
 };
 
 /// The front crossed a stop line while the ego's link showed red.
