@@ -4,6 +4,7 @@
 
 #include "app/batch_cli.hpp"
 #include "app/command.hpp"
+#include "app/strict_params_flag.hpp"
 #include "scenario/input_error.hpp"
 
 namespace signalsim::app {
@@ -19,6 +20,7 @@ Command add_batch_command(CLI::App& app) {
   sub->add_option("paths", o->paths, "Scenario files or directories of them (*.yaml)")->required();
   sub->add_option("--set", o->set, "Override for every run: a scenario key or a parameter (key=value); repeatable");
   add_batch_options(sub, o->batch, "out/batch", true);
+  add_strict_params_flag(sub, o->set);
   return {sub, [o]() -> int {
             try {
               const std::vector<RunSpec> runs = suite_runs(scenario_files(o->paths), o->set);

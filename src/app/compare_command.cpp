@@ -21,6 +21,7 @@
 
 #include "app/batch_cli.hpp"
 #include "app/command.hpp"
+#include "app/strict_params_flag.hpp"
 #include "app/comparison.hpp"
 #include "app/plot_tool.hpp"
 #include "app/process_pool.hpp"
@@ -211,6 +212,7 @@ Command add_compare_command(CLI::App& app) {
   // Not required() for CLI11: with no path, compare itself refuses (and removes an earlier comparison).
   sub->add_option("paths", o->paths, "Scenario files or directories of them (*.yaml)");
   sub->add_option("--set", o->set, "Override for every run: a scenario key or a parameter (key=value); repeatable");
+  add_strict_params_flag(sub, o->set);
   add_batch_options(sub, o->batch, "out/compare", false);
   return {sub, [o] { return compare(*o); }};
 }

@@ -8,9 +8,11 @@
 #include <optional>
 
 #include "app/command.hpp"
+#include "app/strict_params_flag.hpp"
 #include "app/plot_tool.hpp"
 #include "scenario/expectations.hpp"
 #include "scenario/input_error.hpp"
+#include "scenario/notes.hpp"
 #include "scenario/outputs.hpp"
 #include "scenario/route_planning.hpp"
 #include "scenario/scenario.hpp"
@@ -85,6 +87,7 @@ int run(const RunOptions& options) {
   std::optional<Scenario> scenario;
   // Ctrl-C / SIGTERM unwind the run (sumo-gui stopped by its PID, an error summary written).
   sumo::install_interruption_handlers();
+  set_notes_enabled(!options.quiet);
   try {
     scenario = load_scenario(options.scenario_path, options.overrides);
     const RunContext context = run_context(options);
@@ -145,6 +148,7 @@ Command add_run_command(CLI::App& app) {
                   "Override: a scenario key (seed=3, ego.max_speed=10, country=de) or a parameter "
                   "(turn_signal_search_time=2.5); repeatable");
   sub->add_flag("--quiet", options->quiet, "Print nothing on success");
+  add_strict_params_flag(sub, options->overrides.set);
   sub->add_flag("--plot", options->plot, "Draw PNGs of the run into OUT/plots with tools/plot");
   sub->add_option("--driver", options->driver,
                   "Who drives the ego: signalsim (its decider, judge and planners) or sumo (SUMO's own blinker, "

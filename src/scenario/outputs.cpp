@@ -34,6 +34,27 @@ nlohmann::ordered_json parameters_json(const ParameterSet& set) {
   return out;
 }
 
+// Every parameter's value and where it came from ("default", "<file>:<line>", "country jp", "set",
+// "--set"), with its Autoware place when that differs from its name.
+nlohmann::ordered_json parameter_sources_json(const ParameterSet& set) {
+  nlohmann::ordered_json out = nlohmann::ordered_json::object();
+  for (const ParameterSpec& spec : parameter_schema()) {
+    nlohmann::ordered_json entry;
+    std::visit([&](const auto& v) { entry["value"] = v; }, set.values().at(spec.name));
+    entry["from"] = set.origin(spec.name);
+    if (!spec.autoware_key.empty()) entry["autoware_key"] = spec.autoware_key;
+    out[spec.name] = entry;
+  }
+  return out;
+}
+
+// The parameter files with keys signalsim does not use, and those keys.
+nlohmann::ordered_json parameter_files_json(const ParameterSet& set) {
+  nlohmann::ordered_json out = nlohmann::ordered_json::array();
+  for (const UnusedParameters& file : set.unused()) out.push_back({{"file", file.file}, {"unused_keys", file.keys}});
+  return out;
+}
+
 // Which SUMO ran with which files and options, and what it said (counted from its log).
 nlohmann::ordered_json sumo_json(const Scenario& scenario, const RunSumoInfo& info) {
   nlohmann::ordered_json out;
@@ -153,9 +174,11 @@ void write_run_outputs(const std::string& dir, const Scenario& scenario, const s
   ego["id"] = departed.id.empty() ? std::string(sumo::kDefaultEgoId) : departed.id;
   ego["taken_over"] = !scenario.ego.id.empty();
   ego["type"] = departed.type;
-  ego["length"] = scenario.ego.length;
+  ego["length"] = std::stod(fixed(scenario.ego.length, 3));
   ego["width"] = departed.width;
   ego["base_link_to_front"] = std::stod(fixed(scenario.ego.base_link_to_front, 3));
+  ego["base_link_to_rear"] = std::stod(fixed(scenario.ego.length - scenario.ego.base_link_to_front, 3));
+  if (!scenario.ego.vehicle_info.empty()) ego["vehicle_info"] = scenario.ego.vehicle_info;
   ego["max_speed"] = scenario.ego.max_speed;
   ego["accel"] = scenario.ego.accel;
   ego["decel"] = scenario.ego.decel;
@@ -266,6 +289,8 @@ void write_run_outputs(const std::string& dir, const Scenario& scenario, const s
     expectations.push_back({{"expectation", r.description}, {"passed", r.passed}, {"detail", r.detail}});
   summary["expectations"] = expectations;
   summary["parameters"] = parameters_json(scenario.params);
+  summary["parameter_sources"] = parameter_sources_json(scenario.params);
+  summary["parameter_files"] = parameter_files_json(scenario.params);
   summary["sumo"] = sumo_json(scenario, record.sumo);
   write_atomically((fs::path(dir) / "summary.json").string(), summary.dump(2) + "\n");
 }

@@ -6,35 +6,30 @@
 #include <sstream>
 
 #include "scenario/input_error.hpp"
+#include "scenario/parameter_keys.hpp"
+#include "sumo/number_parsing.hpp"
 #include "scenario/yaml_fields.hpp"
 
 namespace signalsim {
 namespace {
 
-const ParameterSpec* find_spec(const std::string& name) {
-  for (const ParameterSpec& spec : parameter_schema())
-    if (spec.name == name) return &spec;
-  return nullptr;
-}
-
 int line_of(const YAML::Node& node) { return node.Mark().line >= 0 ? node.Mark().line + 1 : 0; }
 
-// Converts a scalar to the spec's type, or explains why not.
-ParameterValue convert(const ParameterSpec& spec, const YAML::Node& node, const std::string& origin) {
-  const int line = line_of(node);
-  const std::string key = "parameter '" + spec.name + "'";
+// Converts a scalar to the spec's type, or explains why not. `key` is the name as written.
+ParameterValue convert(const ParameterSpec& spec, const std::string& key_as_written, const YAML::Node& node,
+                       int key_line, const std::string& file) {
+  const int line = node.IsScalar() ? line_of(node) : key_line;
+  const std::string key = "parameter '" + key_as_written + "'";
   if (!node.IsScalar())
-    throw InputError(origin, line, key + ": expected a single value, got a list or map");
+    throw InputError(file, line, key + ": expected a single value, got " + (node.IsSequence() ? "a list" : "nothing"));
   const std::string raw = node.Scalar();
   auto fail_type = [&](const char* expected) {
-    throw InputError(origin, line, key + ": expected " + expected + ", got '" + raw + "'");
+    throw InputError(file, line, key + ": expected " + expected + ", got '" + raw + "'");
   };
   auto check_range = [&](double x) {
-    if (!std::isfinite(x) || x < spec.min || x > spec.max) {
-      std::ostringstream out;
-      out << key << ": value " << raw << " is out of range [" << spec.min << ", " << spec.max << "]";
-      throw InputError(origin, line, out.str());
-    }
+    if (!std::isfinite(x) || x < spec.min || x > spec.max)
+      throw InputError(file, line, key + ": value " + raw + " is out of range [" + sumo::short_number(spec.min) + ", " +
+                                       sumo::short_number(spec.max) + "]");
   };
   if (std::holds_alternative<bool>(spec.default_value)) {
     bool value = false;
@@ -57,7 +52,7 @@ ParameterValue convert(const ParameterSpec& spec, const YAML::Node& node, const 
       std::find(spec.choices.begin(), spec.choices.end(), raw) == spec.choices.end()) {
     std::string allowed;
     for (const auto& c : spec.choices) allowed += (allowed.empty() ? "" : ", ") + c;
-    throw InputError(origin, line, key + ": '" + raw + "' is not one of " + allowed);
+    throw InputError(file, line, key + ": '" + raw + "' is not one of " + allowed);
   }
   return raw;
 }
@@ -71,57 +66,70 @@ ParameterSet::ParameterSet() {
   }
 }
 
-void ParameterSet::apply(const YAML::Node& mapping, const std::string& origin) {
+void ParameterSet::apply(const YAML::Node& mapping, const ParameterOrigin& origin) {
   if (!mapping || mapping.IsNull()) return;
-  if (!mapping.IsMap()) throw InputError(origin, line_of(mapping), "parameters must be a mapping of name: value");
-  // An Autoware parameter file wraps its values in `/**: ros__parameters:` (or `<node>:`).
-  if (mapping.size() == 1) {
-    const auto only = *mapping.begin();
-    if (only.second.IsMap() && only.second["ros__parameters"]) {
-      apply_node(only.second["ros__parameters"], "", origin);
-      check_consistency(origin);
-      return;
-    }
-  }
-  apply_node(mapping, "", origin);
-  check_consistency(origin);
+  apply_parameters(unwrap_ros_parameters(mapping, origin.file), origin);
+  check_consistency(origin.file);
 }
 
-void ParameterSet::check_consistency(const std::string& origin) const {
+void ParameterSet::apply_parameters(const YAML::Node& mapping, const ParameterOrigin& origin) {
+  const std::string& file = origin.file;
+  std::map<std::string, const FlatParameter*> given;  // schema name -> where this mapping gave it
+  std::vector<std::string> unused;
+  const std::vector<FlatParameter> flat = flatten_parameters(mapping, file);
+  for (const FlatParameter& entry : flat) {
+    const ParameterSpec* spec = find_parameter(entry.name);
+    if (!spec) {
+      if (is_parameter_group(entry.name))
+        throw InputError(file, entry.line, "'" + entry.name + "' must be a mapping of parameters, got " +
+                                               (entry.value.IsSequence() ? "a list" : "a single value"));
+      if (const auto near = suggest_parameter(entry.name))
+        throw InputError(file, entry.line, "unknown parameter '" + entry.name + "' (did you mean '" + *near + "'?)");
+      if (origin.strict || !origin.is_file)
+        throw InputError(file, entry.line, "unknown parameter '" + entry.name + "'" +
+                                               (origin.is_file ? " (strict parameters: every key must be known)" : ""));
+      unused.push_back(entry.name);
+      continue;
+    }
+    // Nested and dotted spellings, signalsim's name and Autoware's place: all one parameter.
+    if (const auto first = given.find(spec->name); first != given.end()) {
+      const FlatParameter& earlier = *first->second;
+      throw InputError(file, entry.line, "parameter '" + entry.name + "' is given twice (" +
+                                             (earlier.name == entry.name ? "lines " + std::to_string(earlier.line) + " and " +
+                                                                               std::to_string(entry.line)
+                                                                         : "also as '" + earlier.name + "' at line " +
+                                                                               std::to_string(earlier.line)) +
+                                             ")");
+    }
+    given[spec->name] = &entry;
+    ParameterValue value = convert(*spec, entry.name, entry.value, entry.line, file);
+    if (spec->name == "enable_rtc" && std::get<bool>(value))
+      throw InputError(file, entry.line,
+                       "parameter '" + entry.name + "': true is not supported (no operator approves in simulation)");
+    if (spec->name == "v2i.use_remaining_time" && std::get<bool>(value))
+      throw InputError(file, entry.line,
+                       "parameter '" + entry.name + "': true is not supported yet (spec TLJ §1.7 is optional work)");
+    values_[spec->name] = std::move(value);
+    origins_[spec->name] = origin.label.empty() ? file + ":" + std::to_string(entry.line) : origin.label;
+  }
+  if (origin.is_file && !unused.empty()) unused_.push_back({file, std::move(unused)});
+}
+
+void ParameterSet::check_consistency(const std::string& file) const {
   // Cross-parameter rule (spec TLJ §1.6): the restart-suppression window must not be inverted.
   if (number("restart_suppression.min_behind_distance_to_stop") >
       number("restart_suppression.max_behind_distance_to_stop"))
-    throw InputError(origin, 0,
+    throw InputError(file, 0,
                      "restart_suppression.min_behind_distance_to_stop is greater than "
                      "restart_suppression.max_behind_distance_to_stop");
   // The lane change's prepare duration lies in [min, max] (spec TSD §8.2).
   if (number("min_prepare_duration") > number("max_prepare_duration"))
-    throw InputError(origin, 0, "min_prepare_duration is greater than max_prepare_duration");
+    throw InputError(file, 0, "min_prepare_duration is greater than max_prepare_duration");
 }
 
-void ParameterSet::apply_node(const YAML::Node& node, const std::string& prefix, const std::string& origin) {
-  reject_duplicate_keys(node, origin, prefix.empty() ? "" : prefix.substr(0, prefix.size() - 1));
-  for (const auto& entry : node) {
-    const std::string name = prefix + entry.first.as<std::string>();
-    const ParameterSpec* spec = find_spec(name);
-    if (!spec && entry.second.IsMap()) {
-      apply_node(entry.second, name + ".", origin);
-      continue;
-    }
-    if (!spec) throw InputError(origin, line_of(entry.first), "unknown parameter '" + name + "'");
-    ParameterValue value = convert(*spec, entry.second, origin);
-    if (spec->name == "enable_rtc" && std::get<bool>(value))
-      throw InputError(origin, line_of(entry.second),
-                       "parameter 'enable_rtc': true is not supported (no operator approves in simulation)");
-    if (spec->name == "v2i.use_remaining_time" && std::get<bool>(value))
-      throw InputError(origin, line_of(entry.second),
-                       "parameter 'v2i.use_remaining_time': true is not supported yet (spec TLJ §1.7 is optional work)");
-    values_[name] = std::move(value);
-    origins_[name] = origin;
-  }
+void ParameterSet::apply_file(const std::string& path, bool strict) {
+  apply(load_yaml_file(path, "parameter file"), ParameterOrigin{path, "", true, strict});
 }
-
-void ParameterSet::apply_file(const std::string& path) { apply(load_yaml_file(path, "parameter file"), path); }
 
 double ParameterSet::number(const std::string& name) const {
   const ParameterValue& v = values_.at(name);

@@ -25,6 +25,28 @@ struct ParameterSpec {
   std::vector<std::string> choices;   ///< allowed values for strings (empty: any)
   std::string unit;                   ///< "m", "s", "deg", "m/s", ... or "-"
   std::string spec_section;           ///< where the parameter is defined, e.g. "TSD §10"
+  /// Where Autoware's shipped parameter file keeps it, module namespace included
+  /// (`lane_change.trajectory.max_prepare_duration`); empty when that is `name` itself (a top-level
+  /// key of its file, e.g. behavior_path_planner.param.yaml's) or signalsim's own parameter.
+  std::string autoware_key;
+};
+
+/// Where a mapping of parameters comes from, for messages, strictness and the summary.
+struct ParameterOrigin {
+  std::string file;   ///< named in messages ("--set" for the command line)
+  /// How the summary names the source of a value: empty for "<file>:<line>" (a parameter file),
+  /// else e.g. "country jp", "set", "--set".
+  std::string label;
+  /// A parameter file (Autoware's, as shipped): keys signalsim does not use are listed, not refused,
+  /// unless `strict`. Any other mapping (a country preset, params.set, --set) is always strict.
+  bool is_file = false;
+  bool strict = true;
+};
+
+/// The keys of one parameter file that signalsim does not use (not an error; listed once).
+struct UnusedParameters {
+  std::string file;
+  std::vector<std::string> keys;  ///< dotted names, in file order
 };
 
 /// Every parameter signalsim knows, in a fixed order.
@@ -35,12 +57,17 @@ class ParameterSet {
  public:
   ParameterSet();  ///< the schema defaults
 
-  /// Applies a YAML mapping (flat keys, nested maps joined with '.', an optional Autoware
-  /// `/**: ros__parameters:` wrapper). Throws InputError naming `origin`, the line and the key for
-  /// an unknown key, a wrong type or an out-of-range value.
-  void apply(const YAML::Node& mapping, const std::string& origin);
-  /// Reads a parameter file and applies it. Throws InputError (missing file, malformed YAML, ...).
-  void apply_file(const std::string& path);
+  /// Applies a YAML mapping (flat keys, nested maps and dotted keys alike, an optional Autoware
+  /// `/**: ros__parameters:` wrapper). A parameter is found by signalsim's name or by its Autoware
+  /// place (ParameterSpec::autoware_key). Throws InputError naming the origin's file, the line and
+  /// the key as written for a wrong type, an out-of-range value, a parameter given twice, a key
+  /// close to a known name ("did you mean"), and, when strict, any unknown key.
+  void apply(const YAML::Node& mapping, const ParameterOrigin& origin);
+  /// A strict mapping named `file` in messages and summaries (a preset, params.set, --set).
+  void apply(const YAML::Node& mapping, const std::string& file) { apply(mapping, ParameterOrigin{file, file}); }
+  /// Reads a parameter file and applies it (unknown keys listed unless `strict`). Throws InputError
+  /// (missing file, malformed YAML, ...).
+  void apply_file(const std::string& path, bool strict);
 
   double number(const std::string& name) const;
   int integer(const std::string& name) const;
@@ -49,13 +76,17 @@ class ParameterSet {
 
   /// name -> value, in schema order, for summaries.
   const std::map<std::string, ParameterValue>& values() const { return values_; }
+  /// Where the value of `name` came from: "default", "<file>:<line>", "country jp", "set", "--set".
   const std::string& origin(const std::string& name) const { return origins_.at(name); }
+  /// Per parameter file applied with unknown keys allowed: the keys signalsim does not use.
+  const std::vector<UnusedParameters>& unused() const { return unused_; }
 
  private:
-  void apply_node(const YAML::Node& node, const std::string& prefix, const std::string& origin);
-  void check_consistency(const std::string& origin) const;
+  void apply_parameters(const YAML::Node& mapping, const ParameterOrigin& origin);
+  void check_consistency(const std::string& file) const;
   std::map<std::string, ParameterValue> values_;
   std::map<std::string, std::string> origins_;
+  std::vector<UnusedParameters> unused_;
 };
 
 /// The judge's parameters from a resolved set.

@@ -6,6 +6,9 @@
 
 #include "scenario/countries.hpp"
 #include "scenario/input_error.hpp"
+#include "scenario/notes.hpp"
+#include "scenario/vehicle_info.hpp"
+#include "sumo/number_parsing.hpp"
 #include "sumo/file_paths.hpp"
 #include "scenario/sumo_inputs.hpp"
 #include "scenario/yaml_fields.hpp"
@@ -122,6 +125,30 @@ PerceptionModelParameters parse_perception(const YAML::Node& node, const std::st
   }
   f.finish();
   return p;
+}
+
+// The footprint from Autoware's vehicle description; a key the scenario gives wins (and is noted).
+void apply_vehicle_info(const VehicleInfo& info, int line, const std::string& path, EgoSpec& ego) {
+  ego.vehicle_info = info.file;
+  const std::pair<const char*, double> derived[] = {
+      {"length", info.length()}, {"width", info.width()}, {"base_link_to_front", info.base_link_to_front()}};
+  for (const auto& [key, value] : derived) {
+    double& field = key == std::string("length") ? ego.length : key == std::string("width") ? ego.width : ego.base_link_to_front;
+    if (ego.given.count(key)) {
+      note_once(path + ":" + std::to_string(ego.lines[key]) + ": ego." + key + " " + sumo::short_number(field) +
+                " replaces " + sumo::short_number(value) + " from vehicle_info " + info.file);
+      continue;
+    }
+    field = value;
+    ego.given.insert(key);  // given, through the file (a taken-over vehicle's vType must agree)
+    ego.lines[key] = line;
+    ego.from_vehicle_info.insert(key);
+  }
+  if (ego.length < 0.5 || ego.length > 30.0 || ego.width < 0.3 || ego.width > 5.0)
+    throw InputError(info.file, info.lines.at("wheel_base"),
+                     "the vehicle is " + sumo::short_number(ego.length) + " m x " + sumo::short_number(ego.width) +
+                         " m (length 0.5-30 m, width 0.3-5 m)");
+  if (!info.unused.empty()) note_unused_parameters({info.file, info.unused});
 }
 
 // Top-level scenario keys; any other override key is a parameter name.
@@ -253,6 +280,9 @@ Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrid
   s.ego.length = ego.number("length", 4.5, 0.5, 30.0);
   s.ego.width = ego.number("width", 1.8, 0.3, 5.0);
   s.ego.base_link_to_front = ego.number("base_link_to_front", kBaseLinkShare * s.ego.length, 0.0, 30.0);
+  if (ego.has("vehicle_info"))
+    apply_vehicle_info(load_vehicle_info(sumo::resolve_beside(path, ego.text("vehicle_info"))),
+                       ego.line_of("vehicle_info"), path, s.ego);
   if (s.ego.base_link_to_front > s.ego.length)
     ego.fail("base_link_to_front", "is longer than the vehicle (ego.length)");
   s.ego.accel = ego.number("accel", 1.0, 0.1, 10.0);
@@ -370,17 +400,23 @@ Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrid
   YAML::Node set;
   if (top.has("params")) {
     YamlFields params(top.node("params"), path, "params");
-    for (const std::string& file : params.text_list("files")) s.params.apply_file(sumo::resolve_beside(path, file));
+    // strict: every key of a parameter file must be one signalsim uses (else they are listed).
+    const YAML::Node strict = params.node("strict");
+    if (strict && !(strict.IsScalar() && YAML::convert<bool>::decode(strict, s.strict_params)))
+      params.fail("strict", "expected true or false");
+    for (const std::string& file : params.text_list("files"))
+      s.params.apply_file(sumo::resolve_beside(path, file), s.strict_params);
     const YAML::Node given = params.node("set");
     if (given) set.reset(given);  // (assigning an absent node would throw)
     params.finish();
   }
   if (!s.country.empty()) {
     const Country country = load_country(s.country);
-    s.params.apply(country.parameters, country.path);
+    s.params.apply(country.parameters, ParameterOrigin{country.path, "country " + country.code});
   }
-  if (set && !set.IsNull()) s.params.apply(set, path);
-  if (parameter_overrides.size() > 0) s.params.apply(parameter_overrides, "--set");
+  if (set && !set.IsNull()) s.params.apply(set, ParameterOrigin{path, "set"});
+  if (parameter_overrides.size() > 0) s.params.apply(parameter_overrides, ParameterOrigin{"--set", "--set"});
+  for (const UnusedParameters& file : s.params.unused()) note_unused_parameters(file);
 
   const YAML::Node expect = top.node("expect");
   if (expect && !expect.IsNull()) {

@@ -41,6 +41,8 @@ struct EgoSpec {
   int depart_lane = -1;
   /// The keys the scenario (or --set) gave; the others are defaults, or SUMO's for a taken-over ego.
   std::set<std::string> given;
+  std::string vehicle_info;                ///< `vehicle_info:` (resolved), empty when none
+  std::set<std::string> from_vehicle_info; ///< of `given`: the keys the vehicle_info file set
   std::map<std::string, int> lines;  ///< the scenario file's line of each given key (0: from --set)
 };
 /// base_link_to_front / length when the scenario gives no base_link_to_front: Autoware's default
@@ -204,6 +206,7 @@ struct Scenario {
   PerceptionModelParameters perception;  ///< `perception:`; seeded with `seed`; all faults off by default
   std::map<std::string, double> light_offsets;  ///< `light_offsets: {tls: seconds}` program shifts
   ParameterSet params;                  ///< defaults, params.files, the country, params.set, overrides
+  bool strict_params = false;           ///< params.strict (--strict-params): unknown file keys refused
   std::vector<LaneChangeManeuver> lane_changes;   ///< from `maneuvers` (at most one per edge)
   std::vector<ObstacleSpec> obstacles;
   std::vector<AvoidManeuver> avoids;              ///< from `maneuvers`

@@ -110,13 +110,15 @@ std::map<std::string, std::string> ego_sources(const Scenario& scenario, const s
   const std::string sumo_type = "vType '" + vehicle_type + "'";
   std::map<std::string, std::string> out;
   const auto source = [&](const char* key, bool from_sumo) {
-    out[key] = ego.given.count(key) ? "scenario" : (taken && from_sumo ? sumo_type : "default");
+    out[key] = ego.from_vehicle_info.count(key) ? "vehicle_info " + ego.vehicle_info
+               : ego.given.count(key)           ? "scenario"
+               : (taken && from_sumo ? sumo_type : "default");
   };
   source("route", true);
   for (const char* key : {"length", "width", "max_speed", "accel", "emergency_decel"}) source(key, true);
   source("decel", false);
   if (!ego.given.count("base_link_to_front")) out["base_link_to_front"] = "length x 3.7/4.5";
-  else out["base_link_to_front"] = "scenario";
+  else source("base_link_to_front", false);
   if (taken) {
     out["route"] = ego.given.count("route") ? "scenario (equal to its route file's)" : "route file";
     for (const char* key : {"depart_lane", "depart_pos", "depart_speed"}) out[key] = "SUMO (its departure)";

@@ -81,7 +81,9 @@ double distance_to_stop_point(double front_to_stop_line, double stop_margin) {
   return front_to_stop_line - stop_margin;  // spec TLJ §9.2
 }
 
-bool is_vehicle_stopped(double velocity) { return std::abs(velocity) < kStopVelocityEps; }
+// Autoware compares the signed speed (`v >= stop_velocity` means moving): a reversing ego counts as
+// stopped.
+bool is_vehicle_stopped(double velocity) { return velocity < kStopVelocityEps; }
 
 std::string_view to_string(JudgeState s) {
   switch (s) {

@@ -110,8 +110,8 @@ void validate(const TrafficLightJudgeParameters& params);
 /// stop line minus the margin. Equals Autoware's base_link-referenced distance to the stop point.
 double distance_to_stop_point(double front_to_stop_line, double stop_margin);
 
-/// Autoware's PlannerData::isVehicleStopped(0.0): only the newest speed sample, |v| < 1e-3 m/s
-/// (spec TLJ §1.6). Offered to the caller for TrafficLightJudgeInput::is_vehicle_stopped.
+/// Autoware's PlannerData::isVehicleStopped(0.0): only the newest speed sample, v < 1e-3 m/s, signed
+/// (spec TLJ §1.6; a reversing ego counts as stopped, as in Autoware). Offered to the caller for TrafficLightJudgeInput::is_vehicle_stopped.
 bool is_vehicle_stopped(double velocity);
 
 /// Module state (spec TLJ §1.2). There is no STOPPED or PASSED state.

@@ -384,7 +384,9 @@ TEST(RestartSuppression, VehicleStoppedHelper) {
   EXPECT_TRUE(is_vehicle_stopped(0.0009));
   EXPECT_TRUE(is_vehicle_stopped(-0.0009));
   EXPECT_FALSE(is_vehicle_stopped(0.001));
-  EXPECT_FALSE(is_vehicle_stopped(-0.5));
+  // Autoware's isVehicleStopped tests the signed speed: reversing is "stopped".
+  EXPECT_TRUE(is_vehicle_stopped(-0.5));
+  EXPECT_TRUE(is_vehicle_stopped(-0.001));
 }
 
 // ---- §2.3 predicates at their boundaries and §2.6 zones ------------------------------------------

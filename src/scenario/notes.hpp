@@ -1,0 +1,26 @@
+// Notes on stderr: facts about the input a user should know that are not errors (keys of an
+// Autoware parameter file signalsim does not use, scenario keys that replace a vehicle_info value).
+// Each note is printed once per process (a batch loads every scenario in the parent, its workers run
+// quietly), and never when notes are turned off (`run --quiet`).
+#pragma once
+
+#include <string>
+
+#include "scenario/parameters.hpp"
+
+namespace signalsim {
+
+/// Turns notes on (the default) or off for this process.
+void set_notes_enabled(bool enabled);
+
+/// Prints "signalsim: note: <text>" on stderr unless a note with the same text was printed before.
+void note_once(const std::string& text);
+
+/// One note line for a parameter file's unused keys: the count and the first few names.
+void note_unused_parameters(const UnusedParameters& unused);
+
+/// The note's text (for tests): "<file>: N keys signalsim does not use: a, b, ... (+M more; all in
+/// summary.json parameter_files)".
+std::string unused_parameters_note(const UnusedParameters& unused);
+
+}  // namespace signalsim

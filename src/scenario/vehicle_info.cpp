@@ -1,0 +1,58 @@
+// Reading Autoware's vehicle_info.param.yaml.
+#include "scenario/vehicle_info.hpp"
+
+#include <cmath>
+
+#include <yaml-cpp/yaml.h>
+
+#include "scenario/input_error.hpp"
+#include "scenario/parameter_keys.hpp"
+#include "scenario/yaml_fields.hpp"
+
+namespace signalsim {
+namespace {
+
+// The dimensions signalsim uses, then the keys Autoware's file also has (read by other nodes).
+constexpr const char* kUsed[] = {"wheel_base", "front_overhang", "rear_overhang",
+                                 "wheel_tread", "left_overhang", "right_overhang"};
+constexpr const char* kKnownOther[] = {"wheel_radius", "wheel_width", "vehicle_height", "max_steer_angle"};
+constexpr double kMaxDimension = 30.0;  // [m] as ego.length's upper bound
+
+}  // namespace
+
+VehicleInfo load_vehicle_info(const std::string& path) {
+  const YAML::Node mapping = unwrap_ros_parameters(load_yaml_file(path, "vehicle_info file"), path);
+  VehicleInfo info;
+  info.file = path;
+  std::map<std::string, double*> fields = {
+      {"wheel_base", &info.wheel_base},   {"front_overhang", &info.front_overhang},
+      {"rear_overhang", &info.rear_overhang}, {"wheel_tread", &info.wheel_tread},
+      {"left_overhang", &info.left_overhang}, {"right_overhang", &info.right_overhang}};
+  for (const FlatParameter& entry : flatten_parameters(mapping, path)) {
+    const auto field = fields.find(entry.name);
+    if (field == fields.end()) {
+      bool known = false;
+      for (const char* other : kKnownOther) known = known || entry.name == other;
+      for (const char* name : kUsed)
+        if (!known && edit_distance(entry.name, name) <= 1)
+          throw InputError(path, entry.line, "unknown key '" + entry.name + "' (did you mean '" + name + "'?)");
+      info.unused.push_back(entry.name);
+      continue;
+    }
+    double value = 0.0;
+    if (!entry.value.IsScalar() || entry.value.Tag() == "!" || !YAML::convert<double>::decode(entry.value, value) ||
+        !std::isfinite(value))
+      throw InputError(path, entry.line, "'" + entry.name + "': expected a number of metres");
+    const bool must_be_positive = entry.name == "wheel_base" || entry.name == "wheel_tread";
+    if (value < 0.0 || (must_be_positive && value <= 0.0) || value > kMaxDimension)
+      throw InputError(path, entry.line, "'" + entry.name + "': " + entry.value.Scalar() + " m is out of range " +
+                                             (must_be_positive ? "(0, 30]" : "[0, 30]"));
+    *field->second = value;
+    info.lines[entry.name] = entry.line;
+  }
+  for (const char* name : kUsed)
+    if (!info.lines.count(name)) throw InputError(path, 0, std::string("missing key '") + name + "'");
+  return info;
+}
+
+}  // namespace signalsim
