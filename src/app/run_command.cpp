@@ -87,13 +87,16 @@ int run(const RunOptions& options) {
   std::optional<Scenario> scenario;
   // Ctrl-C / SIGTERM unwind the run (sumo-gui stopped by its PID, an error summary written).
   sumo::install_interruption_handlers();
-  set_notes_enabled(!options.quiet);
+  // Notes only once the input is known to be good: bad input is one line.
+  set_notes_enabled(false);
   try {
     scenario = load_scenario(options.scenario_path, options.overrides);
     const RunContext context = run_context(options);
     const sumo::NetIndex net = sumo::NetIndex::load(scenario->net);
     PlannedRun planned = plan_run(*scenario, net);
     check_expectations_apply(planned.scenario, planned.plan.map);
+    set_notes_enabled(!options.quiet);
+    for (const std::string& note : scenario->notes) note_once(note);
     // SUMO writes into the run directory while it runs: a previous run's files must go first, so
     // that an interrupted or failed run never leaves them looking like this one's.
     clear_run_outputs(options.out_dir);

@@ -128,15 +128,16 @@ PerceptionModelParameters parse_perception(const YAML::Node& node, const std::st
 }
 
 // The footprint from Autoware's vehicle description; a key the scenario gives wins (and is noted).
-void apply_vehicle_info(const VehicleInfo& info, int line, const std::string& path, EgoSpec& ego) {
+void apply_vehicle_info(const VehicleInfo& info, int line, const std::string& path, EgoSpec& ego,
+                        std::vector<std::string>& notes) {
   ego.vehicle_info = info.file;
   const std::pair<const char*, double> derived[] = {
       {"length", info.length()}, {"width", info.width()}, {"base_link_to_front", info.base_link_to_front()}};
   for (const auto& [key, value] : derived) {
     double& field = key == std::string("length") ? ego.length : key == std::string("width") ? ego.width : ego.base_link_to_front;
     if (ego.given.count(key)) {
-      note_once(path + ":" + std::to_string(ego.lines[key]) + ": ego." + key + " " + sumo::short_number(field) +
-                " replaces " + sumo::short_number(value) + " from vehicle_info " + info.file);
+      notes.push_back(path + ":" + std::to_string(ego.lines[key]) + ": ego." + key + " " + sumo::short_number(field) +
+                      " replaces " + sumo::short_number(value) + " from vehicle_info " + info.file);
       continue;
     }
     field = value;
@@ -148,7 +149,7 @@ void apply_vehicle_info(const VehicleInfo& info, int line, const std::string& pa
     throw InputError(info.file, info.lines.at("wheel_base"),
                      "the vehicle is " + sumo::short_number(ego.length) + " m x " + sumo::short_number(ego.width) +
                          " m (length 0.5-30 m, width 0.3-5 m)");
-  if (!info.unused.empty()) note_unused_parameters({info.file, info.unused});
+  if (!info.unused.empty()) notes.push_back(unused_parameters_note({info.file, info.unused}));
 }
 
 // Top-level scenario keys; any other override key is a parameter name.
@@ -282,7 +283,7 @@ Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrid
   s.ego.base_link_to_front = ego.number("base_link_to_front", kBaseLinkShare * s.ego.length, 0.0, 30.0);
   if (ego.has("vehicle_info"))
     apply_vehicle_info(load_vehicle_info(sumo::resolve_beside(path, ego.text("vehicle_info"))),
-                       ego.line_of("vehicle_info"), path, s.ego);
+                       ego.line_of("vehicle_info"), path, s.ego, s.notes);
   if (s.ego.base_link_to_front > s.ego.length)
     ego.fail("base_link_to_front", "is longer than the vehicle (ego.length)");
   s.ego.accel = ego.number("accel", 1.0, 0.1, 10.0);
@@ -416,7 +417,7 @@ Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrid
   }
   if (set && !set.IsNull()) s.params.apply(set, ParameterOrigin{path, "set"});
   if (parameter_overrides.size() > 0) s.params.apply(parameter_overrides, ParameterOrigin{"--set", "--set"});
-  for (const UnusedParameters& file : s.params.unused()) note_unused_parameters(file);
+  for (const UnusedParameters& file : s.params.unused()) s.notes.push_back(unused_parameters_note(file));
 
   const YAML::Node expect = top.node("expect");
   if (expect && !expect.IsNull()) {
@@ -424,6 +425,7 @@ Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrid
     for (std::size_t i = 0; i < expect.size(); ++i) s.expect.push_back(parse_expectation(expect[i], path, i));
   }
   top.finish();
+  for (const std::string& note : s.notes) note_once(note);  // the scenario loaded: say what it ignored
   return s;
 }
 

@@ -206,6 +206,9 @@ struct Scenario {
   PerceptionModelParameters perception;  ///< `perception:`; seeded with `seed`; all faults off by default
   std::map<std::string, double> light_offsets;  ///< `light_offsets: {tls: seconds}` program shifts
   ParameterSet params;                  ///< defaults, params.files, the country, params.set, overrides
+  /// Facts about the input that are not errors (unused keys of parameter files, vehicle_info values
+  /// replaced by ego keys); printed once each as "signalsim: note: ..." (scenario/notes).
+  std::vector<std::string> notes;
   bool strict_params = false;           ///< params.strict (--strict-params): unknown file keys refused
   std::vector<LaneChangeManeuver> lane_changes;   ///< from `maneuvers` (at most one per edge)
   std::vector<ObstacleSpec> obstacles;
