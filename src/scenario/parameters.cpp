@@ -113,9 +113,6 @@ void ParameterSet::apply_node(const YAML::Node& node, const std::string& prefix,
     if (spec->name == "enable_rtc" && std::get<bool>(value))
       throw InputError(origin, line_of(entry.second),
                        "parameter 'enable_rtc': true is not supported (no operator approves in simulation)");
-    if (spec->name == "v2i.use_remaining_time" && std::get<bool>(value))
-      throw InputError(origin, line_of(entry.second),
-                       "parameter 'v2i.use_remaining_time': true is not supported yet (spec TLJ §1.7 is optional work)");
     values_[name] = std::move(value);
     origins_[name] = origin;
   }
@@ -192,6 +189,10 @@ TrafficLightJudgeParameters traffic_light_parameters(const ParameterSet& set) {
   p.max_accel = set.number("max_accel");
   p.max_jerk = set.number("max_jerk");
   p.delay_response_time = set.number("delay_response_time");
+  p.v2i.use_remaining_time = set.boolean("v2i.use_remaining_time");  // spec TLJ §1.7
+  p.v2i.last_time_allowed_to_pass = set.number("v2i.last_time_allowed_to_pass");
+  p.v2i.velocity_threshold = set.number("v2i.velocity_threshold");
+  p.v2i.required_time_to_departure = set.number("v2i.required_time_to_departure");
   return p;
 }
 
