@@ -107,7 +107,7 @@ std::vector<TimelineRow> read_timeline_csv(const std::string& path) {
   const int c_x = col("x"), c_y = col("y"), c_edge = col("edge"), c_lane = col("lane"), c_lat = col("lateral_offset"),
             c_source = col("blinker_source"), c_signals = col("sumo_signals"), c_tl = col("tl_id"),
             c_state = col("tl_state"), c_decision = col("tl_decision"), c_zone = col("zone"),
-            c_planned = col("planned_offset");
+            c_planned = col("planned_offset"), c_v2i = col("v2i_time_to_red");
   std::vector<TimelineRow> rows;
   for (std::size_t r = 1; r < table.size(); ++r) {
     const auto& f = table[r];
@@ -133,6 +133,7 @@ std::vector<TimelineRow> read_timeline_csv(const std::string& path) {
       row.tl_decision = parse_enum(f[c_decision], JudgeDecision::EmergencyStop, JudgeDecision::None);
     if (c_zone >= 0) row.zone = parse_enum(f[c_zone], JudgeZone::Slow, JudgeZone::None);
     if (c_planned >= 0 && !f[c_planned].empty()) row.planned_offset = number(f[c_planned], path, r + 1);
+    if (c_v2i >= 0 && !f[c_v2i].empty()) row.v2i_time_to_red = number(f[c_v2i], path, r + 1);  // V2I runs only
     rows.push_back(std::move(row));
   }
   return rows;

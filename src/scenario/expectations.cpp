@@ -157,6 +157,33 @@ ExpectationResult check(const ExpectEmergencyStopAtLight& e, const RouteMap&, co
   return {"", false, "no emergency stop was ordered at light " + e.light};
 }
 
+ExpectationResult check(const ExpectNeverInDilemmaZone& e, const RouteMap&, const RunRecord& record) {
+  std::size_t judged = 0;
+  for (const TimelineRow& row : record.rows) {
+    if (row.tl_id != e.light || !row.stop_distance) continue;
+    ++judged;
+    if (row.zone == JudgeZone::DilemmaZone || row.tl_decision == JudgeDecision::EmergencyStop)
+      return {"", false, std::string(to_string(row.tl_decision)) + " in zone " + std::string(to_string(row.zone)) +
+                             " at " + at(row)};
+  }
+  if (judged == 0) return {"", false, "the judge never judged light " + e.light};
+  return {"", true, std::to_string(judged) + " judged steps, none in the dilemma zone"};
+}
+
+ExpectationResult check(const ExpectV2iStopAtLight& e, const RouteMap&, const RunRecord& record) {
+  for (const TimelineRow& row : record.rows)
+    if (row.tl_id == e.light && row.v2i_stop && is_stop(row.tl_decision)) {
+      std::ostringstream out;
+      out.setf(std::ios::fixed);
+      out.precision(2);
+      out << std::string(to_string(row.tl_decision)) << " for V2I at " << at(row) << " (light " << row.tl_state;
+      if (row.v2i_time_to_red) out << ", red in " << *row.v2i_time_to_red << " s";
+      out << ")";
+      return {"", true, out.str()};
+    }
+  return {"", false, "the judge never stopped for a V2I prediction at light " + e.light};
+}
+
 ExpectationResult check(const ExpectNeverRunsRed&, const RouteMap&, const RunRecord& record) {
   if (record.red_violations.empty() && !record.arrived)
     return {"", false, "the run ended before the ego arrived: later stop lines are unchecked"};
@@ -192,6 +219,8 @@ void check_expectations_apply(const Scenario& scenario, const RouteMap& route) {
     if (const auto* e = std::get_if<ExpectStopsBeforeLight>(&scenario.expect[i])) light = e->light;
     if (const auto* e = std::get_if<ExpectPassesLight>(&scenario.expect[i])) light = e->light;
     if (const auto* e = std::get_if<ExpectEmergencyStopAtLight>(&scenario.expect[i])) light = e->light;
+    if (const auto* e = std::get_if<ExpectNeverInDilemmaZone>(&scenario.expect[i])) light = e->light;
+    if (const auto* e = std::get_if<ExpectV2iStopAtLight>(&scenario.expect[i])) light = e->light;
     if (!light.empty() && !stop_line_of(light, route))
       throw InputError(scenario.path, 0,
                        "expect[" + std::to_string(i) + "]: traffic light '" + light + "' is not on the ego's route");

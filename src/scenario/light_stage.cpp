@@ -12,13 +12,37 @@ PerceptionModelParameters perception_for(PerceptionModelParameters p, std::size_
   return p;
 }
 
+// Each light's V2I channel has its own stream too (a message of one light never reaches another).
+V2iChannelParameters channel_for(V2iChannelParameters p, std::size_t index) {
+  p.seed ^= 0x9E3779B97F4A7C15ULL * (index + 1);
+  return p;
+}
+
 }  // namespace
 
+std::vector<SignalPrediction> v2i_predictions(const std::vector<sumo::LightProgram>& programs,
+                                              const sumo::LightTiming& timing, const sumo::ApproachLight& light) {
+  std::vector<SignalPrediction> out;
+  const sumo::LightProgram* program = sumo::find_program(programs, timing.program);
+  if (!program) return out;
+  for (const sumo::PhasePrediction& phase : sumo::predict_phases(*program, timing.phase, timing.next_switch))
+    if (auto elements = sumo::signal_elements(phase.state, light)) out.push_back({phase.stamp, std::move(*elements)});
+  return out;
+}
+
 TrafficLightStage::TrafficLightStage(std::vector<sumo::ApproachLight> lights, const TrafficLightJudgeParameters& judge,
-                                     const PerceptionModelParameters& perception, double horizon)
-    : judge_params_(judge), horizon_(horizon) {
-  for (std::size_t i = 0; i < lights.size(); ++i)
-    lights_.push_back({std::move(lights[i]), PerceptionModel(perception_for(perception, i)), std::nullopt, false});
+                                     const PerceptionModelParameters& perception, double horizon, V2iSource v2i)
+    : judge_params_(judge), horizon_(horizon), v2i_(std::move(v2i)) {
+  for (std::size_t i = 0; i < lights.size(); ++i) {
+    lights_.push_back({std::move(lights[i]), PerceptionModel(perception_for(perception, i)), std::nullopt, false,
+                       std::nullopt, std::nullopt});
+    // The channel counts a message while the judge would count a camera result (tl_state_timeout).
+    if (judge_params_.v2i.use_remaining_time) {
+      V2iChannelParameters channel = channel_for(v2i_.channel, i);
+      channel.max_age = judge_params_.tl_state_timeout;
+      lights_.back().v2i.emplace(channel);
+    }
+  }
 }
 
 const sumo::ApproachLight* TrafficLightStage::next_light() const {
@@ -57,6 +81,10 @@ std::vector<LightStep> TrafficLightStage::step(double now, double s_front, doubl
       in.turn_direction = sumo::judge_turn_direction(t.light.direction);
       in.is_turn_lane = t.light.direction == TurnDirection::Left || t.light.direction == TurnDirection::Right;
       in.has_static_arrow = t.light.has_arrow;
+      if (t.v2i) {  // spec TLJ §1.7: the program once, the timing every step
+        if (!t.programs) t.programs = v2i_.programs_of(t.light.tls_id);
+        in.predictions = t.v2i->step(v2i_predictions(*t.programs, v2i_.timing_of(t.light.tls_id), t.light), now);
+      }
       step.result = t.judge->step(in);
       step.judged = true;
     }

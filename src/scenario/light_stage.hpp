@@ -2,6 +2,9 @@
 // the horizon ahead (down to 2 m behind the front) has its own judge and its own perception model
 // (spec TLJ §1.1: one scene module per light on the path); a light is dropped once the front is
 // more than 2 m past its stop line (the judge's GO_OUT dead line, spec TLJ §1.2), whatever its state.
+// With V2I on (spec TLJ §1.7) each light also has its own V2I channel: its programs are read once,
+// when the light is first judged, its timing every step, and the predicted phases, as signal elements
+// of the ego's approach, reach its judge through the channel's faults.
 #pragma once
 
 #include <functional>
@@ -10,8 +13,10 @@
 #include <vector>
 
 #include "sumo/approach_lights.hpp"
+#include "sumo/signal_timing.hpp"
 #include "traffic_light/perception_model.hpp"
 #include "traffic_light/traffic_light_judge.hpp"
+#include "traffic_light/v2i_channel.hpp"
 
 namespace signalsim {
 
@@ -25,10 +30,24 @@ struct LightStep {
   TrafficLightJudgeResult result;
 };
 
+/// Where V2I predictions come from (used only with judge.v2i.use_remaining_time).
+struct V2iSource {
+  V2iChannelParameters channel;  ///< its faults and seed (each light's channel is seeded apart)
+  std::function<std::vector<sumo::LightProgram>(const std::string&)> programs_of;  ///< read once per light
+  std::function<sumo::LightTiming(const std::string&)> timing_of;                  ///< every step
+};
+
+/// The V2I predictions of one light as signal elements of this approach (spec TLJ §1.7, SUMO §3):
+/// the program's predicted phases (signal_timing.hpp) from `timing`, each turned into what the ego's
+/// approach shows (phases where the ego's link is off are left out). Empty when the running program
+/// is not among `programs` or its phase is out of range (e.g. a state set by TraCI). Never throws.
+std::vector<SignalPrediction> v2i_predictions(const std::vector<sumo::LightProgram>& programs,
+                                              const sumo::LightTiming& timing, const sumo::ApproachLight& light);
+
 class TrafficLightStage {
  public:
   TrafficLightStage(std::vector<sumo::ApproachLight> lights, const TrafficLightJudgeParameters& judge,
-                    const PerceptionModelParameters& perception, double horizon);
+                    const PerceptionModelParameters& perception, double horizon, V2iSource v2i = {});
 
   /// One step for every light in the window, nearest first (empty when none). `state_of(tls)` returns
   /// a light's live state string.
@@ -44,11 +63,14 @@ class TrafficLightStage {
     PerceptionModel perception;
     std::optional<TrafficLightJudge> judge;
     bool dropped = false;
+    std::optional<V2iChannel> v2i;                ///< with V2I on
+    std::optional<std::vector<sumo::LightProgram>> programs;  ///< read when first judged
   };
   std::vector<Tracked> lights_;
   std::size_t first_ = 0;  // lights before this one are all dropped
   TrafficLightJudgeParameters judge_params_;
   double horizon_;
+  V2iSource v2i_;
 };
 
 /// Whether the next junction the ego enters is a light showing the ego's link red or yellow: the ego

@@ -119,11 +119,12 @@ RunStatus run_status(const std::vector<ExpectationResult>& results) {
   return RunStatus::Passed;
 }
 
-void write_timeline_csv(const std::string& path, const std::vector<TimelineRow>& rows) {
+void write_timeline_csv(const std::string& path, const std::vector<TimelineRow>& rows, bool v2i_column) {
   std::string out =
       "time,s_front,x,y,speed,accel,edge,lane,lateral_offset,blinker,blinker_source,sumo_signals,"
       "tl_id,tl_state,tl_observed,tl_decision,stop_distance,judge_distance,yellow_lamp_line,zone,stop_s,"
-      "stop_level,planned_offset\n";
+      "stop_level,planned_offset";
+  out += v2i_column ? ",v2i_time_to_red\n" : "\n";
   out.reserve(rows.size() * 120);
   for (const TimelineRow& r : rows) {
     out += fixed(r.time, 3) + ',' + fixed(r.s_front, 3) + ',' + fixed(r.x, 3) + ',' + fixed(r.y, 3) + ',' +
@@ -139,7 +140,9 @@ void write_timeline_csv(const std::string& path, const std::vector<TimelineRow>&
            (r.zone == JudgeZone::None ? std::string() : std::string(to_string(r.zone))) + ',' +
            (r.stop_s ? fixed(*r.stop_s, 3) : std::string()) + ',' +
            (r.stop_level ? std::string(to_string(*r.stop_level)) : std::string()) + ',' +
-           (r.planned_offset ? fixed(*r.planned_offset, 3) : std::string()) + '\n';
+           (r.planned_offset ? fixed(*r.planned_offset, 3) : std::string());
+    if (v2i_column) out += ',' + (r.v2i_time_to_red ? fixed(*r.v2i_time_to_red, 3) : std::string());
+    out += '\n';
   }
   write_atomically(path, out);
 }
@@ -157,7 +160,7 @@ void write_run_outputs(const std::string& dir, const Scenario& scenario, const s
                        RunStatus status) {
   fs::create_directories(dir);
   fs::remove(fs::path(dir) / "summary.json");  // a stale summary must never describe new files
-  write_timeline_csv((fs::path(dir) / "timeline.csv").string(), record.rows);
+  write_timeline_csv((fs::path(dir) / "timeline.csv").string(), record.rows, record.v2i);
   write_events_csv((fs::path(dir) / "events.csv").string(), record.events);
 
   nlohmann::ordered_json summary;
@@ -266,6 +269,25 @@ void write_run_outputs(const std::string& dir, const Scenario& scenario, const s
   std::size_t emergency = 0;
   for (const TimelineEvent& e : record.events) emergency += e.kind == "light" && e.to == "emergency_stop";
   lights["emergency_stops"] = emergency;
+  if (record.v2i) {  // spec TLJ §1.7; only with V2I on, so every other summary stays as it was
+    std::size_t stop_steps = 0;
+    const TimelineRow* first = nullptr;
+    for (const TimelineRow& row : record.rows)
+      if (row.v2i_stop) {
+        ++stop_steps;
+        if (!first) first = &row;
+      }
+    nlohmann::ordered_json first_stop = nullptr;
+    if (first)
+      first_stop = {{"light", first->tl_id}, {"time", std::stod(fixed(first->time, 3))},
+                    {"s_front", std::stod(fixed(first->s_front, 3))},
+                    {"light_state", first->tl_state ? std::string(1, first->tl_state) : std::string()},
+                    {"time_to_red", first->v2i_time_to_red ? nlohmann::ordered_json(std::stod(fixed(*first->v2i_time_to_red, 3)))
+                                                           : nlohmann::ordered_json(nullptr)},
+                    {"stop_distance", first->stop_distance ? nlohmann::ordered_json(std::stod(fixed(*first->stop_distance, 3)))
+                                                           : nlohmann::ordered_json(nullptr)}};
+    lights["v2i"] = {{"stop_steps", stop_steps}, {"first_stop", first_stop}};
+  }
   summary["lights"] = lights;
   // Each lane change as executed (spec TSD §8.2): blinker, approval, prepare, lateral motion.
   nlohmann::ordered_json lane_changes = nlohmann::ordered_json::array();

@@ -24,7 +24,9 @@ RunStatus run_status(const std::vector<ExpectationResult>& results);
 /// `v` with `decimals` decimals as the output files write it ("%.*f", never "-0.000").
 std::string fixed(double v, int decimals);
 
-void write_timeline_csv(const std::string& path, const std::vector<TimelineRow>& rows);
+/// `v2i_column`: append the column v2i_time_to_red (only for a run with V2I on, so that every other
+/// run's file stays as it was).
+void write_timeline_csv(const std::string& path, const std::vector<TimelineRow>& rows, bool v2i_column = false);
 void write_events_csv(const std::string& path, const std::vector<TimelineEvent>& events);
 
 /// Writes timeline.csv, events.csv and summary.json into `dir` (created if missing).

@@ -106,9 +106,6 @@ void ParameterSet::apply_parameters(const YAML::Node& mapping, const ParameterOr
     if (spec->name == "enable_rtc" && std::get<bool>(value))
       throw InputError(file, entry.line,
                        "parameter '" + entry.name + "': true is not supported (no operator approves in simulation)");
-    if (spec->name == "v2i.use_remaining_time" && std::get<bool>(value))
-      throw InputError(file, entry.line,
-                       "parameter '" + entry.name + "': true is not supported yet (spec TLJ §1.7 is optional work)");
     values_[spec->name] = std::move(value);
     origins_[spec->name] = origin.label.empty() ? file + ":" + std::to_string(entry.line) : origin.label;
   }
@@ -200,6 +197,10 @@ TrafficLightJudgeParameters traffic_light_parameters(const ParameterSet& set) {
   p.max_accel = set.number("max_accel");
   p.max_jerk = set.number("max_jerk");
   p.delay_response_time = set.number("delay_response_time");
+  p.v2i.use_remaining_time = set.boolean("v2i.use_remaining_time");  // spec TLJ §1.7
+  p.v2i.last_time_allowed_to_pass = set.number("v2i.last_time_allowed_to_pass");
+  p.v2i.velocity_threshold = set.number("v2i.velocity_threshold");
+  p.v2i.required_time_to_departure = set.number("v2i.required_time_to_departure");
   return p;
 }
 

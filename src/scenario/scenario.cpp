@@ -75,6 +75,18 @@ Expectation parse_expectation(const YAML::Node& item, const std::string& file, s
     fields.finish();
     return e;
   }
+  if (kind == "never_in_dilemma_zone") {
+    ExpectNeverInDilemmaZone e;
+    e.light = fields.text("light");
+    fields.finish();
+    return e;
+  }
+  if (kind == "v2i_stop_at_light") {
+    ExpectV2iStopAtLight e;
+    e.light = fields.text("light");
+    fields.finish();
+    return e;
+  }
   if (kind == "blinker_on") {
     ExpectBlinkerOn e;
     e.blinker = parse_blinker(fields, "blinker");
@@ -99,11 +111,39 @@ Expectation parse_expectation(const YAML::Node& item, const std::string& file, s
   throw InputError(file, yaml_line(item.begin()->first),
                    where + ": unknown expectation '" + kind +
                        "' (known: blinker_through_junction, blinker_through_lanelet, blinker_on, no_blinker, blinker_never, "
-                       "stops_before_light, passes_light, emergency_stop_at_light, never_runs_red, "
+                       "stops_before_light, passes_light, emergency_stop_at_light, never_in_dilemma_zone, "
+                       "v2i_stop_at_light, never_runs_red, "
                        "lateral_offset_follows_plan, arrives)");
 }
 
-PerceptionModelParameters parse_perception(const YAML::Node& node, const std::string& file) {
+std::vector<PerceptionModelParameters::Blackout> parse_blackouts(YamlFields& f, const YAML::Node& blackouts,
+                                                                 const std::string& file, const std::string& key) {
+  std::vector<PerceptionModelParameters::Blackout> out;
+  if (!blackouts || blackouts.IsNull()) return out;
+  if (!blackouts.IsSequence()) f.fail("blackouts", "expected a list of [start, end] pairs");
+  for (const auto& pair : blackouts) {
+    double a = 0.0, b = 0.0;
+    if (!pair.IsSequence() || pair.size() != 2 || !YAML::convert<double>::decode(pair[0], a) ||
+        !YAML::convert<double>::decode(pair[1], b) || !std::isfinite(a) || !std::isfinite(b) || !(a <= b))
+      throw InputError(file, yaml_line(pair), "key '" + key + "': each entry is [start, end] with start <= end");
+    out.push_back({a, b});
+  }
+  return out;
+}
+
+// `perception.v2i:` the V2I channel's faults (spec TLJ §1.7; used with v2i.use_remaining_time). The
+// camera's dropout, latency and blackouts apply to it too unless given here.
+V2iChannelParameters parse_v2i_channel(const YAML::Node& node, const std::string& file, V2iChannelParameters p) {
+  YamlFields f(node, file, "perception.v2i");
+  p.dropout_probability = f.number("dropout_probability", p.dropout_probability, 0.0, 1.0);
+  p.latency = f.number("latency", p.latency, 0.0, 60.0);
+  if (const YAML::Node blackouts = f.node("blackouts"))
+    p.blackouts = parse_blackouts(f, blackouts, file, "perception.v2i.blackouts");
+  f.finish();
+  return p;
+}
+
+PerceptionModelParameters parse_perception(const YAML::Node& node, const std::string& file, V2iChannelParameters& v2i) {
   YamlFields f(node, file, "perception");
   PerceptionModelParameters p;
   p.detection_range = f.number("detection_range", p.detection_range, 0.0, 1e9);
@@ -112,17 +152,11 @@ PerceptionModelParameters parse_perception(const YAML::Node& node, const std::st
   p.detections_per_light = f.integer("detections_per_light", 1, 1, 100);
   p.confidence_noise = f.number("confidence_noise", 0.0, 0.0, 1.0);
   p.misclassification_probability = f.number("misclassification_probability", 0.0, 0.0, 1.0);
-  const YAML::Node blackouts = f.node("blackouts");
-  if (blackouts && !blackouts.IsNull()) {
-    if (!blackouts.IsSequence()) f.fail("blackouts", "expected a list of [start, end] pairs");
-    for (const auto& pair : blackouts) {
-      double a = 0.0, b = 0.0;
-      if (!pair.IsSequence() || pair.size() != 2 || !YAML::convert<double>::decode(pair[0], a) ||
-          !YAML::convert<double>::decode(pair[1], b) || !std::isfinite(a) || !std::isfinite(b) || !(a <= b))
-        throw InputError(file, yaml_line(pair), "key 'perception.blackouts': each entry is [start, end] with start <= end");
-      p.blackouts.push_back({a, b});
-    }
-  }
+  p.blackouts = parse_blackouts(f, f.node("blackouts"), file, "perception.blackouts");
+  v2i.dropout_probability = p.dropout_probability;
+  v2i.latency = p.latency;
+  v2i.blackouts = p.blackouts;
+  if (const YAML::Node channel = f.node("v2i"); channel && !channel.IsNull()) v2i = parse_v2i_channel(channel, file, v2i);
   f.finish();
   return p;
 }
@@ -233,6 +267,10 @@ std::string describe(const Expectation& expectation) {
           out << "passes_light " << e.light;
         } else if constexpr (std::is_same_v<T, ExpectEmergencyStopAtLight>) {
           out << "emergency_stop_at_light " << e.light;
+        } else if constexpr (std::is_same_v<T, ExpectNeverInDilemmaZone>) {
+          out << "never_in_dilemma_zone " << e.light;
+        } else if constexpr (std::is_same_v<T, ExpectV2iStopAtLight>) {
+          out << "v2i_stop_at_light " << e.light;
         } else if constexpr (std::is_same_v<T, ExpectLateralFollowsPlan>) {
           out << "lateral_offset_follows_plan tolerance " << e.tolerance;
         } else if constexpr (std::is_same_v<T, ExpectNeverRunsRed>) {
@@ -383,8 +421,9 @@ Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrid
     }
   }
 
-  if (top.has("perception")) s.perception = parse_perception(top.node("perception"), path);
+  if (top.has("perception")) s.perception = parse_perception(top.node("perception"), path, s.v2i_channel);
   s.perception.seed = static_cast<std::uint64_t>(s.seed);
+  s.v2i_channel.seed = static_cast<std::uint64_t>(s.seed);
   if (top.has("light_offsets")) {
     YAML::Node offsets = top.node("light_offsets");
     if (!offsets.IsMap()) top.fail("light_offsets", "expected a mapping of light id: seconds");

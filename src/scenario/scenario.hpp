@@ -14,6 +14,7 @@
 #include "sumo/lane_change_room.hpp"
 #include "sumo/sumo_options.hpp"
 #include "traffic_light/perception_model.hpp"
+#include "traffic_light/v2i_channel.hpp"
 
 namespace signalsim {
 
@@ -173,13 +174,23 @@ struct ExpectPassesLight {
 struct ExpectEmergencyStopAtLight {
   std::string light;
 };
+/// The judge was judging `light` and never classified a dilemma zone there nor ordered an
+/// emergency stop (spec TLJ §2.6).
+struct ExpectNeverInDilemmaZone {
+  std::string light;
+};
+/// The judge ordered a stop at `light` because V2I predicted red within the horizon (spec TLJ §1.7).
+struct ExpectV2iStopAtLight {
+  std::string light;
+};
 /// The front never crosses a stop line while the ego's link shows red (r or u).
 struct ExpectNeverRunsRed {};
 /// `arrives: true`: the ego reaches the end of its route within the run's duration.
 struct ExpectArrives {};
 using Expectation = std::variant<ExpectBlinkerThrough, ExpectNoBlinker, ExpectBlinkerNever, ExpectBlinkerOn,
                                  ExpectStopsBeforeLight, ExpectPassesLight, ExpectEmergencyStopAtLight,
-                                 ExpectNeverRunsRed, ExpectLateralFollowsPlan, ExpectArrives>;
+                                 ExpectNeverRunsRed, ExpectLateralFollowsPlan, ExpectArrives,
+                                 ExpectNeverInDilemmaZone, ExpectV2iStopAtLight>;
 
 /// One line describing an expectation, e.g. "blinker_through_junction C left lead 30".
 std::string describe(const Expectation& e);
@@ -204,6 +215,8 @@ struct Scenario {
   std::string country;                  ///< preset code ("jp"), empty for none
   EgoSpec ego;
   PerceptionModelParameters perception;  ///< `perception:`; seeded with `seed`; all faults off by default
+  /// `perception.v2i:` the V2I channel's faults (spec TLJ §1.7); seeded with `seed`; none by default
+  V2iChannelParameters v2i_channel;
   std::map<std::string, double> light_offsets;  ///< `light_offsets: {tls: seconds}` program shifts
   ParameterSet params;                  ///< defaults, params.files, the country, params.set, overrides
   /// Facts about the input that are not errors (unused keys of parameter files, vehicle_info values

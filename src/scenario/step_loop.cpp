@@ -159,8 +159,14 @@ RunRecord drive(const StartedRun& run, const sumo::NetIndex& net) {
   std::vector<sumo::ApproachLight> approaches = sumo::approach_lights(net, route);
   for (sumo::ApproachLight& a : approaches) a.has_arrow = sumo::shows_arrow(session.program_states(a.tls_id), a);
   const TrafficLightJudgeParameters judge_params = traffic_light_parameters(scenario.params);
+  // V2I (spec TLJ §1.7): SUMO's programs and timing through the session, only when it is on.
+  V2iSource v2i;
+  v2i.channel = scenario.v2i_channel;
+  v2i.programs_of = [&session](const std::string& tls) { return session.light_programs(tls); };
+  v2i.timing_of = [&session](const std::string& tls) { return session.light_timing(tls); };
+  record.v2i = judge_params.v2i.use_remaining_time;
   TrafficLightStage lights(std::move(approaches), judge_params, scenario.perception,
-                           scenario.params.number("forward_path_length"));
+                           scenario.params.number("forward_path_length"), std::move(v2i));
   LightOutcomes outcomes(judge_params.stop_margin);
   const auto light_state = [&session](const std::string& tls) { return session.light_state(tls); };
 
@@ -172,6 +178,7 @@ RunRecord drive(const StartedRun& run, const sumo::NetIndex& net) {
   double last_s = scenario.ego.depart_pos;
   Blinker previous_blinker = Blinker::None;
   JudgeDecision previous_decision = JudgeDecision::None;
+  bool previous_v2i_stop = false;
 
   bool departed = false;  // the ego has moved (start planner: has_departed)
   double backed_up = 0.0;  // [m] emulated backward driving done so far
@@ -312,6 +319,8 @@ RunRecord drive(const StartedRun& run, const sumo::NetIndex& net) {
       row.yellow_lamp_line = shown->result.yellow_lamp_line;
       if (shown->result.stop_point_distance) row.stop_s = s_front + *shown->result.stop_point_distance;
       row.stop_level = stop_level;
+      row.v2i_stop = shown->result.v2i_stop;
+      row.v2i_time_to_red = shown->result.v2i_time_to_red;
     }
     if (blinker != previous_blinker) {
       record_event(record, row, "blinker", std::string(to_string(previous_blinker)), std::string(to_string(blinker)),
@@ -324,6 +333,12 @@ RunRecord drive(const StartedRun& run, const sumo::NetIndex& net) {
       record_event(record, row, "light", std::string(to_string(previous_decision)),
                    std::string(to_string(row.tl_decision)), row.tl_id);
       previous_decision = row.tl_decision;
+    }
+    // With V2I on: when its rule starts or stops holding for the light shown (spec TLJ §1.7).
+    if (record.v2i && row.v2i_stop != previous_v2i_stop) {
+      record_event(record, row, "v2i", previous_v2i_stop ? "red_predicted" : "none",
+                   row.v2i_stop ? "red_predicted" : "none", row.tl_id);
+      previous_v2i_stop = row.v2i_stop;
     }
     outcomes.observe(row, light_steps, stopping, leader, route, record);
     record.rows.push_back(std::move(row));

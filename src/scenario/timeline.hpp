@@ -43,6 +43,10 @@ struct TimelineRow {
   double yellow_lamp_line = 0.0; ///< v * yellow_lamp_period [m] while judged
   std::optional<double> stop_s;  ///< route s of the stop point while a stop is requested
   std::optional<StopLevel> stop_level;  ///< constraint set used while braking for a stop
+  /// V2I (spec TLJ §1.7, only with v2i.use_remaining_time): the judge's V2I rule held this step,
+  /// and the predicted time to red of the ego's link in the predictions in force [s] (empty: none).
+  bool v2i_stop = false;
+  std::optional<double> v2i_time_to_red;
 };
 
 /// One stop at a light: where the front came to rest against where it should have.
@@ -166,6 +170,7 @@ struct RunRecord {
   std::vector<OffPlanStretch> off_plan;  ///< SUMO-driven runs: stretches off the planned lanes
   int collisions = 0;
   double base_link_to_front = 0.0;
+  bool v2i = false;  ///< v2i.use_remaining_time: timeline.csv gets its v2i_time_to_red column
   RunSumoInfo sumo;
 };
 

@@ -226,6 +226,29 @@ class SessionImpl : public SumoSession {
     }
   }
 
+  std::vector<LightProgram> light_programs(const std::string& tls_id) const override {
+    try {
+      std::vector<LightProgram> programs;
+      for (const auto& logic : Api::TrafficLight::getAllProgramLogics(tls_id)) {
+        LightProgram program{logic.programID, program_kind_of(logic.type), {}};
+        for (const auto& phase : logic.phases) program.phases.push_back({phase->duration, phase->state, phase->next});
+        programs.push_back(std::move(program));
+      }
+      return programs;
+    } catch (const std::exception& e) {
+      throw SumoError("SUMO cannot report the programs of traffic light '" + tls_id + "': " + failure_reason(e));
+    }
+  }
+
+  LightTiming light_timing(const std::string& tls_id) const override {
+    try {
+      return {Api::TrafficLight::getProgram(tls_id), Api::TrafficLight::getPhase(tls_id),
+              Api::TrafficLight::getNextSwitch(tls_id)};
+    } catch (const std::exception& e) {
+      throw SumoError("SUMO cannot report the timing of traffic light '" + tls_id + "': " + failure_reason(e));
+    }
+  }
+
   void shift_light_program(const std::string& tls_id, double offset) override {
     try {
       const std::string program = Api::TrafficLight::getProgram(tls_id);

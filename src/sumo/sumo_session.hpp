@@ -14,6 +14,8 @@
 #include <utility>
 #include <vector>
 
+#include "sumo/signal_timing.hpp"
+
 namespace signalsim::sumo {
 
 /// A SUMO failure (load error, unknown id, refused or lost connection, ...). what() carries SUMO's
@@ -203,6 +205,14 @@ class SumoSession {
 
   /// The phase states of every program SUMO loaded for a light (net and additional files).
   virtual std::vector<std::string> program_states(const std::string& tls_id) const = 0;
+
+  /// Every program SUMO loaded for a light, with its kind and phases (TrafficLight::
+  /// getAllProgramLogics): for V2I predictions (spec TLJ §1.7), read once per light.
+  virtual std::vector<LightProgram> light_programs(const std::string& tls_id) const = 0;
+
+  /// A light's running program, current phase and next switch (TrafficLight::getProgram, getPhase,
+  /// getNextSwitch): the live part of a V2I prediction, asked every step while V2I is on.
+  virtual LightTiming light_timing(const std::string& tls_id) const = 0;
 
   /// Shifts a light's running program as if it had started `offset` seconds earlier (modulo its
   /// cycle), from the current simulation time. Throws SumoError for an unknown light.

@@ -1,5 +1,7 @@
 #include "traffic_light/perception_model.hpp"
 
+#include "traffic_light/seeded_stream.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -10,20 +12,9 @@ namespace signalsim {
 
 namespace {
 
-std::int64_t to_ns(double seconds) { return static_cast<std::int64_t>(std::llround(seconds * 1e9)); }
-
-// splitmix64 (Steele, Lea, Flood 2014): spreads (seed, stream) into well-mixed 64-bit seeds.
-std::uint64_t splitmix64(std::uint64_t x) {
-  x += 0x9E3779B97F4A7C15ULL;
-  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ULL;
-  x = (x ^ (x >> 27)) * 0x94D049BB133111EBULL;
-  return x ^ (x >> 31);
-}
-
-std::uint64_t stream_seed(std::uint64_t seed, std::uint64_t stream) { return splitmix64(splitmix64(seed) ^ stream); }
-
-// Uniform in [0, 1) from the top 53 bits of one raw draw: exact and portable.
-double uniform01(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
+using seeded::stream_seed;
+using seeded::to_ns;
+using seeded::uniform01;
 
 constexpr std::array<SignalColor, 4> kConfusableColors = {SignalColor::Unknown, SignalColor::Red, SignalColor::Amber,
                                                           SignalColor::Green};

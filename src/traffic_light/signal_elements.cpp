@@ -138,6 +138,18 @@ bool is_traffic_signal_stop(LaneTurnDirection turn_direction, const std::vector<
   return !green_arrow;
 }
 
+bool is_traffic_signal_red_stop(LaneTurnDirection turn_direction, const std::vector<SignalElement>& elements) {
+  const bool red_circle = std::any_of(elements.begin(), elements.end(), [](const SignalElement& e) {
+    return e.shape == SignalShape::Circle && e.color == SignalColor::Red;
+  });
+  if (!red_circle) return false;
+  const std::optional<SignalShape> arrow = matching_arrow_shape(turn_direction);
+  if (!arrow) return true;  // not an intersection lanelet: arrows are ignored
+  return std::none_of(elements.begin(), elements.end(), [&](const SignalElement& e) {
+    return e.shape == *arrow && e.color == SignalColor::Green;
+  });
+}
+
 bool is_yellow(const std::vector<SignalElement>& elements) {
   // spec TLJ §1.8: AMBER with SOLID_ON or UNKNOWN status, any shape (as the module's fork).
   return std::any_of(elements.begin(), elements.end(), [](const SignalElement& e) {

@@ -56,6 +56,15 @@ struct SignalObservation {
   friend bool operator==(const SignalObservation&, const SignalObservation&) = default;
 };
 
+/// One entry of a V2I message's `predictions[]` (spec TLJ §1.7): the elements the light group will
+/// show from `stamp` on (absolute simulation time [s]).
+struct SignalPrediction {
+  double stamp = 0.0;                   ///< [s] when these elements are predicted to come on
+  std::vector<SignalElement> elements;  ///< what the group will show then
+
+  friend bool operator==(const SignalPrediction&, const SignalPrediction&) = default;
+};
+
 std::string_view to_string(SignalColor c);
 std::string_view to_string(SignalShape s);
 std::string_view to_string(SignalStatus s);
@@ -85,6 +94,12 @@ std::optional<SignalShape> matching_arrow_shape(LaneTurnDirection turn_direction
 ///   6. otherwise (no elements, UNKNOWN, AMBER, RED, wrong arrow)-> true  (stop)
 /// Status is ignored (a flashing amber is an amber). Never throws.
 bool is_traffic_signal_stop(LaneTurnDirection turn_direction, const std::vector<SignalElement>& elements);
+
+/// spec TLJ §1.4 `isTrafficSignalRedStop` (the V2I helper of §1.7): a RED CIRCLE is present and,
+/// for a lane with a turn direction (an intersection lanelet), no GREEN arrow of that direction is
+/// (the Decision of is_traffic_signal_stop: arrows count only when green). A lane of direction
+/// `Else` ignores arrows: a red circle is a red stop. Never throws.
+bool is_traffic_signal_red_stop(LaneTurnDirection turn_direction, const std::vector<SignalElement>& elements);
 
 /// spec TLJ §1.4 step 1 / §1.8: some element is a GREEN CIRCLE.
 bool has_green_circle(const std::vector<SignalElement>& elements);

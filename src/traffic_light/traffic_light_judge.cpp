@@ -75,6 +75,7 @@ void validate(const TrafficLightJudgeParameters& p) {
   if (p.restart_suppression.min_behind_distance_to_stop > p.restart_suppression.max_behind_distance_to_stop) {
     fail("restart_suppression.min_behind_distance_to_stop exceeds max_behind_distance_to_stop");
   }
+  validate(p.v2i);
 }
 
 double distance_to_stop_point(double front_to_stop_line, double stop_margin) {
@@ -264,7 +265,21 @@ TrafficLightJudgeResult TrafficLightJudge::step(const TrafficLightJudgeInput& in
   r.stop_signal_elapsed = static_cast<double>(elapsed_ns) * 1e-9;
 
   // spec TLJ §1.2 3.5 / §1.5: strictly greater, in integer nanoseconds.
-  const bool to_be_stopped = is_stop && (is_prev_state_stop_ || elapsed_ns > hysteresis_ns_);
+  bool to_be_stopped = is_stop && (is_prev_state_stop_ || elapsed_ns > hysteresis_ns_);
+
+  // spec TLJ §1.2 3.6 / §1.7: V2I, OR-ed in without hysteresis.
+  std::string v2i_text;
+  if (params_.v2i.use_remaining_time) {
+    const V2iVerdict v2i = will_turn_red_before_reaching_stop_line(d, v, in.now, in.turn_direction, in.predictions,
+                                                                   params_.v2i);
+    r.v2i_stop = v2i.turns_red;
+    r.v2i_time_to_red = v2i.time_to_red;
+    if (v2i.turns_red) {
+      v2i_text = strf("; V2I: red in %.2f s < horizon %.2f s (t_pass %.2f s + %.2f s)", *v2i.time_to_red, v2i.horizon,
+                      v2i.t_pass, params_.v2i.last_time_allowed_to_pass);
+      to_be_stopped = true;
+    }
+  }
   r.to_be_stopped = to_be_stopped;
 
   // Why the signal says what it says, for the reason line.
@@ -360,7 +375,7 @@ TrafficLightJudgeResult TrafficLightJudge::step(const TrafficLightJudgeInput& in
   if (params_.enable_pass_judge && !stoppable && !is_prev_state_stop_ && reachable) {
     // PASS: no stop inserted; the latch stays false.
     r.decision = JudgeDecision::Pass;
-    r.reason = "pass: " + zone_text + "; " + signal_text;
+    r.reason = "pass: " + zone_text + "; " + signal_text + v2i_text;
     return finish();
   }
 
@@ -375,7 +390,7 @@ TrafficLightJudgeResult TrafficLightJudge::step(const TrafficLightJudgeInput& in
   is_prev_state_stop_ = true;
   r.decision = latched_decision_;
   r.stop_point_distance = d;
-  r.reason = std::string(to_string(latched_decision_)) + latch_text + ": " + zone_text + "; " + signal_text;
+  r.reason = std::string(to_string(latched_decision_)) + latch_text + ": " + zone_text + "; " + signal_text + v2i_text;
   return finish();
 }
 

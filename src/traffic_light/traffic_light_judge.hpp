@@ -24,6 +24,8 @@
 //       if is_stop: start timer at now unless running   else: clear timer        (3.4)
 //       elapsed := timer running ? max(0, now - start) : 0
 //       to_be_stopped := is_stop and (is_prev_state_stop or elapsed > stop_time_hysteresis)  (3.5)
+//       if v2i.use_remaining_time:                                               (3.6, §1.7)
+//           to_be_stopped := to_be_stopped or WILL_TURN_RED(d, v, in.predictions)  (v2i_rule.hpp)
 //       if in.is_vehicle_stopped and min_behind < d < max_behind and is_stop:    (3.7, §1.6)
 //           return Stop at the ego's own position (restart_suppressed; latch untouched)
 //       if not to_be_stopped:                                                    (3.8, 3.9)
@@ -64,7 +66,10 @@
 //   the last metres of a normal stop (where the judge line, with its 0.5 s dead time, exceeds d)
 //   are not relabelled as an emergency. A stop inserted while not stoppable is an EmergencyStop also
 //   with enable_pass_judge = false (the planner must relax its limits there too).
-// - V2I (spec TLJ §1.7) and RTC (spec TLJ §1.5; disabled path = activated := safe) are not modelled.
+// - V2I (spec TLJ §1.7): in.predictions are the predictions in force this step (the V2I channel's,
+//   scenario/light_stage); the rule is OR-ed in after the hysteresis, so a green light can give a
+//   stop, which the pass judge still classifies. RTC (spec TLJ §1.5; disabled path = activated :=
+//   safe) is not modelled.
 #pragma once
 
 #include <cstdint>
@@ -74,6 +79,7 @@
 #include <vector>
 
 #include "traffic_light/signal_elements.hpp"
+#include "traffic_light/v2i_rule.hpp"
 
 namespace signalsim {
 
@@ -98,6 +104,7 @@ struct TrafficLightJudgeParameters {
   double max_accel = -2.8;            ///< [m/s^2] a_s of the judge line, negative (common param)
   double max_jerk = -5.0;             ///< [m/s^3] j_s of the judge line, negative (common param)
   double delay_response_time = 0.5;   ///< [s] t_d of the judge line (common param)
+  V2iParameters v2i;                  ///< spec TLJ §1.7 (off by default)
 };
 
 /// Throws std::invalid_argument naming the first bad member: a non-finite value, a negative
@@ -170,6 +177,9 @@ struct TrafficLightJudgeInput {
   LaneTurnDirection turn_direction = LaneTurnDirection::Else;  ///< of the lane owning the light
   bool is_turn_lane = false;      ///< lane turn_direction is left/right (spec TLJ §1.8 map fact)
   bool has_static_arrow = false;  ///< the light has an arrow bulb (spec TLJ §1.8 map fact)
+  /// The V2I predictions in force this step (spec TLJ §1.7); empty: V2I says nothing. Used only
+  /// with v2i.use_remaining_time.
+  std::vector<SignalPrediction> predictions;
 };
 
 /// Result of one step. Distances are relative to base_link (same reference as `d`).
@@ -190,6 +200,10 @@ struct TrafficLightJudgeResult {
   /// [m] where the planner must bring base_link to rest, relative to base_link: d for Stop and
   /// EmergencyStop, 0 for a restart suppression (stay here); empty otherwise.
   std::optional<double> stop_point_distance;
+  /// spec TLJ §1.7, with v2i.use_remaining_time only: the V2I rule held this step (OR-ed into
+  /// to_be_stopped), and the earliest red stop the predictions tell, minus now [s] (empty: none).
+  bool v2i_stop = false;
+  std::optional<double> v2i_time_to_red;
   std::string reason;  ///< one human-readable line for timelines and logs
 };
 
