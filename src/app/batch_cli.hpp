@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/batch_runner.hpp"
+#include "app/cli_numbers.hpp"
 
 namespace signalsim::app {
 
@@ -25,7 +26,7 @@ inline void add_batch_options(CLI::App* sub, BatchCliOptions& o, const std::stri
   sub->add_option("--jobs,-j", o.jobs, "Worker processes at a time, one SUMO each (default: number of cores)")
       ->check(CLI::Range(1, 4096));
   sub->add_option("--timeout", o.timeout, "Wall-clock limit per run in seconds (default 300); the run becomes an error row")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
   if (with_resume)
     sub->add_flag("--resume", o.resume,
                   "Keep the finished rows of OUT/results.csv (passed, failed, no_expectations) and run only the "

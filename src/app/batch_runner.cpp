@@ -14,6 +14,7 @@
 #include <thread>
 
 #include "app/process_pool.hpp"
+#include "app/results_file.hpp"
 #include "app/run_outputs.hpp"
 #include "scenario/input_error.hpp"
 #include "scenario/metrics.hpp"
@@ -101,7 +102,7 @@ void read_summary(ResultRow& row, const RunSpec& run, const std::string& dir) {
     // leave them beside it as metrics.json, where tools/plot looks too.
     try {
       metrics = metrics_from_run_dir(dir, run.scenario, run.set);
-      std::ofstream((fs::path(dir) / "metrics.json").string()) << metrics.dump(2) << "\n";
+      write_file_atomically((fs::path(dir) / "metrics.json").string(), metrics.dump(2) + "\n");
     } catch (const std::exception&) {
       metrics = nullptr;
     }
@@ -139,6 +140,19 @@ ResultRow make_row(const RunSpec& run, const std::string& out_dir, const std::st
   } else {
     error(message.empty() ? "exit code " + std::to_string(result.exit_code) : message);
   }
+  return row;
+}
+
+// A suite's scenario file that did not load: its row says why; the batch runs the others.
+ResultRow load_error_row(const RunSpec& run) {
+  ResultRow row;
+  row.run = run.index;
+  row.cells["scenario"] = run.name;
+  row.cells["file"] = run.scenario;
+  for (const auto& [key, value] : run.values) row.cells[key] = value;
+  row.cells["wall_time"] = "0.00";
+  row.cells["status"] = "error";
+  row.cells["error"] = one_line(run.load_error);
   return row;
 }
 
@@ -253,7 +267,8 @@ std::string stderr_one_line(const std::string& text) { return one_line(text); }
 
 int BatchResult::exit_code() const {
   if (interrupted) return kExitInterrupted;
-  return failed + errors > 0 ? 1 : 0;
+  if (errors > 0 || !results_error.empty()) return kExitRunErrors;
+  return failed > 0 ? kExitFailed : 0;
 }
 
 bool is_finished_status(const std::string& status) {
@@ -295,9 +310,11 @@ BatchResult run_batch(const std::vector<RunSpec>& runs, const BatchSettings& set
     result.skipped = result.rows.size();
   }
   write_file_atomically(manifest_path, manifest);
-  write_file_atomically(csv, results_csv(settings.swept, result.rows));
+  ResultsFile results_file(csv);
+  if (!results_file.write(results_csv(settings.swept, result.rows))) throw std::runtime_error(results_file.error());
 
   std::vector<ProcessJob> jobs;
+  std::vector<const RunSpec*> not_loaded;
   std::vector<std::string> run_dirs(runs.size());
   const std::string self = self_executable();
   for (const RunSpec& run : runs) {
@@ -305,6 +322,10 @@ BatchResult run_batch(const std::vector<RunSpec>& runs, const BatchSettings& set
     if (result.rows.count(run.index)) continue;
     const fs::path dir = fs::path(settings.out_dir) / run_dirs[run.index];
     fs::remove_all(dir);  // a stale or half-written run of an earlier batch
+    if (!run.load_error.empty()) {
+      not_loaded.push_back(&run);  // an error row with the file's message; no worker
+      continue;
+    }
     ProcessJob job;
     job.id = run.index;
     job.timeout = settings.timeout;
@@ -318,7 +339,12 @@ BatchResult run_batch(const std::vector<RunSpec>& runs, const BatchSettings& set
   if (!settings.quiet && result.skipped > 0)
     std::printf("resuming: %zu of %zu runs already done, %zu to run\n", result.skipped, runs.size(), jobs.size());
 
-  Progress progress(jobs.size(), settings.quiet);
+  Progress progress(jobs.size() + not_loaded.size(), settings.quiet);
+  for (const RunSpec* run : not_loaded) {
+    ResultRow row = load_error_row(*run);
+    progress.finished(*run, row);
+    result.rows[run->index] = std::move(row);
+  }
   auto last_write = Clock::now();
   const bool completed = run_processes(
       jobs, settings.jobs,
@@ -329,15 +355,27 @@ BatchResult run_batch(const std::vector<RunSpec>& runs, const BatchSettings& set
         result.rows[job.id] = std::move(row);
         // Each run's own summary.json is already on disk; results.csv is rewritten at most once a
         // second (and at the end), so a batch of many thousands of runs stays linear.
-        if (Clock::now() - last_write >= std::chrono::seconds(1)) {
-          write_file_atomically(csv, results_csv(settings.swept, result.rows));
+        // A rewrite that fails (a full disk) stops nothing: the previous complete file stays, the
+        // batch goes on and tries again with the next finished run.
+        if (Clock::now() - last_write >= std::chrono::seconds(1) || !results_file.error().empty()) {
+          const bool had_error = !results_file.error().empty();
+          if (!results_file.write(results_csv(settings.swept, result.rows)) && !had_error)
+            std::fprintf(stderr, "signalsim: %s; the batch goes on and writes it again later\n",
+                         results_file.error().c_str());
           last_write = Clock::now();
         }
       },
       [&] { progress.tick(); });
   progress.end();
   result.interrupted = !completed;
-  write_file_atomically(csv, results_csv(settings.swept, result.rows));
+  const std::string table = results_csv(settings.swept, result.rows);
+  if (!results_file.write(table)) {
+    // The finished rows must not be lost: the table goes to stdout instead, after one line that says so.
+    result.results_error = results_file.error();
+    std::fprintf(stderr, "signalsim: %s; the finished rows follow on stdout\n", result.results_error.c_str());
+    std::fwrite(table.data(), 1, table.size(), stdout);
+    std::fflush(stdout);
+  }
   count(result);
   result.wall = std::chrono::duration<double>(Clock::now() - start).count();
   return result;

@@ -5,11 +5,13 @@
 //     (another sweep) is an error
 //   for each remaining run (by index): worker `signalsim run SCENARIO --out OUT/runs/NNNN-name
 //     --quiet --set ...` (process_pool), at most `jobs` at a time, each with the wall-clock timeout
+//   a run whose scenario file did not load (RunSpec::load_error): an error row with the message, no worker
 //   as each worker ends: a row from its exit code and RUNDIR/summary.json (status passed, failed or
 //     no_expectations - a scenario without expectations, nothing checked, not a failure - expectations,
 //     "metrics"; computed from the run's files when summary.json has none), or an error row (exit
 //     code 2 with its stderr, a signal, a timeout, an unreadable summary);
-//     results.csv rewritten (tmp + rename) with every finished row, ordered by run index
+//     results.csv rewritten (tmp + rename, results_file.hpp: a failed rewrite on a full disk keeps
+//     the previous file and is tried again) with every finished row, ordered by run index
 //   progress: one updating line on a terminal, one plain line per finished run otherwise
 //   Ctrl-C: start nothing more, stop the workers, keep every finished row; exit code 130
 #pragma once
@@ -38,8 +40,10 @@ struct BatchResult {
   std::size_t no_expectations = 0;  ///< rows of scenarios without expectations (not failures)
   std::size_t skipped = 0;          ///< rows kept from an earlier results.csv
   bool interrupted = false;
+  std::string results_error;        ///< results.csv could not be written at the end (the rows went to stdout)
   double wall = 0.0;                ///< [s]
-  /// 130 interrupted, 1 a run failed or errored, else 0.
+  /// 130 interrupted, 4 a run errored (it has no verdict) or results.csv could not be written, 1 a run
+  /// failed an expectation, else 0.
   int exit_code() const;
 };
 

@@ -1,10 +1,11 @@
 // `signalsim check PATH... --golden DIR`: CI regression. Runs each scenario (worker processes, like
 // `batch`) and compares its events.csv with DIR/<scenario file stem>.events.csv: the same events in
 // the same order (kind, from, to, source), each within --tolerance metres of s_front and one step
-// (or --time-tolerance) of time. A run error or a differing event is a regression (exit 1); with
-// --expectations a failed expectation is one too (else it is noted). A scenario without expectations
-// (status no_expectations) is checked on its events only and says so; it is not a failure. --update
-// rewrites the golden files from the runs; --junit writes JUnit XML.
+// (or --time-tolerance) of time. A differing event or a failed expectation is a failure (exit 1;
+// --ignore-expectations makes the expectations a note); a run error, or a scenario file that does
+// not load, is an error (exit 4, wins over 1). A scenario without expectations (status
+// no_expectations) is checked on its events only and says so; it is not a failure (JUnit: skipped).
+// --update rewrites the golden files from the runs; --junit writes JUnit XML.
 #include <unistd.h>
 
 #include <cstdio>
@@ -14,6 +15,7 @@
 #include <memory>
 
 #include "app/batch_cli.hpp"
+#include "app/cli_numbers.hpp"
 #include "app/command.hpp"
 #include "app/golden.hpp"
 #include "app/run_outputs.hpp"
@@ -29,7 +31,8 @@ struct CheckOptions {
   double tol_s = 0.5;
   double tol_t = 0.0;  // 0: the scenario's step_length
   bool update = false;
-  bool expectations = false;  // a failed expectation fails the check too
+  bool ignore_expectations = false;  // a failed expectation is a note, not a failure
+  bool expectations_flag = false;    // --expectations: the default behaviour, accepted
   std::string junit;
   BatchCliOptions batch;
 };
@@ -55,8 +58,13 @@ JUnitCase check_one(const RunSpec& run, const ResultRow* row, const CheckOptions
     c.result = result;
     c.message = message;
     c.details = details;
-    const char* tag = result == JUnitCase::Result::Passed ? "ok   " : result == JUnitCase::Result::Failed ? "FAIL " : "ERROR";
+    const char* tag = result == JUnitCase::Result::Failed ? "FAIL " : result == JUnitCase::Result::Error ? "ERROR" : "ok   ";
     std::printf("%s %s: %s\n%s", tag, c.name.c_str(), message.c_str(), details.c_str());
+    for (std::size_t at = 0; at < c.system_out.size();) {  // the failed expectations, indented
+      const std::size_t end = c.system_out.find('\n', at);
+      std::printf("      %s\n", c.system_out.substr(at, end - at).c_str());
+      at = end == std::string::npos ? c.system_out.size() : end + 1;
+    }
     return c;
   };
   if (!row) return verdict(JUnitCase::Result::Error, "the run did not finish");
@@ -69,18 +77,30 @@ JUnitCase check_one(const RunSpec& run, const ResultRow* row, const CheckOptions
   double step = 0.1;
   try {
     events = read_events_csv(events_path);
-    step = read_json_file((run_dir / "summary.json").string()).value("step_length", 0.1);
+    const auto summary = read_json_file((run_dir / "summary.json").string());
+    step = summary.value("step_length", 0.1);
+    // The failed expectations with their details, for the console and JUnit's <system-out>.
+    if (summary.contains("expectations") && summary["expectations"].is_array())
+      for (const auto& e : summary["expectations"])
+        if (!e.value("passed", true))
+          c.system_out += "expectation failed: " + e.value("expectation", std::string("?")) + ": " +
+                          e.value("detail", std::string()) + "\n";
   } catch (const std::exception& e) {
     return verdict(JUnitCase::Result::Error, e.what());
   }
+  const bool no_expectations = cell(*row, "status") == "no_expectations";
   const std::string failed_expectations =
       cell(*row, "status") == "failed" ? "expectations failed: " + cell(*row, "failed_expectations") : "";
-  const std::string note = !failed_expectations.empty() ? " (note: " + failed_expectations + ")"
-                           : cell(*row, "status") == "no_expectations"
-                               ? " (note: the scenario has no expectations: only its events are checked)"
-                               : "";
-  const auto expectations_verdict = o.expectations && !failed_expectations.empty() ? JUnitCase::Result::Failed
-                                                                                   : JUnitCase::Result::Passed;
+  const bool expectations_fail = !failed_expectations.empty() && !o.ignore_expectations;
+  const std::string note = !failed_expectations.empty() && !expectations_fail
+                               ? " (note: " + failed_expectations + ", ignored: --ignore-expectations)"
+                           : no_expectations ? " (note: the scenario has no expectations: only its events are checked)"
+                                             : "";
+  // The events matched: the expectations decide; without any the case is skipped (JUnit).
+  const auto matched = [&](const std::string& message) {
+    if (expectations_fail) return verdict(JUnitCase::Result::Failed, failed_expectations + "; " + message);
+    return verdict(no_expectations ? JUnitCase::Result::Skipped : JUnitCase::Result::Passed, message + note);
+  };
 
   if (o.update) {
     // A golden file records accepted behaviour: never accept a run whose expectations failed.
@@ -88,7 +108,7 @@ JUnitCase check_one(const RunSpec& run, const ResultRow* row, const CheckOptions
       return verdict(JUnitCase::Result::Failed, "not updated: " + failed_expectations);
     fs::create_directories(o.golden_dir);
     write_file_atomically(golden, read_text_file(events_path));
-    return verdict(expectations_verdict, format("updated %s (%zu events)", golden.c_str(), events.size()) + note);
+    return matched(format("updated %s (%zu events)", golden.c_str(), events.size()));
   }
   if (!fs::is_regular_file(golden))
     return verdict(JUnitCase::Result::Failed, "no golden file " + golden + " (create it with --update)");
@@ -105,11 +125,12 @@ JUnitCase check_one(const RunSpec& run, const ResultRow* row, const CheckOptions
     const std::string header = format("         %9s   %9s    event    (= same, ~ moved, - missing, + extra; tolerance %.3g m, %.3g s)\n",
                                       "time", "s_front", o.tol_s, tol_t);
     return verdict(JUnitCase::Result::Failed,
-                   format("%zu event difference%s against %s", differences, differences == 1 ? "" : "s",
-                          golden.c_str()) + note,
+                   (expectations_fail ? failed_expectations + "; " : std::string()) +
+                       format("%zu event difference%s against %s", differences, differences == 1 ? "" : "s",
+                              golden.c_str()) + note,
                    header + format_diff(diff, "      "));
   }
-  return verdict(expectations_verdict, format("%zu events match %s", events.size(), golden.c_str()) + note);
+  return matched(format("%zu events match %s", events.size(), golden.c_str()));
 }
 
 }  // namespace
@@ -121,11 +142,15 @@ Command add_check_command(CLI::App& app) {
   sub->add_option("--golden", o->golden_dir, "Directory of golden files <scenario file stem>.events.csv")->required();
   sub->add_option("--tolerance", o->tol_s, "Largest |ds| of an event's s_front, metres")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->check(non_negative_number());
   sub->add_option("--time-tolerance", o->tol_t, "Largest |dt| of an event's time, seconds (default: one step)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(non_negative_number());
   sub->add_flag("--update", o->update, "Rewrite the golden files from this run");
-  sub->add_flag("--expectations", o->expectations, "A failed expectation fails the check too (else it is a note)");
+  sub->add_flag("--ignore-expectations", o->ignore_expectations,
+                "A failed expectation is only a note (by default it fails the check, as a differing event does)");
+  sub->add_flag("--expectations", o->expectations_flag,
+                "A failed expectation fails the check: the default (accepted for old scripts)")
+      ->excludes("--ignore-expectations");
   sub->add_option("--junit", o->junit, "Also write the results as JUnit XML to this file");
   add_batch_options(sub, o->batch, "out/check", false);
   return {sub, [o]() -> int {
@@ -146,21 +171,23 @@ Command add_check_command(CLI::App& app) {
                 return kExitInterrupted;
               }
               std::vector<JUnitCase> cases;
-              std::size_t failed = 0;
+              std::size_t failed = 0, errors = 0;
               for (const RunSpec& run : runs) {
                 const auto row = result.rows.find(run.index);
                 cases.push_back(check_one(run, row == result.rows.end() ? nullptr : &row->second, *o, settings.out_dir));
-                failed += cases.back().result != JUnitCase::Result::Passed;
+                failed += cases.back().result == JUnitCase::Result::Failed;
+                errors += cases.back().result == JUnitCase::Result::Error;
               }
               // Scenarios without expectations pass on their events alone: counted apart, not failed.
-              std::printf("check: %zu scenario%s, %zu passed, %zu failed; %zu without expectations%s\n", cases.size(),
-                          cases.size() == 1 ? "" : "s", cases.size() - failed, failed, result.no_expectations,
-                          o->update ? " (golden files updated)" : "");
+              std::printf("check: %zu scenario%s, %zu passed, %zu failed, %zu error%s; %zu without expectations%s\n",
+                          cases.size(), cases.size() == 1 ? "" : "s", cases.size() - failed - errors, failed, errors,
+                          errors == 1 ? "" : "s", result.no_expectations, o->update ? " (golden files updated)" : "");
               if (!o->junit.empty()) {
                 if (const fs::path parent = fs::path(o->junit).parent_path(); !parent.empty())
                   fs::create_directories(parent);
                 write_file_atomically(o->junit, junit_xml("signalsim check", cases, result.wall));
               }
+              if (errors > 0) return kExitRunErrors;
               return failed > 0 ? kExitFailed : 0;
             } catch (const std::exception& e) {
               return report_bad_input(e.what());

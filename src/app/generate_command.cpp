@@ -4,6 +4,7 @@
 #include <iostream>
 #include <memory>
 
+#include "app/cli_numbers.hpp"
 #include "app/command.hpp"
 #include "generate/generator.hpp"
 #include "generate/number_text.hpp"
@@ -63,12 +64,12 @@ Command add_generate_command(CLI::App& app) {
   sub->add_option("--through", cli->through, "Features each route passes: turns,lights,roundabouts (any of them)")
       ->capture_default_str();
   sub->add_option("--country", o.scenario.country, "Country preset (config/countries), default Autoware's values");
-  sub->add_option("--min-length", o.min_length, "Shortest route [m]")->capture_default_str();
-  sub->add_option("--max-length", o.max_length, "Longest route [m]")->capture_default_str();
-  sub->add_option("--max-speed", o.scenario.max_speed, "ego.max_speed [m/s]")->capture_default_str()->check(CLI::Range(1.0, 60.0));
+  sub->add_option("--min-length", o.min_length, "Shortest route [m]")->capture_default_str()->check(positive_number());
+  sub->add_option("--max-length", o.max_length, "Longest route [m]")->capture_default_str()->check(positive_number());
+  sub->add_option("--max-speed", o.scenario.max_speed, "ego.max_speed [m/s]")->capture_default_str()->check(number_between(1.0, 60.0));
   sub->add_option("--straight", o.scenario.straight, "Shortest stretch given a no_blinker expectation [m]")
       ->capture_default_str()
-      ->check(CLI::Range(5.0, 10000.0));
+      ->check(number_between(5.0, 10000.0));
   sub->add_flag("--quiet", cli->quiet, "Print nothing on success");
   return {sub, [cli] { return run_generate(*cli); }};
 }

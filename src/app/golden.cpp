@@ -121,25 +121,34 @@ std::string format_diff(const std::vector<EventDiff>& diff, const std::string& i
 }
 
 std::string junit_xml(const std::string& suite, const std::vector<JUnitCase>& cases, double time) {
-  std::size_t failures = 0, errors = 0;
+  std::size_t failures = 0, errors = 0, skipped = 0;
   for (const JUnitCase& c : cases) {
     failures += c.result == JUnitCase::Result::Failed;
     errors += c.result == JUnitCase::Result::Error;
+    skipped += c.result == JUnitCase::Result::Skipped;
   }
-  std::string head = format(R"(tests="%zu" failures="%zu" errors="%zu" time="%.3f")", cases.size(), failures, errors, time);
+  std::string head = format(R"(tests="%zu" failures="%zu" errors="%zu" skipped="%zu" time="%.3f")", cases.size(),
+                            failures, errors, skipped, time);
   std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
   out += "<testsuites name=\"" + xml_escape(suite) + "\" " + head + ">\n";
   out += "  <testsuite name=\"" + xml_escape(suite) + "\" " + head + ">\n";
   for (const JUnitCase& c : cases) {
     out += "    <testcase classname=\"" + xml_escape(suite) + "\" name=\"" + xml_escape(c.name) + "\" file=\"" +
            xml_escape(c.file) + "\"" + format(" time=\"%.3f\"", c.time);
-    if (c.result == JUnitCase::Result::Passed) {
+    if (c.result == JUnitCase::Result::Passed && c.system_out.empty()) {
       out += "/>\n";
       continue;
     }
-    const char* tag = c.result == JUnitCase::Result::Failed ? "failure" : "error";
-    out += ">\n      <" + std::string(tag) + " message=\"" + xml_escape(c.message) + "\">" + xml_escape(c.details) +
-           "</" + tag + ">\n    </testcase>\n";
+    out += ">\n";
+    if (c.result != JUnitCase::Result::Passed) {
+      const char* tag = c.result == JUnitCase::Result::Failed  ? "failure"
+                        : c.result == JUnitCase::Result::Error ? "error"
+                                                               : "skipped";
+      out += "      <" + std::string(tag) + " message=\"" + xml_escape(c.message) + "\"";
+      out += c.details.empty() ? "/>\n" : ">" + xml_escape(c.details) + "</" + tag + ">\n";
+    }
+    if (!c.system_out.empty()) out += "      <system-out>" + xml_escape(c.system_out) + "</system-out>\n";
+    out += "    </testcase>\n";
   }
   out += "  </testsuite>\n</testsuites>\n";
   return out;

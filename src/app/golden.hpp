@@ -40,12 +40,15 @@ struct JUnitCase {
   std::string name;       ///< the scenario
   std::string file;       ///< its file
   double time = 0.0;      ///< [s]
-  enum class Result { Passed, Failed, Error } result = Result::Passed;
+  /// Skipped: nothing of the scenario's own was checked (it has no expectations; its events matched).
+  enum class Result { Passed, Failed, Error, Skipped } result = Result::Passed;
   std::string message;    ///< one line
   std::string details;    ///< the diff or the error text
+  std::string system_out; ///< the failed expectations, one per line (<system-out>), else empty
 };
 
-/// A JUnit XML document: one <testsuite name="suite"> with a <testcase> per case.
+/// A JUnit XML document: one <testsuite name="suite"> with a <testcase> per case: <failure>, <error>
+/// or <skipped> with the message (and the details as its text), then <system-out> when there is any.
 std::string junit_xml(const std::string& suite, const std::vector<JUnitCase>& cases, double time);
 
 }  // namespace signalsim::app

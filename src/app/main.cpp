@@ -6,8 +6,24 @@
 
 namespace signalsim::app {
 
+std::string single_line(const std::string& message) {
+  // SUMO's messages may span lines ("...\n In file 'x'\n At line/column 2/1."): one line, blanks joined.
+  std::string out;
+  bool blank = false;
+  for (const char c : message) {
+    if (c == '\n' || c == '\r' || c == '\t' || c == ' ') {
+      blank = true;
+      continue;
+    }
+    if (blank && !out.empty()) out += ' ';
+    blank = false;
+    out += c;
+  }
+  return out;
+}
+
 int report_bad_input(const std::string& message) {
-  std::cerr << "signalsim: " << message << "\n";
+  std::cerr << "signalsim: " << single_line(message) << "\n";
   return kExitBadInput;
 }
 

@@ -268,9 +268,10 @@ bool run_processes(const std::vector<ProcessJob>& jobs, int parallel,
   }
   std::sort(running.begin(), running.end(), [](const Worker& a, const Worker& b) { return a.job->id < b.job->id; });
   for (Worker& w : running) {
-    // A worker stopped here unwinds and exits with the interrupted code (signalsim run handles
+    // A worker stopped here unwinds and exits with the terminated code 143 (signalsim run handles
     // SIGTERM): that run did not finish, no row. One that exited by itself in the meantime did.
-    const bool stopped = w.terminated && WIFEXITED(w.status) && WEXITSTATUS(w.status) == kExitInterrupted;
+    const bool stopped = w.terminated && WIFEXITED(w.status) &&
+                         (WEXITSTATUS(w.status) == kExitTerminated || WEXITSTATUS(w.status) == kExitInterrupted);
     if (WIFEXITED(w.status) && !stopped) finish(w);
     else close_worker(w);
   }

@@ -44,13 +44,18 @@ struct RunOptions {
 };
 
 // Every exit-2 path: the output directory must not keep a previous run's files that could pass for
-// this run's, so they are replaced by a summary with status "error" and the message.
+// this run's, so they are replaced by a summary with status "error" and the message. A run a signal
+// stopped (whatever exception the unwinding raised: a TraCI call cut short by EINTR, ...) says
+// "interrupted" instead and exits 128 + the signal: 130 for SIGINT, 143 for SIGTERM.
 int fail(const RunOptions& options, const std::optional<Scenario>& scenario, const std::string& message) {
+  const int signal = sumo::interruption_signal();
+  const std::string text = single_line(signal ? options.scenario_path + ": " + sumo::Interrupted(signal).what() : message);
   try {
-    write_error_summary(options.out_dir, scenario ? &*scenario : nullptr, message);
+    write_error_summary(options.out_dir, scenario ? &*scenario : nullptr, text, signal ? "interrupted" : "error");
   } catch (const std::exception&) {  // an unwritable directory: the message below is what matters
   }
-  return report_bad_input(message);
+  report_bad_input(text);
+  return signal ? 128 + signal : kExitBadInput;
 }
 
 // The back-end from --gui / --connect (at most one).
@@ -100,6 +105,7 @@ int run(const RunOptions& options) {
     // SUMO writes into the run directory while it runs: a previous run's files must go first, so
     // that an interrupted or failed run never leaves them looking like this one's.
     clear_run_outputs(options.out_dir);
+    sumo::throw_if_interrupted();  // a signal while loading: stop before SUMO starts
 
     const auto start = std::chrono::steady_clock::now();
     RunRecord record;
@@ -126,9 +132,6 @@ int run(const RunOptions& options) {
     }
     if (options.plot) run_plot_tool({options.out_dir});  // a failed plot is reported, the run's verdict stands
     return status == RunStatus::Failed ? kExitFailed : 0;
-  } catch (const sumo::Interrupted& e) {
-    fail(options, scenario, options.scenario_path + ": " + e.what());
-    return kExitInterrupted;
   } catch (const InputError& e) {
     return fail(options, scenario, e.what());
   } catch (const sumo::NetError& e) {

@@ -47,9 +47,9 @@ Command add_sweep_command(CLI::App& app) {
                 if (!sweep.plot.metric.empty()) args.insert(args.end(), {"--metric", sweep.plot.metric});
                 if (!sweep.plot.x.empty()) args.insert(args.end(), {"--x", sweep.plot.x});
                 if (!sweep.plot.y.empty()) args.insert(args.end(), {"--y", sweep.plot.y});
-                // The picture was asked for: its failure is a failure of the command (exit 3), after
+                // The picture was asked for: its failure is a failure of the command (exit 3, kExitPicture), after
                 // the runs' own failures (their code wins when it is not 0).
-                if (run_plot_tool(args) != 0 && result.exit_code() == 0) return 3;
+                if (run_plot_tool(args) != 0 && result.exit_code() == 0) return kExitPicture;
               }
               return result.exit_code();
             } catch (const std::exception& e) {

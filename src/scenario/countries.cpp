@@ -44,14 +44,21 @@ std::string config_dir() {
   return SIGNALSIM_DEFAULT_CONFIG_DIR;
 }
 
+std::string unknown_country_reason(const std::string& code) {
+  std::string known;
+  for (const auto& k : known_codes()) known += (known.empty() ? "" : ", ") + k;
+  return "unknown country '" + code + "' (known: " + known + ")";
+}
+
+bool is_country_code(const std::string& code) {
+  const auto codes = known_codes();
+  return std::find(codes.begin(), codes.end(), code) != codes.end();
+}
+
 Country load_country(const std::string& code) {
-  const fs::path path = countries_dir() / (code + ".yaml");
-  if (!fs::is_regular_file(path)) {
-    std::string known;
-    for (const auto& k : known_codes()) known += (known.empty() ? "" : ", ") + k;
-    throw InputError(path.string(), 0, "unknown country '" + code + "' (known: " + known + ")");
-  }
-  return read_country(path);
+  // The code is one of the presets' names before it becomes part of a path ("../x" is none).
+  if (!is_country_code(code)) throw InputError(countries_dir().string(), 0, unknown_country_reason(code));
+  return read_country(countries_dir() / (code + ".yaml"));
 }
 
 std::vector<Country> list_countries() {

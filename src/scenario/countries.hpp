@@ -19,7 +19,13 @@ struct Country {
 /// config/ folder: $SIGNALSIM_CONFIG_DIR, else the source tree's config/ (compiled in).
 std::string config_dir();
 
-/// Reads config/countries/<code>.yaml. Throws InputError (unknown code: lists the known ones).
+/// Whether `code` names a preset: a file config/countries/<code>.yaml listed in that folder.
+bool is_country_code(const std::string& code);
+/// "unknown country 'xx' (known: de, jp, kr)".
+std::string unknown_country_reason(const std::string& code);
+
+/// Reads config/countries/<code>.yaml. Throws InputError (unknown code: lists the known ones); the code
+/// is checked against the presets before it is used as a path.
 Country load_country(const std::string& code);
 
 /// Every preset, sorted by code.

@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "scenario/atomic_file.hpp"
 #include "scenario/metrics.hpp"
 #include "scenario/take_over.hpp"
 #include "sumo/sumo_session.hpp"
@@ -15,15 +16,12 @@ namespace signalsim {
 namespace fs = std::filesystem;
 namespace {
 
-void write_atomically(const std::string& path, const std::string& content) {
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw std::runtime_error(path + ": cannot write output file");
-    out << content;
-    if (!out) throw std::runtime_error(path + ": write failed");
-  }
-  fs::rename(tmp, path);
+void write_atomically(const std::string& path, const std::string& content) { write_file_atomically(path, content); }
+
+// Input text is checked to be UTF-8 when it is loaded; anything else that reaches a summary (a net's
+// ids, SUMO's messages) is written with U+FFFD in place of a bad byte rather than losing the run.
+std::string json_text(const nlohmann::ordered_json& summary) {
+  return summary.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
 }
 
 nlohmann::ordered_json parameters_json(const ParameterSet& set) {
@@ -314,7 +312,7 @@ void write_run_outputs(const std::string& dir, const Scenario& scenario, const s
   summary["parameter_sources"] = parameter_sources_json(scenario.params);
   summary["parameter_files"] = parameter_files_json(scenario.params);
   summary["sumo"] = sumo_json(scenario, record.sumo);
-  write_atomically((fs::path(dir) / "summary.json").string(), summary.dump(2) + "\n");
+  write_atomically((fs::path(dir) / "summary.json").string(), json_text(summary));
 }
 
 void clear_run_outputs(const std::string& dir) {
@@ -322,15 +320,16 @@ void clear_run_outputs(const std::string& dir) {
   for (const char* name : {"summary.json", "timeline.csv", "events.csv", "gui.png"}) fs::remove(fs::path(dir) / name);
 }
 
-void write_error_summary(const std::string& dir, const Scenario* scenario, const std::string& message) {
+void write_error_summary(const std::string& dir, const Scenario* scenario, const std::string& message,
+                         const std::string& status) {
   fs::create_directories(dir);
-  for (const char* name : {"timeline.csv", "events.csv"}) fs::remove(fs::path(dir) / name);
+  for (const char* name : {"summary.json", "timeline.csv", "events.csv", "gui.png"}) fs::remove(fs::path(dir) / name);
   nlohmann::ordered_json summary;
   summary["scenario"] = scenario ? scenario->name : "";
   summary["file"] = scenario ? scenario->path : "";
-  summary["status"] = "error";
+  summary["status"] = status;
   summary["error"] = message;
-  write_atomically((fs::path(dir) / "summary.json").string(), summary.dump(2) + "\n");
+  write_atomically((fs::path(dir) / "summary.json").string(), json_text(summary));
 }
 
 }  // namespace signalsim

@@ -38,7 +38,9 @@ void write_run_outputs(const std::string& dir, const Scenario& scenario, const s
 /// the events and the gui screenshot), before SUMO starts writing into it.
 void clear_run_outputs(const std::string& dir);
 
-/// Writes only summary.json, status "error", with the message (a run that could not finish).
-void write_error_summary(const std::string& dir, const Scenario* scenario, const std::string& message);
+/// Removes an earlier run's files and writes only summary.json, status "error" (or "interrupted": a
+/// signal stopped the run), with the message (a run that could not finish).
+void write_error_summary(const std::string& dir, const Scenario* scenario, const std::string& message,
+                         const std::string& status = "error");
 
 }  // namespace signalsim

@@ -11,6 +11,7 @@
 #include "sumo/number_parsing.hpp"
 #include "sumo/file_paths.hpp"
 #include "scenario/sumo_inputs.hpp"
+#include "scenario/utf8_text.hpp"
 #include "scenario/yaml_fields.hpp"
 
 namespace signalsim {
@@ -200,10 +201,14 @@ bool is_scenario_key(const std::string& key) {
 // Applies "--set key=value" overrides to the YAML tree; parameters are collected separately.
 YAML::Node apply_overrides(YAML::Node root, const ScenarioOverrides& overrides, YAML::Node& parameters) {
   for (const std::string& item : overrides.set) {
+    if (const auto bad = find_invalid_utf8(item))
+      throw InputError("--set", 0, "an override is not UTF-8 text: " + describe_invalid_utf8(item, *bad));
     const auto eq = item.find('=');
     if (eq == std::string::npos || eq == 0)
       throw InputError("--set", 0, "'" + item + "' is not of the form key=value");
     const std::string key = item.substr(0, eq);
+    if (eq + 1 == item.size())
+      throw InputError("--set", 0, "'" + item + "': empty value (write " + key + "=VALUE)");
     YAML::Node value;
     try {
       value = YAML::Load(item.substr(eq + 1));
@@ -301,6 +306,7 @@ Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrid
   if (s.duration / s.step_length > 2e6)
     top.fail("duration", "duration / step_length exceeds 2 000 000 steps; shorten the run or lengthen the step");
   s.country = top.text_or("country", "");
+  if (!s.country.empty() && !is_country_code(s.country)) top.fail("country", unknown_country_reason(s.country));
 
   if (!top.has("ego")) throw InputError(path, 0, "missing required key 'ego'");
   YamlFields ego(top.node("ego"), path, "ego");

@@ -1,5 +1,7 @@
 #include "scenario/sumo_inputs.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <sstream>
 
@@ -75,6 +77,15 @@ void read_simulation_keys(const YamlFields& top, const std::string& path, Scenar
 
   // Step length, seed, begin and end.
   s.step_length = top.number("step_length", cfg && cfg->step_length ? *cfg->step_length : 0.1, 0.001, 1.0);
+  // SUMO counts time in whole milliseconds and rounds a step length to them, while the planner would
+  // integrate the value as written: the two clocks drift apart (0.0015 s ran a red light). Refuse it.
+  if (const double ms = s.step_length * 1000.0; std::abs(ms - std::round(ms)) > 1e-6) {
+    const std::string reason = sumo::short_number(s.step_length) +
+                               " s is not a whole number of milliseconds (SUMO would round it to " +
+                               sumo::short_number(std::max(1.0, std::round(ms)) / 1000.0) + " s)";
+    if (top.has("step_length")) top.fail("step_length", reason);
+    throw InputError(s.sumo.sumocfg, 0, "step-length " + reason);
+  }
   s.seed = top.integer("seed", cfg && cfg->seed ? *cfg->seed : 1, 0, 2147483647);
   if (cfg && cfg->step_length) {
     if (top.has("step_length")) overridden("step-length", sumo::short_number(*cfg->step_length), "step_length", sumo::short_number(s.step_length));

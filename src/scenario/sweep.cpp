@@ -501,7 +501,16 @@ std::vector<RunSpec> suite_runs(const std::vector<std::string>& files, const std
     run.index = runs.size();
     run.scenario = file;
     run.set = set;
-    run.name = load_scenario(file, ScenarioOverrides{set}).name;
+    try {
+      run.name = load_scenario(file, ScenarioOverrides{set}).name;
+    } catch (const InputError& e) {
+      if (e.file() == "--set") throw;  // the command's own input: every run would fail alike
+      run.name = fs::path(file).stem().string();
+      run.load_error = e.what();
+    } catch (const std::exception& e) {  // a sumocfg the scenario names that does not read, ...
+      run.name = fs::path(file).stem().string();
+      run.load_error = e.what();
+    }
     runs.push_back(std::move(run));
   }
   return runs;
@@ -634,20 +643,6 @@ bool row_matches(const ResultRow& row, const RunSpec& run) {
   for (const auto& [key, value] : run.values)
     if (cell(key) != value) return false;
   return true;
-}
-
-void write_file_atomically(const std::string& path, const std::string& content) {
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw std::runtime_error(path + ": cannot write");
-    out << content;
-    out.flush();
-    if (!out) throw std::runtime_error(path + ": write failed");
-  }
-  std::error_code ec;
-  fs::rename(tmp, path, ec);
-  if (ec) throw std::runtime_error(path + ": cannot rename " + tmp + ": " + ec.message());
 }
 
 }  // namespace signalsim

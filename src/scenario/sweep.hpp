@@ -27,6 +27,8 @@
 #include <utility>
 #include <vector>
 
+#include "scenario/atomic_file.hpp"
+
 namespace signalsim {
 
 /// One swept key and its values (the YAML text of each value, as `--set` receives it).
@@ -66,6 +68,7 @@ struct RunSpec {
   std::string name;                                         ///< the scenario's `name`
   std::vector<std::pair<std::string, std::string>> values;  ///< swept key -> value, sweep order
   std::vector<std::string> set;                             ///< every --set item for the run
+  std::string load_error;  ///< a suite's file that does not load: its one-line message (an error row)
 };
 
 /// Reads and checks a sweep file. Throws InputError naming the file and line: malformed YAML, an
@@ -105,8 +108,9 @@ std::vector<RunSpec> expand_sweep(const Sweep& sweep);
 /// fails) for an unknown key, a bad value, an unknown country, ...
 void check_sweep_runs(const Sweep& sweep, std::vector<RunSpec>& runs);
 
-/// The runs of a suite: one per scenario file with the same overrides. Loads each (no SUMO);
-/// throws InputError for a bad file or override.
+/// The runs of a suite: one per scenario file with the same overrides. Loads each (no SUMO). A file
+/// that does not load (malformed, an unknown key, ...) is a run with `load_error` set and its file
+/// stem as name: it becomes an error row and the others run. Throws InputError for a bad --set.
 std::vector<RunSpec> suite_runs(const std::vector<std::string>& files, const std::vector<std::string>& set);
 
 // --- results.csv --------------------------------------------------------------------------------
@@ -132,8 +136,7 @@ ResultRows read_results_csv(const std::string& path);
 /// True when `row` describes `run` (same scenario file and swept values): --resume may skip it.
 bool row_matches(const ResultRow& row, const RunSpec& run);
 
-/// Writes `path` through "<path>.tmp" and a rename. Throws std::runtime_error.
-void write_file_atomically(const std::string& path, const std::string& content);
+// write_file_atomically (through "<path>.tmp" and a rename): scenario/atomic_file.hpp.
 
 /// CSV helpers (RFC 4180).
 std::string csv_field(const std::string& text);

@@ -2,16 +2,26 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <limits>
 #include <sstream>
 
 #include "scenario/input_error.hpp"
+#include "scenario/utf8_text.hpp"
 
 namespace signalsim {
 
 YAML::Node load_yaml_file(const std::string& path, const std::string& what) {
   if (!std::filesystem::is_regular_file(path)) throw InputError(path, 0, what + " not found");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, 0, "cannot read the " + what);
+  std::stringstream bytes;
+  bytes << in.rdbuf();
+  const std::string text = bytes.str();
+  // Every string of the file may end up in summary.json (UTF-8 JSON): check the text now, at its line.
+  if (const auto bad = find_invalid_utf8(text)) throw InputError(path, bad->line, describe_invalid_utf8(text, *bad) + "; save the file as UTF-8");
   try {
-    return YAML::LoadFile(path);
+    return YAML::Load(text);
   } catch (const YAML::Exception& e) {
     throw InputError(path, e.mark.line + 1, "malformed YAML: " + e.msg);
   }
@@ -80,8 +90,13 @@ double YamlFields::required_number(const std::string& key, double min, double ma
   const YAML::Node n = node(key);
   if (!n) throw InputError(file_, yaml_line(mapping_), "missing required key '" + qualified(key) + "'");
   double value = 0.0;
+  if (n.IsNull()) fail(key, "empty value (expected a number)");
   if (!n.IsScalar() || !YAML::convert<double>::decode(n, value) || !std::isfinite(value))
     fail(key, "expected a number, got '" + (n.IsScalar() ? n.Scalar() : std::string("a list or map")) + "'");
+  // SUMO reads numbers with strtod and refuses one that underflows (a subnormal such as 1e-308):
+  // such a value would pass here and fail in SUMO with its own two-line message.
+  if (value != 0.0 && std::abs(value) < std::numeric_limits<double>::min())
+    fail(key, "value " + n.Scalar() + " is too small to be a number SUMO can read (below 2.2e-308); write 0");
   if (value < min || value > max) {
     std::ostringstream out;
     out << "value " << n.Scalar() << " is out of range [" << min << ", " << max << "]";
@@ -97,6 +112,7 @@ int YamlFields::integer(const std::string& key, int fallback, int min, int max) 
   }
   const YAML::Node n = node(key);
   int value = 0;
+  if (n.IsNull()) fail(key, "empty value (expected an integer)");
   if (!n.IsScalar() || !YAML::convert<int>::decode(n, value))
     fail(key, "expected an integer, got '" + (n.IsScalar() ? n.Scalar() : std::string("a list or map")) + "'");
   if (value < min || value > max) {

@@ -5,11 +5,16 @@
 namespace signalsim::sumo {
 namespace {
 
-volatile std::sig_atomic_t requested = 0;
+volatile std::sig_atomic_t requested = 0;  // the first signal's number
 
-void on_signal(int) { requested = 1; }
+void on_signal(int signal) {
+  if (requested == 0) requested = signal;
+}
 
 }  // namespace
+
+Interrupted::Interrupted(int signal)
+    : SumoError(std::string("interrupted by ") + (signal == SIGTERM ? "SIGTERM" : "SIGINT")), signal_(signal) {}
 
 void install_interruption_handlers() {
   struct sigaction action {};
@@ -22,8 +27,10 @@ void install_interruption_handlers() {
 
 bool interruption_requested() { return requested != 0; }
 
+int interruption_signal() { return requested; }
+
 void throw_if_interrupted() {
-  if (requested) throw Interrupted();
+  if (requested) throw Interrupted(requested);
 }
 
 }  // namespace signalsim::sumo

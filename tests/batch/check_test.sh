@@ -61,11 +61,11 @@ echo "ok   a missing golden file fails and says how to make it"
 "$bin" batch "$data/turns.yaml" --out "$work/slow" --timeout 0.5 --jobs 1 \
   --set step_length=0.002 --set duration=600 --set ego.max_speed=1 --set ego.depart_speed=1 > "$work/slow.log"
 code=$?
-[ $code -eq 1 ] || fail "timeout: exit code $code ($(cat "$work/slow.log"))"
+[ $code -eq 4 ] || fail "timeout: exit code $code, not 4 (a run errored) ($(cat "$work/slow.log"))"
 grep -q ',error,.*,timed out: still running after the 0.5 s limit (worker killed)$' "$work/slow/results.csv" ||
   fail "timeout row: $(cat "$work/slow/results.csv")"
 "$bin" batch "${scenarios[@]}" --out "$work/bad" --set "ego.route=[in_S, nowhere]" --jobs 2 > "$work/bad.log"
-[ $? -eq 1 ] || fail "a rejected run should make the batch exit 1"
+[ $? -eq 4 ] || fail "a rejected run should make the batch exit 4 (a run errored)"
 python3 - "$work/bad/results.csv" <<'PY' || exit 1
 import csv, sys
 rows = list(csv.DictReader(open(sys.argv[1])))

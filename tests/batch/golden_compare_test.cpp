@@ -63,7 +63,7 @@ TEST(GoldenCompare, JUnitXmlCountsAndEscapes) {
   cases[2].name = "c";
   cases[2].result = JUnitCase::Result::Error;
   const std::string xml = junit_xml("signalsim check", cases, 1.5);
-  EXPECT_NE(xml.find(R"(tests="3" failures="1" errors="1" time="1.500")"), std::string::npos);
+  EXPECT_NE(xml.find(R"(tests="3" failures="1" errors="1" skipped="0" time="1.500")"), std::string::npos);
   EXPECT_NE(xml.find(R"(name="b&lt;&amp;&gt;")"), std::string::npos);
   EXPECT_NE(xml.find(R"(<failure message="1 event &quot;differs&quot;">left -&gt; right</failure>)"), std::string::npos);
   EXPECT_NE(xml.find("<error"), std::string::npos);

@@ -1,0 +1,25 @@
+// Text read from the user's files and command line must be UTF-8: summary.json and the other outputs
+// are JSON/CSV in UTF-8, and a byte that is not would only fail when they are written, after the run.
+// Checked when a file is loaded, so the message names the file and the line.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace signalsim {
+
+/// Where `text` stops being UTF-8: the offset of the first byte of the bad sequence, its line (1-based)
+/// and that byte. Overlong forms, surrogates and code points above U+10FFFF are not UTF-8.
+struct Utf8Problem {
+  std::size_t offset = 0;
+  int line = 1;
+  unsigned char byte = 0;
+};
+std::optional<Utf8Problem> find_invalid_utf8(std::string_view text);
+
+/// "invalid UTF-8 (byte 0xE9 at column 11)" for messages (the column counts bytes).
+std::string describe_invalid_utf8(std::string_view text, const Utf8Problem& problem);
+
+}  // namespace signalsim
