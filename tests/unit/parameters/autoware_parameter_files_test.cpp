@@ -12,21 +12,14 @@
 #include "scenario/parameters.hpp"
 #include "scenario/scenario.hpp"
 #include "temp_dir.hpp"
+#include "test_files.hpp"
 
 namespace signalsim {
 namespace {
 
 std::string fixture(const std::string& name) { return std::string(SIGNALSIM_SOURCE_DIR) + "/tests/data/autoware/" + name; }
 
-template <typename F>
-std::string error_of(F f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
+using test::error_of;
 
 const UnusedParameters* unused_of(const ParameterSet& set, const std::string& file) {
   for (const UnusedParameters& u : set.unused())
