@@ -244,4 +244,9 @@ class SumoSession {
 /// display, a step length that differs from a connected server's, ...
 std::unique_ptr<SumoSession> open_session(const SessionConfig& config);
 
+/// Whether SUMO itself (embedded, this process) loads the net alone: empty when it does, else SUMO's
+/// first error line (e.g. "Error: Unknown vehicle class 'cable_car'." of a net newer than SUMO 1.15).
+/// Starts and closes one simulation of no steps; costs about SUMO's load time of the net.
+std::string net_load_error(const std::string& net_path);
+
 }  // namespace signalsim::sumo
