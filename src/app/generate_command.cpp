@@ -1,7 +1,12 @@
 // `signalsim generate NET --count N --seed S --out DIR [--through ...] [--country CODE] ...`:
 // scenario files for random routes with the expectations the rules imply (src/generate/).
+#include <cmath>
+#include <cerrno>
+#include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
+#include <limits>
 #include <memory>
 
 #include "app/cli_numbers.hpp"
@@ -15,8 +20,24 @@ namespace {
 struct GenerateCli {
   generate::GenerateOptions options;
   std::string through = "turns,lights,roundabouts";
+  std::string count;        // parsed by whole_number: CLI11 would wrap "-3" to 2^64 - 3
+  std::string seed = "1";
   bool quiet = false;
 };
+
+// A whole number in [low, high], written in decimal digits only: "-3", "+3", "1e3", "0x10" and
+// anything above `high` (18446744073709551616 included) throw GenerateError naming the option.
+std::uint64_t whole_number(const std::string& option, const std::string& text, std::uint64_t low, std::uint64_t high) {
+  const std::string range = std::to_string(low) + ".." + std::to_string(high);
+  bool digits = !text.empty() && text.size() <= 20;
+  for (const char c : text) digits = digits && c >= '0' && c <= '9';
+  if (!digits) throw generate::GenerateError(option + " '" + text + "': not a whole number in " + range);
+  errno = 0;
+  const unsigned long long value = std::strtoull(text.c_str(), nullptr, 10);
+  if (errno == ERANGE || value < low || value > high)
+    throw generate::GenerateError(option + " " + text + ": out of range " + range);
+  return value;
+}
 
 // The command as the files' headers record it: every option, in one order, whatever the user's.
 std::string command_line(const GenerateCli& cli) {
@@ -32,6 +53,8 @@ std::string command_line(const GenerateCli& cli) {
 
 int run_generate(GenerateCli& cli) {
   try {
+    cli.options.count = whole_number("--count", cli.count, 1, generate::kMaxCount);
+    cli.options.seed = whole_number("--seed", cli.seed, 0, std::numeric_limits<std::uint64_t>::max());
     cli.options.through = generate::parse_through(cli.through);
     cli.options.command_line = command_line(cli);
     const generate::GenerateReport report = generate::generate(cli.options);
@@ -58,8 +81,8 @@ Command add_generate_command(CLI::App& app) {
       "generate", "Write scenario files for random routes through turns, lights and roundabouts, with the "
                   "expectations the rules imply");
   sub->add_option("net", o.net, "SUMO .net.xml (plain or gzip)")->required();
-  sub->add_option("--count", o.count, "How many scenarios")->required();
-  sub->add_option("--seed", o.seed, "Seed of the route choice (same seed, same files)")->capture_default_str();
+  sub->add_option("--count", cli->count, "How many scenarios (1.." + std::to_string(generate::kMaxCount) + ")")->required();
+  sub->add_option("--seed", cli->seed, "Seed of the route choice, 0..2^64-1 (same seed, same files)")->capture_default_str();
   sub->add_option("--out", o.out_dir, "Folder for the scenarios (created; earlier generate output replaced)")->required();
   sub->add_option("--through", cli->through, "Features each route passes: turns,lights,roundabouts (any of them)")
       ->capture_default_str();

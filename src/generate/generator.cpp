@@ -2,6 +2,7 @@
 #include "generate/generator.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <map>
 #include <set>
@@ -13,6 +14,7 @@
 #include "scenario/expectations.hpp"
 #include "scenario/input_error.hpp"
 #include "scenario/route_planning.hpp"
+#include "sumo/sumo_session.hpp"
 
 namespace signalsim::generate {
 namespace fs = std::filesystem;
@@ -88,7 +90,10 @@ std::string net_stem(const std::string& net_path) {
 
 GenerateReport generate(const GenerateOptions& o) {
   if (o.count == 0) throw GenerateError("--count must be at least 1");
-  if (!(o.min_length > 0.0) || !(o.max_length >= o.min_length))
+  if (o.count > kMaxCount) throw GenerateError("--count " + std::to_string(o.count) + ": at most " + std::to_string(kMaxCount));
+  if (!std::isfinite(o.scenario.max_speed) || !std::isfinite(o.scenario.straight))
+    throw GenerateError("--max-speed and --straight must be finite numbers");
+  if (!(o.min_length > 0.0) || !(o.max_length >= o.min_length) || !std::isfinite(o.max_length))
     throw GenerateError("--min-length " + fixed(o.min_length, 0) + " and --max-length " + fixed(o.max_length, 0) +
                         ": need 0 < min <= max");
   const ParameterSet params = resolved_parameters(o.scenario.country);
@@ -101,6 +106,10 @@ GenerateReport generate(const GenerateOptions& o) {
   const RouteGraph graph = graph_of_net(net);
   if (graph.starts().empty())
     throw GenerateError(o.net + ": no edge a passenger car may drive on to another: nothing to generate");
+  // signalsim reads more nets than SUMO 1.15 loads (a newer netconvert's vClass 'cable_car', ...):
+  // every run would fail, so SUMO itself must load the net.
+  if (const std::string error = sumo::net_load_error(o.net); !error.empty())
+    throw GenerateError(o.net + ": SUMO cannot load this net, so no scenario on it could run: " + error);
   check_output_dir(o.out_dir);
   bool prepared = false;  // the folder is made (and earlier outputs removed) with the first scenario
 
@@ -114,54 +123,65 @@ GenerateReport generate(const GenerateOptions& o) {
   std::map<std::string, std::size_t> rejected;
   std::set<std::vector<std::string>> seen;
   const std::size_t budget = std::max(kMinWalks, kWalksPerScenario * o.count);
-  while (report.files.size() < o.count && report.walks < budget) {
-    ++report.walks;
-    const auto walk = random_walk(graph, rng, {o.min_length, o.max_length});
-    if (!walk) {
-      ++rejected["dead end or length out of range"];
-      continue;
+  const bool had_folder = fs::exists(o.out_dir);
+  try {
+    while (report.files.size() < o.count && report.walks < budget) {
+      ++report.walks;
+      const auto walk = random_walk(graph, rng, {o.min_length, o.max_length});
+      if (!walk) {
+        ++rejected["dead end or length out of range"];
+        continue;
+      }
+      std::vector<std::string> edges;
+      for (std::size_t e : walk->edges) edges.push_back(graph.edges()[e].id);
+      if (!seen.insert(edges).second) {
+        ++rejected["route already generated"];
+        continue;
+      }
+      RouteRejection why;
+      std::optional<RouteScenario> made = route_scenario(net, net_from_dir, edges, params, o.scenario, candidate, why);
+      if (!made) {
+        ++rejected[why.reason];
+        continue;
+      }
+      if (!wanted(made->features, o.through)) {
+        ++rejected["through none of " + to_string(o.through)];
+        continue;
+      }
+      const std::size_t number = report.files.size() + 1;
+      const std::string name = file_name(stem, number, o.count);
+      ScenarioDraft& d = made->draft;
+      d.name = name.substr(0, name.size() - 5);
+      d.description = "generated route " + std::to_string(number) + " on " + stem + ": " + fixed(made->length) + " m, " +
+                      std::to_string(made->features.turns.size()) + " turn(s), " +
+                      std::to_string(made->features.lights.size()) + " light(s), " +
+                      std::to_string(made->features.roundabouts.size()) + " roundabout(s)";
+      std::vector<std::string> header = {
+          std::string(kScenarioMarker + 2) + " (route " + std::to_string(number) + ", random walk " +
+              std::to_string(report.walks) + " of seed " + std::to_string(o.seed) + "):",
+          "  " + o.command_line,
+          "Net: " + o.net + " (net: below is relative to this file). The expectations come from the rules (spec TSD "
+          "§4-§6, §8.2; spec TLJ) and the route, never from a run; `signalsim run` on this file checks them."};
+      d.header.insert(d.header.begin(), header.begin(), header.end());
+      if (!prepared) prepare_output_dir(o.out_dir);
+      prepared = true;
+      write_file_atomically(candidate, scenario_text(d));
+      try {
+        check_loads(candidate, net);
+      } catch (const InputError& e) {
+        throw std::runtime_error(std::string("generate wrote a scenario signalsim refuses (a generator defect): ") + e.what());
+      }
+      fs::rename(candidate, fs::path(o.out_dir) / name);
+      report.files.push_back({name, edges, made->features, made->length, d.expect.size()});
     }
-    std::vector<std::string> edges;
-    for (std::size_t e : walk->edges) edges.push_back(graph.edges()[e].id);
-    if (!seen.insert(edges).second) {
-      ++rejected["route already generated"];
-      continue;
-    }
-    RouteRejection why;
-    std::optional<RouteScenario> made = route_scenario(net, net_from_dir, edges, params, o.scenario, candidate, why);
-    if (!made) {
-      ++rejected[why.reason];
-      continue;
-    }
-    if (!wanted(made->features, o.through)) {
-      ++rejected["through none of " + to_string(o.through)];
-      continue;
-    }
-    const std::size_t number = report.files.size() + 1;
-    const std::string name = file_name(stem, number, o.count);
-    ScenarioDraft& d = made->draft;
-    d.name = name.substr(0, name.size() - 5);
-    d.description = "generated route " + std::to_string(number) + " on " + stem + ": " + fixed(made->length) + " m, " +
-                    std::to_string(made->features.turns.size()) + " turn(s), " +
-                    std::to_string(made->features.lights.size()) + " light(s), " +
-                    std::to_string(made->features.roundabouts.size()) + " roundabout(s)";
-    std::vector<std::string> header = {
-        std::string(kScenarioMarker + 2) + " (route " + std::to_string(number) + ", random walk " +
-            std::to_string(report.walks) + " of seed " + std::to_string(o.seed) + "):",
-        "  " + o.command_line,
-        "Net: " + o.net + " (net: below is relative to this file). The expectations come from the rules (spec TSD "
-        "§4-§6, §8.2; spec TLJ) and the route, never from a run; `signalsim run` on this file checks them."};
-    d.header.insert(d.header.begin(), header.begin(), header.end());
-    if (!prepared) prepare_output_dir(o.out_dir);
-    prepared = true;
-    write_file_atomically(candidate, scenario_text(d));
-    try {
-      check_loads(candidate, net);
-    } catch (const InputError& e) {
-      throw std::runtime_error(std::string("generate wrote a scenario signalsim refuses (a generator defect): ") + e.what());
-    }
-    fs::rename(candidate, fs::path(o.out_dir) / name);
-    report.files.push_back({name, edges, made->features, made->length, d.expect.size()});
+  } catch (...) {
+    // No half-written output: the candidate and every file of this run go (earlier outputs are
+    // already replaced), and the folder too when this run made it and it is left empty.
+    std::error_code ec;
+    for (const std::string& f : {candidate, candidate + ".tmp"}) fs::remove(f, ec);
+    for (const GeneratedFile& f : report.files) fs::remove(fs::path(o.out_dir) / f.file, ec);
+    if (!had_folder && fs::is_empty(o.out_dir, ec)) fs::remove(o.out_dir, ec);
+    throw;
   }
   for (const auto& [reason, n] : rejected) report.rejections.push_back({reason, n});
   if (report.files.empty())

@@ -40,9 +40,12 @@ struct Through {
 Through parse_through(const std::string& list);
 std::string to_string(const Through& through);
 
+/// The most scenarios one generate writes (it draws at most max(2000, 200 N) random walks).
+inline constexpr std::size_t kMaxCount = 10000;
+
 struct GenerateOptions {
   std::string net;              ///< the net as given (absolute or relative to the cwd)
-  std::size_t count = 0;
+  std::size_t count = 0;        ///< 1..kMaxCount
   std::uint64_t seed = 1;
   std::string out_dir;
   Through through;

@@ -7,8 +7,9 @@
 namespace signalsim::generate {
 namespace {
 
-bool drivable(const sumo::NetEdge& edge) {
+bool drivable(const sumo::NetIndex& net, const sumo::NetEdge& edge) {
   if (edge.is_internal || edge.id.empty() || edge.id.front() == ':') return false;
+  if (!sumo::sumo_cannot_drive(net, edge).empty()) return false;  // SUMO 1.15 aborts there
   return std::any_of(edge.lanes.begin(), edge.lanes.end(), [](const sumo::NetLane& l) { return l.allows_passenger; });
 }
 
@@ -20,7 +21,7 @@ RouteGraph graph_of_net(const sumo::NetIndex& net) {
   std::vector<GraphEdge> edges;
   std::unordered_map<std::string, std::size_t> index;  // lookups only; the graph sorts by id
   for (const sumo::NetEdge& e : net.edges()) {
-    if (!drivable(e)) continue;
+    if (!drivable(net, e)) continue;
     double length = 0.0;
     for (const sumo::NetLane& l : e.lanes)
       if (l.allows_passenger) length = std::max(length, l.length);

@@ -9,6 +9,7 @@
 #include "generate/number_text.hpp"
 #include "generate/route_facts.hpp"
 #include "generate/speed_profile.hpp"
+#include "planning/stop/jerk_limited_stop.hpp"
 #include "scenario/input_error.hpp"
 #include "scenario/route_planning.hpp"
 
@@ -20,6 +21,7 @@ constexpr double kInsertionRoom = 5.0;   // [m] SUMO inserts the ego only if it 
 constexpr double kDurationFactor = 1.3;  // duration = factor x (travel + waits) + slack, in 10 s steps
 constexpr double kDurationSlack = 30.0;  // [s]
 constexpr double kYieldWait = 5.0;       // [s] per link where SUMO makes the ego yield
+constexpr double kLightRoom = 1.0;       // [m] a normal stop from the departure speed ends this short of the first light's stop point
 
 Scenario planning_scenario(const std::string& path, const std::string& net_path, const std::vector<std::string>& edges,
                            const ParameterSet& params, const RouteScenarioOptions& o) {
@@ -39,14 +41,33 @@ Scenario planning_scenario(const std::string& path, const std::string& net_path,
 }
 
 // The departure speed: no faster than the ego, the first lane's limit, the speed planner's braking
-// envelope at s 0 (so the planner never starts above its own profile), and what SUMO can stop from
-// by the first edge's end (else it delays the insertion at a red light).
-double depart_speed(const RouteMap& route, const RouteScenarioOptions& o) {
+// envelope at s 0 (so the planner never starts above its own profile), what SUMO can stop from by
+// the first edge's end (else it delays the insertion at a red light), and what a normal stop
+// (planning/stop, as the step loop starts it: -0.9 m/s^2 of the normal set's -1 m/s^2, jerk 1 m/s^3,
+// one step late, kLightRoom to spare) can shed before the first light's stop point. A light red at
+// the departure and closer than the judge's stopping distance is passed by the judge when the ego
+// can reach it within the yellow lamp period (spec TLJ §2.3), i.e. crossed on red.
+double depart_speed(const RouteMap& route, const std::vector<LightFact>& lights, double stop_margin,
+                    const RouteScenarioOptions& o) {
   double v = std::min(o.max_speed, route.at(0).speed_limit);
   const double horizon = o.max_speed * o.max_speed / (2.0 * o.decel) + 1.0;
   for (std::size_t i = 0; i < route.size() && route.at(i).s_start < horizon; ++i)
     v = std::min(v, std::sqrt(route.at(i).speed_limit * route.at(i).speed_limit + 2.0 * o.decel * route.at(i).s_start));
   v = std::min(v, std::sqrt(2.0 * kSumoDecel * std::max(0.0, route.at(0).length - kInsertionRoom)));
+  if (!lights.empty()) {
+    const double room = lights.front().stop_line - stop_margin - kLightRoom;
+    const StopPlannerParameters stop;
+    const auto fits = [&](double speed) {
+      return speed <= 0.0 ||
+             stopping_distance(speed, 0.0, stop.brake_start_ratio * stop.normal.min_acc, -stop.normal.min_jerk) +
+                     speed * kStepLength <=
+                 room;
+    };
+    for (long tenths = std::lround(std::max(0.0, floor_tenth(v)) * 10.0);; --tenths) {  // in 0.1 m/s steps
+      v = 0.1 * static_cast<double>(std::max(0L, tenths));
+      if (fits(v)) break;
+    }
+  }
   return std::max(0.0, floor_tenth(v));
 }
 
@@ -98,7 +119,7 @@ std::optional<RouteScenario> route_scenario(const sumo::NetIndex& net, const std
     rejection.reason = "a light never lets the route's link go";
     return std::nullopt;
   }
-  const double v0 = depart_speed(route, o);
+  const double v0 = depart_speed(route, facts.lights, params.number("stop_margin"), o);
   const SpeedLimits limits{o.max_speed, o.accel, o.decel};
   // Stop zones from the planned speed without stops (the ego is no faster than that).
   const SpeedProfile free_run(route, 0.0, v0, limits, kStepLength, {});
@@ -170,8 +191,8 @@ std::optional<RouteScenario> route_scenario(const sumo::NetIndex& net, const std
   h.push_back("Ego: " + fixed(o.length) + " m, front " + fixed(o.base_link_to_front) + " m ahead of base_link, at most " +
               fixed(o.max_speed, 2) + " m/s, accel/decel " + fixed(o.accel) + "/" + fixed(o.decel) +
               " m/s^2; departs at s 0 on " + route.at(0).lane_id + " at " + fixed(v0) +
-              " m/s (the least of its top speed, the lane limit, the speed planner's braking envelope and what SUMO "
-              "can stop from by the edge's end)");
+              " m/s (the least of its top speed, the lane limit, the speed planner's braking envelope, what SUMO "
+              "can stop from by the edge's end and what a normal stop sheds before the first light)");
   h.push_back("Duration " + fixed(duration, 0) + " s = " + fixed(kDurationFactor) + " x (" + fixed(speed.travel_time()) +
               " s planned travel + " + fixed(waits) + " s of light cycles and yields) + " + fixed(kDurationSlack, 0) +
               " s, in 10 s steps");

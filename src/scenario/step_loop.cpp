@@ -90,6 +90,17 @@ class LightOutcomes {
   std::map<std::size_t, Previous> previous_;  // by approach route index
 };
 
+// The nearest stop line ahead of a light the judge passes on a stop signal (spec TLJ §2.3 "can pass
+// through during yellow lamp"), or +infinity.
+double passed_on_stop_signal(const std::vector<LightStep>& lights) {
+  double line = std::numeric_limits<double>::infinity();
+  for (const LightStep& l : lights)
+    if (l.judged && l.front_to_stop_line > 0.0 && l.result.decision == JudgeDecision::Pass &&
+        l.result.zone == JudgeZone::PassThroughYellow)
+      line = std::min(line, l.light->s_stop_line);
+  return line;
+}
+
 void record_event(RunRecord& record, const TimelineRow& row, std::string kind, std::string from, std::string to,
                   std::string source) {
   record.events.push_back({row.time, row.s_front, std::move(kind), std::move(from), std::move(to), std::move(source)});
@@ -244,7 +255,15 @@ RunRecord drive(const StartedRun& run, const sumo::NetIndex& net) {
     session.set_right_of_way(!light_decides_next_junction(route, s_front, light_steps));
 
     // plan: lane limits, and a jerk-limited stop for each stop point (planning/stop/stop_speed_planner).
-    const double limits_speed = plan_speed_under_limits(route, s_front, observed.speed, dt, limits);
+    // A light the judge passes on a stop signal (pass_through_yellow: it cannot stop, and reaches the
+    // line within the yellow lamp period at its current speed) is crossed at that speed: the limits
+    // beyond its stop line apply from the line on (slowing before it for a turn would reach the line
+    // on red, issue 11).
+    const double passed_line = passed_on_stop_signal(light_steps);
+    const double limits_speed = plan_speed_under_limits(route, s_front, observed.speed, dt, limits, passed_line);
+    // SUMO would brake ahead of the turn's limit on its own (its safe speed looks at the next lanes'
+    // limits): while crossing such a line its lane limits are off, the planner's apply again beyond it.
+    session.set_sumo_lane_limits(!std::isfinite(passed_line));
     stop_speed.begin_step(observed.speed, observed.accel, limits_speed, dt);
     std::optional<StopLevel> stop_level;
     if (stopping) stop_level = stop_speed.add_stop(*stopping->result.stop_point_distance);

@@ -17,6 +17,17 @@ bool lists_class(const std::string& classes, const std::string& wanted) {
 
 // SUMO lane permissions: `allow` lists the classes that may use the lane, else `disallow` those
 // that may not; neither means everyone.
+std::string sumo_cannot_drive(const NetIndex& net, const NetEdge& edge) {
+  if (edge.bidi.empty()) return {};
+  const NetEdge* partner = net.edge(edge.bidi);
+  const std::size_t partner_lanes = partner ? partner->lanes.size() : 0;
+  if (edge.lanes.size() <= 1 && partner_lanes <= 1) return {};
+  return "edge '" + edge.id + "' (" + std::to_string(edge.lanes.size()) + " lanes) is bidirectional with '" +
+         edge.bidi + "' (" + std::to_string(partner_lanes) +
+         " lanes): SUMO 1.15 aborts on a vehicle there (assertion bidiEdge->getLanes().size() == 1 in "
+         "MSLane::getBidiLane; it supports one-lane bidi edges only)";
+}
+
 bool passenger_allowed(const std::string& allow, const std::string& disallow) {
   if (!allow.empty()) return lists_class(allow, "passenger");
   if (!disallow.empty()) return !lists_class(disallow, "passenger");

@@ -47,6 +47,7 @@ struct NetEdge {
   std::vector<NetLane> lanes;                  ///< by index
   std::map<std::string, std::string> params;
   double stop_offset = 0.0;                    ///< edge-level <stopOffset value> [m]
+  std::string bidi;                            ///< `bidi`: the edge in the other direction on the same road
 };
 
 struct NetConnection {
@@ -105,6 +106,14 @@ std::string defect_key(NetElement kind, const std::string& id);
 
 /// Whether a passenger car may use a lane with these `allow` / `disallow` attributes.
 bool passenger_allowed(const std::string& allow, const std::string& disallow);
+
+class NetIndex;
+
+/// Why SUMO 1.15 cannot drive a vehicle on `edge`, or empty: a bidirectional edge (`bidi`) where it
+/// or its partner has more than one lane. SUMO 1.15's MSLane::getBidiLane asserts
+/// `bidiEdge->getLanes().size() == 1` and aborts the process (SIGABRT) when a vehicle is inserted
+/// on such an edge or enters it (seen on DLR's Doerpfeldstr net; plain `sumo` aborts too).
+std::string sumo_cannot_drive(const NetIndex& net, const NetEdge& edge);
 
 class NetIndex {
  public:

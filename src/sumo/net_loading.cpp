@@ -180,6 +180,7 @@ void NetLoader::edge(pugi::xml_node node) {
   edge.is_internal = e.text("function") == "internal";
   edge.from_junction = e.text("from");
   edge.to_junction = e.text("to");
+  edge.bidi = e.text("bidi");
   edge.params = params(node, what, self);
   edge.stop_offset = stop_offset(node, what, self).value_or(0.0);
   std::vector<std::optional<int>> indices;

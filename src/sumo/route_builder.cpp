@@ -137,6 +137,7 @@ RoutePlan build_route(const NetIndex& net, const std::vector<std::string>& edges
     }
     refuse_defective(net, NetElement::Edge, id, "a route edge");
     if (edge->lanes.empty()) throw RouteError("route edge " + quoted(id) + " has no lanes");
+    if (const std::string why = sumo_cannot_drive(net, *edge); !why.empty()) throw RouteError("route " + why);
     route.push_back(edge);
   }
 

@@ -102,6 +102,22 @@ class EmbeddedSession final : public SessionImpl<LibsumoApi> {
 
 }  // namespace
 
+std::string embedded_net_load_error(const std::string& net_path) {
+  StderrCapture capture;  // SUMO's messages stay out of the user's terminal
+  try {
+    libsumo::Simulation::start({"sumo", "--net-file", net_path, "--begin", "0", "--end", "0", "--no-step-log", "true",
+                                "--duration-log.disable", "true", "--no-warnings", "true"});
+  } catch (const std::exception& e) {
+    const std::string reason = capture.first_error();
+    return reason.empty() ? std::string(e.what()) : reason;
+  }
+  try {
+    libsumo::Simulation::close();
+  } catch (...) {  // loaded is what was asked
+  }
+  return {};
+}
+
 std::unique_ptr<SumoSession> open_embedded_session(const SessionConfig& config) {
   auto session = std::make_unique<EmbeddedSession>(config);
   session->insert_ego();

@@ -9,6 +9,8 @@
 namespace signalsim::sumo {
 
 std::unique_ptr<SumoSession> open_embedded_session(const SessionConfig& config);
+/// net_load_error on libsumo.
+std::string embedded_net_load_error(const std::string& net_path);
 /// gui (starts sumo-gui itself) and connect (an existing server).
 std::unique_ptr<SumoSession> open_traci_session(const SessionConfig& config);
 

@@ -283,6 +283,12 @@ class SessionImpl : public SumoSession {
     apply_speed_mode();
   }
 
+  void set_sumo_lane_limits(bool on) override {
+    if (on == lane_limits_) return;
+    lane_limits_ = on;
+    guarded("the ego's speed factor", [&] { Api::Vehicle::setSpeedFactor(ego_, on ? 1.0 : kFreeSpeedFactor); });
+  }
+
   void set_right_of_way(bool respect) override {
     if (respect == right_of_way_) return;
     right_of_way_ = respect;
@@ -538,6 +544,7 @@ class SessionImpl : public SumoSession {
   int ego_collisions_ = 0;
   bool emergency_braking_ = false;
   bool right_of_way_ = true;
+  bool lane_limits_ = true;  // speed factor 1 (set_sumo_lane_limits)
 };
 
 }  // namespace signalsim::sumo

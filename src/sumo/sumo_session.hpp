@@ -31,6 +31,9 @@ inline constexpr int kBlinkerLeft = 2;
 inline constexpr int kBlinkerEmergency = 4;
 inline constexpr int kBlinkerMask = kBlinkerRight | kBlinkerLeft | kBlinkerEmergency;
 
+/// The ego's SUMO speed factor while SUMO's lane limits are off (set_sumo_lane_limits).
+inline constexpr double kFreeSpeedFactor = 10.0;
+
 /// The id signalsim gives an ego it adds itself.
 inline constexpr const char* kDefaultEgoId = "ego";
 
@@ -222,6 +225,12 @@ class SumoSession {
   /// cleared, spec SUMO §4) while on.
   virtual void set_emergency_braking(bool on) = 0;
 
+  /// Whether SUMO holds the ego to the lanes' speed limits itself (on by default). Off, its speed
+  /// factor is kFreeSpeedFactor: SUMO no longer brakes ahead of a lower limit (a turn's internal lane),
+  /// the ego's speed is signalsim's command alone (its vType maxSpeed still caps it). The step loop
+  /// turns it off while the ego crosses a light the judge passed on yellow at its current speed.
+  virtual void set_sumo_lane_limits(bool on) = 0;
+
   /// Whether SUMO's right of way at junctions applies to the ego (speed-mode bit 3, on by default).
   /// The step loop switches it off while the next junction the ego enters is a light showing the
   /// ego red or yellow: the judge is then the only decision at that link. With bit 3 on, SUMO holds
@@ -253,5 +262,10 @@ class SumoSession {
 /// once the ego has departed. Throws SumoError with SUMO's message, a refused connection, a missing
 /// display, a step length that differs from a connected server's, ...
 std::unique_ptr<SumoSession> open_session(const SessionConfig& config);
+
+/// Whether SUMO itself (embedded, this process) loads the net alone: empty when it does, else SUMO's
+/// first error line (e.g. "Error: Unknown vehicle class 'cable_car'." of a net newer than SUMO 1.15).
+/// Starts and closes one simulation of no steps; costs about SUMO's load time of the net.
+std::string net_load_error(const std::string& net_path);
 
 }  // namespace signalsim::sumo

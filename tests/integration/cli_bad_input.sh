@@ -49,6 +49,7 @@ check junction_not_on_route run "$bad/junction_not_on_route.yaml" -- "junction_n
 check no_subcommand -- "signalsim"
 check duplicate_key run "$bad/duplicate_key.yaml" -- "duplicate_key.yaml:7" "duplicate key 'ego.max_speed'"
 check depart_beyond_edge run "$bad/depart_beyond_edge.yaml" -- "depart_beyond_edge.yaml" "ego.depart_pos" "beyond"
+check bidi_two_lane_route run "$bad/bidi_two_lane_route.yaml" -- "bidi_two_lane_route.yaml" "edge 'ab' (2 lanes) is bidirectional with 'ba'" "SUMO 1.15 aborts"
 check unknown_light_offset run "$bad/unknown_light_offset.yaml" -- "unknown_light_offset.yaml" "light_offsets" "'ZZ'"
 # A SUMO error mid-run, into a directory that holds a finished run: the old files must not survive.
 "$bin" run "$src/scenarios/intersection_left.yaml" --out "$work/mid_run_sumo_error" --quiet >/dev/null
