@@ -11,3 +11,4 @@ nc -n line.nod.xml -e line.edg.xml -o line.net.xml
 nc -n line.nod.xml -e line.edg.xml --lefthand true -o line_lefthand.net.xml
 nc -n line.nod.xml -e line.edg.xml --no-internal-links true -o line_nointernal.net.xml
 nc -n bend_then_light.nod.xml -e bend_then_light.edg.xml -o bend_then_light.net.xml
+nc -n truck_lanes.nod.xml -e truck_lanes.edg.xml -o truck_lanes.net.xml
