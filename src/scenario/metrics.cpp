@@ -124,8 +124,13 @@ SectionMetrics measure(const SignalSection& section, const RunRecord& record, co
 std::vector<LightMetrics> measure_lights(const RouteMap& route, const RunRecord& record) {
   const auto& rows = record.rows;
   std::vector<LightMetrics> out;
+  // Per light (approach lanelet), what its own judge saw at each step (signalsim-driven runs); a
+  // run without the log (SUMO driving, a timeline read back from files) has the light rows show.
+  std::map<std::size_t, std::vector<const LightObservation*>> log;
+  for (const LightObservation& o : record.light_log) log[o.route_index].push_back(&o);
   std::size_t from_row = 0;  // rows after the previous light's stop line
-  for (const Lanelet& l : route.lanelets()) {
+  for (std::size_t index = 0; index < route.size(); ++index) {
+    const Lanelet& l = route.at(index);
     if (l.is_internal || !l.traffic_light) continue;
     LightMetrics m;
     m.id = l.traffic_light->tls_id;
@@ -134,9 +139,30 @@ std::vector<LightMetrics> measure_lights(const RouteMap& route, const RunRecord&
     std::size_t k = from_row;  // the first row at or beyond the stop line
     while (k < rows.size() && rows[k].s_front < m.stop_line_s) ++k;
     m.reached = k < rows.size() && k > 0;
-    if (m.reached && rows[k - 1].tl_id == m.id && rows[k - 1].tl_state != 0) {
-      m.state_at_line = std::string(1, rows[k - 1].tl_state);
-      m.red_light_violation = rows[k - 1].tl_state == 'r' || rows[k - 1].tl_state == 'u';
+    const auto own = log.find(index);
+    const bool logged = own != log.end();
+    // The light's state at the last row before the line, and its judge's rows on the approach.
+    char state_at_line = 0;
+    struct Judged {
+      JudgeDecision decision;
+      JudgeZone zone;
+    };
+    std::vector<Judged> judged_rows;
+    if (logged) {
+      for (const LightObservation* o : own->second) {
+        if (o->row >= k) break;
+        if (o->row < from_row) continue;
+        judged_rows.push_back({o->decision, o->zone});
+        if (m.reached && o->row == k - 1) state_at_line = o->state;
+      }
+    } else {
+      if (m.reached && rows[k - 1].tl_id == m.id) state_at_line = rows[k - 1].tl_state;
+      for (std::size_t i = from_row; i < k && i < rows.size(); ++i)
+        if (rows[i].tl_id == m.id) judged_rows.push_back({rows[i].tl_decision, rows[i].zone});
+    }
+    if (state_at_line != 0) {
+      m.state_at_line = std::string(1, state_at_line);
+      m.red_light_violation = state_at_line == 'r' || state_at_line == 'u';
     }
     // The judge on this approach: its most restrictive decision, the zone it was taken in (else the
     // last zone the pass judge gave), whether it ordered an emergency stop.
@@ -144,17 +170,14 @@ std::vector<LightMetrics> measure_lights(const RouteMap& route, const RunRecord&
     const double t_to = k < rows.size() ? rows[k].time : std::numeric_limits<double>::infinity();
     JudgeDecision worst = JudgeDecision::None;
     JudgeZone decisive_zone = JudgeZone::None, last_zone = JudgeZone::None;
-    bool judged = false;
-    for (std::size_t i = from_row; i < k && i < rows.size(); ++i) {
-      if (rows[i].tl_id != m.id) continue;
-      judged = true;
-      if (rows[i].zone != JudgeZone::None) last_zone = rows[i].zone;
-      if (rows[i].tl_decision > worst) {
-        worst = rows[i].tl_decision;
-        decisive_zone = rows[i].zone;
+    for (const Judged& j : judged_rows) {
+      if (j.zone != JudgeZone::None) last_zone = j.zone;
+      if (j.decision > worst) {
+        worst = j.decision;
+        decisive_zone = j.zone;
       }
     }
-    if (judged && worst != JudgeDecision::None) {
+    if (worst != JudgeDecision::None) {
       m.decision = std::string(to_string(worst));
       const JudgeZone zone = decisive_zone != JudgeZone::None ? decisive_zone : last_zone;
       if (zone != JudgeZone::None) m.zone = std::string(to_string(zone));

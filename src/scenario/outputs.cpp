@@ -201,6 +201,9 @@ void write_run_outputs(const std::string& dir, const Scenario& scenario, const s
   counts["arrived"] = record.arrived;
   counts["collisions"] = record.collisions;
   counts["off_route_steps"] = record.off_route_steps;
+  int off_plan_steps = 0;
+  for (const OffPlanStretch& o : record.off_plan) off_plan_steps += o.steps;
+  counts["off_plan_steps"] = off_plan_steps;
   std::size_t blinker_events = 0, light_events = 0;
   for (const TimelineEvent& e : record.events) {
     blinker_events += e.kind == "blinker";
@@ -239,7 +242,7 @@ void write_run_outputs(const std::string& dir, const Scenario& scenario, const s
                    {"junction", n->junction}};
   }
   summary["not_arrived"] = not_arrived;
-  if (record.driver == Driver::Sumo) {  // where SUMO left the lane plan (its own lane changes)
+  {  // where SUMO left the lane plan (its own lane changes; with signalsim, another connection)
     nlohmann::ordered_json off_plan = nlohmann::ordered_json::array();
     for (const OffPlanStretch& o : record.off_plan)
       off_plan.push_back({{"lane", o.lane}, {"planned_lane", o.planned_lane}, {"s_from", std::stod(fixed(o.s_from, 3))},

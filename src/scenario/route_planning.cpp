@@ -27,6 +27,9 @@ sumo::LaneChangeEgo lane_change_ego(const Scenario& scenario) {
   // A taken-over vehicle's departure lane is SUMO's: the plan starts where it is (an added ego's
   // depart_lane asks for a lane change onto the planned lane instead).
   if (!scenario.ego.id.empty()) ego.first_lane = scenario.ego.depart_lane;
+  ego.vclass = scenario.ego.vclass;
+  ego.sumo_decel = scenario.ego.sumo_decel;
+  ego.step_length = scenario.step_length;
   return ego;
 }
 
@@ -83,7 +86,7 @@ std::vector<LateralSegment> plan_lane_changes(const Scenario& scenario, const su
     const bool first = i == 0;
     if (first && scenario.ego.depart_lane >= 0) entry = scenario.ego.depart_lane;
     if (first && (entry >= static_cast<int>(edge->lanes.size()) ||
-                  !edge->lanes[static_cast<std::size_t>(entry)].allows_passenger)) {
+                  !sumo::lane_permits(edge->lanes[static_cast<std::size_t>(entry)], scenario.ego.vclass))) {
       std::ostringstream out_msg;
       out_msg << "ego.depart_lane: edge '" << edge->id << "' has no lane " << entry << " the ego may drive ("
               << edge->lanes.size() << " lanes)";
@@ -114,10 +117,12 @@ std::vector<LateralSegment> plan_lane_changes(const Scenario& scenario, const su
     // A lane change never crosses a lane the ego may not use (the lane plan avoids them; the first
     // edge's change from ego.depart_lane is the scenario's).
     for (int k = std::min(entry, planned) + 1; k < std::max(entry, planned); ++k)
-      if (!edge->lanes[static_cast<std::size_t>(k)].allows_passenger)
+      if (!sumo::lane_permits(edge->lanes[static_cast<std::size_t>(k)], scenario.ego.vclass))
         fail(scenario, "ego.depart_lane: the lane change from lane " + std::to_string(entry) + " to the planned lane " +
                            lanelet.lane_id + " crosses lane '" + edge->lanes[static_cast<std::size_t>(k)].id +
-                           "', which a passenger car may not use");
+                           "', which " + (scenario.ego.vclass == "passenger" ? std::string("a passenger car")
+                                                                               : "vClass '" + scenario.ego.vclass + "'") +
+                           " may not use");
     // The entry lane's centre seen from the planned lane's centre (left positive).
     const auto width = [&](int k) { return edge->lanes[static_cast<std::size_t>(k)].width; };
     const int step = entry > planned ? 1 : -1;
@@ -348,7 +353,8 @@ sumo::RoutePlan plan_route(const Scenario& scenario, const sumo::NetIndex& net) 
     std::ostringstream out;
     out << "ego.depart_pos: " << scenario.ego.depart_pos << " m is beyond the end of edge '" << first.edge_id
         << "' (" << first.length << " m)";
-    throw InputError(scenario.path, 0, out.str());
+    const auto line = scenario.ego.lines.find("depart_pos");
+    throw InputError(scenario.path, line == scenario.ego.lines.end() ? 0 : line->second, out.str());
   }
   plan_lateral(scenario, plan, net);  // checks the depart lane and the maneuvers
   for (const auto& [tls, offset] : scenario.light_offsets)

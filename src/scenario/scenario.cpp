@@ -467,7 +467,10 @@ Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrid
   const YAML::Node expect = top.node("expect");
   if (expect && !expect.IsNull()) {
     if (!expect.IsSequence()) top.fail("expect", "expected a list of expectations");
-    for (std::size_t i = 0; i < expect.size(); ++i) s.expect.push_back(parse_expectation(expect[i], path, i));
+    for (std::size_t i = 0; i < expect.size(); ++i) {
+      s.expect.push_back(parse_expectation(expect[i], path, i));
+      s.expect_lines.push_back(yaml_line(expect[i]));
+    }
   }
   top.finish();
   for (const std::string& note : s.notes) note_once(note);  // the scenario loaded: say what it ignored

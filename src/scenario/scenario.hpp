@@ -40,6 +40,11 @@ struct EgoSpec {
   /// Lane index the ego departs on; -1 = the planned lane of the first edge. Another lane makes
   /// signalsim plan a lane change onto the planned lane on the first edge (see LaneChangeManeuver).
   int depart_lane = -1;
+  /// SUMO vehicle class: the lanes the ego may use. signalsim's own ego is a passenger car; a
+  /// taken-over vehicle has its vType's (the route files' before the run, SUMO's once it departed).
+  std::string vclass = "passenger";
+  /// Its vType's decel in SUMO [m/s^2] (SUMO's look-ahead for lane choices; own ego: 4.5).
+  double sumo_decel = 4.5;
   /// The keys the scenario (or --set) gave; the others are defaults, or SUMO's for a taken-over ego.
   std::set<std::string> given;
   std::string vehicle_info;                ///< `vehicle_info:` (resolved), empty when none
@@ -229,6 +234,7 @@ struct Scenario {
   std::optional<PullOutManeuver> pull_out;        ///< from `maneuvers` (at most one)
   std::optional<PullOverManeuver> pull_over;      ///< from `maneuvers` (at most one)
   std::vector<Expectation> expect;
+  std::vector<int> expect_lines;  ///< the scenario file's line of each expectation (0: unknown)
 };
 
 /// Reads and checks a scenario file. Throws InputError naming the file, line and key for a missing

@@ -27,7 +27,7 @@ std::optional<int> known_departure_lane(const sumo::RouteFileVehicle& v, const s
   if (d.empty() || d == "first") {
     if (const sumo::NetEdge* edge = net.edge(first_edge))
       for (const sumo::NetLane& lane : edge->lanes)
-        if (lane.allows_passenger) return lane.index;
+        if (sumo::lane_permits(lane, v.vclass)) return lane.index;
   }
   return std::nullopt;
 }

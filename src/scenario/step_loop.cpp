@@ -10,6 +10,7 @@
 #include "planning/stop/stop_speed_planner.hpp"
 #include "scenario/behavior_stage.hpp"
 #include "scenario/light_stage.hpp"
+#include "scenario/plan_watch.hpp"
 #include "scenario/route_planning.hpp"
 #include "scenario/session_setup.hpp"
 #include "scenario/stuck_watch.hpp"
@@ -198,6 +199,7 @@ RunRecord drive(const StartedRun& run, const sumo::NetIndex& net) {
     if (seg.kind == LateralKind::PullOver) pull_over_goal = &seg;
 
   StuckWatch stuck(scenario.params.number("stuck_rest_time"));
+  PlanWatch plan_watch(route, lateral);  // where SUMO leaves the lane plan
   // SUMO's leader of the ego for a not-arrived reason (Vehicle::getLeader: also on the lanes ahead).
   const LeaderQuery leader = [&session](double range) -> std::optional<LeaderInfo> {
     const auto found = session.ego_leader(range);
@@ -212,6 +214,7 @@ RunRecord drive(const StartedRun& run, const sumo::NetIndex& net) {
     const double s_front = located.value_or(last_s);
     hint = route.index_at(std::max(0.0, s_front - 1e-6));
     last_s = s_front;
+    const bool off_plan = plan_watch.observe(observed.lane, observed.edge, hint, s_front, observed.time, record);
     // Backing up (pull out with `backward`, emulated): not driving forward, negative speed.
     const bool backing = backed_up < lateral.backward - 1e-9;
     const EgoOnRoute ego{s_front, s_front - b2f, backing ? -kBackwardSpeed : observed.speed};
@@ -281,8 +284,9 @@ RunRecord drive(const StartedRun& run, const sumo::NetIndex& net) {
     if (backing) speed = 0.0;
     stop_speed.end_step(speed);
     // What of signalsim holds the ego at rest this step, if anything (the stuck rule).
+    // Off the plan, signalsim's stops are for the planned lanes, not the one SUMO drives: it holds nothing.
     std::string held_by;
-    if (speed < kRestSpeed) {
+    if (speed < kRestSpeed && !off_plan) {
       held_by = backing       ? "backing up"
                 : stop_level  ? "stopped for light " + stopping->light->tls_id
                 : hold_level  ? "the hold point of a lane change waiting for approval"
@@ -292,7 +296,7 @@ RunRecord drive(const StartedRun& run, const sumo::NetIndex& net) {
     // In the queue before a red light the ego rests behind others, short of its own stop point: the
     // stuck clock pauses while a judge asks for a stop (a red lasting longer than stuck_rest_time is
     // no deadlock), but does not restart, so a car parked before a light is still found out.
-    const bool queued = stopping != nullptr && held_by.empty();
+    const bool queued = stopping != nullptr && held_by.empty() && !off_plan;
     session.command(signal_mask(blinker), speed);
     // The plan's offset where base_link will be after the step (normal lanes of the plan's edge only).
     if (segment)
@@ -360,6 +364,10 @@ RunRecord drive(const StartedRun& run, const sumo::NetIndex& net) {
       previous_v2i_stop = row.v2i_stop;
     }
     outcomes.observe(row, light_steps, stopping, leader, route, record);
+    for (const LightStep& l : light_steps)  // every light its own record, whichever the row shows
+      record.light_log.push_back({record.rows.size(), l.light->route_index, l.own_state,
+                                  l.judged ? l.result.decision : JudgeDecision::None,
+                                  l.judged ? l.result.zone : JudgeZone::None});
     record.rows.push_back(std::move(row));
 
     if (!alive) {
@@ -368,10 +376,12 @@ RunRecord drive(const StartedRun& run, const sumo::NetIndex& net) {
     }
     if (stuck.observe(record.rows.back().time, record.rows.back().speed, held_by, queued)) {
       record.not_arrived = not_arrived("stuck", scenario.duration, record.rows.back(), stuck, leader, route);
+      plan_watch.explain(*record.not_arrived, record);
       break;
     }
     if (session.time() >= end_time - 1e-9) {
       record.not_arrived = not_arrived("duration", scenario.duration, record.rows.back(), stuck, leader, route);
+      plan_watch.explain(*record.not_arrived, record);
       break;
     }
     observed = session.ego();

@@ -68,6 +68,7 @@ std::optional<sumo::RouteFileVehicle> resolve_route_file_ego(Scenario& scenario)
                      "ego.route [" + edges_text(scenario.ego.route) + "] contradicts the route of '" + id + "' in " +
                          where(*v) + " [" + edges_text(v->edges) + "]");
   scenario.ego.route = v->edges;
+  scenario.ego.vclass = v->vclass;  // its lanes: those its vType's class may use
   return *v;
 }
 
@@ -92,6 +93,8 @@ Scenario with_taken_over_ego(const Scenario& scenario, const sumo::EgoVehicle& v
   if (ego.base_link_to_front > ego.length)
     throw InputError(scenario.path, 0, "ego.base_link_to_front " + sumo::short_number(ego.base_link_to_front) +
                                            " m is longer than vehicle '" + vehicle.id + "' (" + sumo::short_number(ego.length) + " m)");
+  ego.vclass = vehicle.vclass.empty() ? ego.vclass : vehicle.vclass;
+  ego.sumo_decel = vehicle.decel;
   ego.depart_lane = vehicle.depart_lane;
   ego.depart_pos = vehicle.depart_pos;
   ego.depart_speed = vehicle.depart_speed;

@@ -131,7 +131,8 @@ struct LeaderInfo {
 
 /// Why a run ended before the ego arrived (scenario/stuck_watch).
 struct NotArrived {
-  std::string reason;              ///< "stuck" (the stuck rule ended the run) or "duration"
+  std::string reason;              ///< "stuck" (the stuck rule ended the run), "duration", or
+                                   ///< "off_plan" (it ended off the lane plan: scenario/plan_watch)
   double time = 0.0;               ///< [s] the last row's time
   double s_front = 0.0;            ///< [m] where the front was
   std::string edge, lane;
@@ -146,14 +147,25 @@ struct NotArrived {
 enum class Driver { Signalsim, Sumo };
 std::string_view to_string(Driver driver);
 
-/// Consecutive steps a SUMO-driven ego spent on a lane the lane plan does not list there: another
-/// lane of a route edge (SUMO changed lanes) or an internal lane of another connection.
+/// Consecutive steps the ego spent on a lane the lane plan does not list there: another lane of a
+/// route edge (SUMO changed lanes, or took another connection) or an internal lane of another
+/// connection (scenario/plan_watch.hpp for a signalsim-driven run).
 struct OffPlanStretch {
   std::string lane;          ///< the lane the ego was on
   std::string planned_lane;  ///< the route's lanelet at that position
   double s_from = 0.0;       ///< [m] route s of the front at the first step
   double s_to = 0.0;         ///< [m] at the last step
   int steps = 0;
+};
+
+/// One light judged at one step (every light within the judges' window, not only the one the row
+/// shows): the metrics give each light on the route its own state at the line and decision.
+struct LightObservation {
+  std::size_t row = 0;          ///< index into RunRecord::rows
+  std::size_t route_index = 0;  ///< the light's approach lanelet
+  char state = 0;               ///< true state of the ego's link
+  JudgeDecision decision = JudgeDecision::None;  ///< None when the judge did not run
+  JudgeZone zone = JudgeZone::None;
 };
 
 struct RunRecord {
@@ -167,7 +179,8 @@ struct RunRecord {
   bool arrived = false;          ///< the ego reached the end of its route
   std::optional<NotArrived> not_arrived;  ///< why not, when it did not
   int off_route_steps = 0;       ///< steps on a lane not on the planned route (route position held)
-  std::vector<OffPlanStretch> off_plan;  ///< SUMO-driven runs: stretches off the planned lanes
+  std::vector<OffPlanStretch> off_plan;  ///< stretches off the planned lanes
+  std::vector<LightObservation> light_log;  ///< signalsim-driven runs: every light judged, per step
   int collisions = 0;
   double base_link_to_front = 0.0;
   bool v2i = false;  ///< v2i.use_remaining_time: timeline.csv gets its v2i_time_to_red column

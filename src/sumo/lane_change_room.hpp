@@ -37,6 +37,13 @@ struct LaneChangeEgo {
   /// The lane the ego is on when it enters the first edge, when that is not signalsim's choice (a
   /// taken-over vehicle departs where SUMO put it); -1: the plan chooses.
   int first_lane = -1;
+  /// Its SUMO vehicle class: the lanes it may use (signalsim's own ego is a passenger car; a
+  /// taken-over vehicle has its vType's).
+  std::string vclass = "passenger";
+  /// SUMO's look-ahead for its lane choice at junctions (sumo_lane_choice.hpp): the vType's decel
+  /// [m/s^2] (signalsim's own ego: 4.5) and the step length [s].
+  double sumo_decel = 4.5;
+  double step_length = 0.1;
 };
 
 /// What a lane change on one route edge has.

@@ -34,6 +34,13 @@ bool passenger_allowed(const std::string& allow, const std::string& disallow) {
   return true;
 }
 
+bool lane_permits(const NetLane& lane, const std::string& vclass) {
+  if (vclass.empty() || vclass == "passenger") return lane.allows_passenger;
+  if (!lane.allow.empty()) return lists_class(lane.allow, vclass);
+  if (!lane.disallow.empty()) return !lists_class(lane.disallow, vclass);
+  return true;
+}
+
 namespace {
 
 const std::vector<NetConnection> kNoConnections;

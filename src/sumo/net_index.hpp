@@ -36,7 +36,8 @@ struct NetLane {
   Polyline shape;
   std::map<std::string, std::string> params;   ///< <param key value>
   double stop_offset = 0.0;                    ///< lane <stopOffset value> (else the edge's) [m]
-  bool allows_passenger = true;                ///< from `allow` / `disallow`: the ego may use it
+  bool allows_passenger = true;                ///< from `allow` / `disallow`: a passenger car may use it
+  std::string allow, disallow;                 ///< as written (lane_permits: another vehicle class)
 };
 
 struct NetEdge {
@@ -106,6 +107,8 @@ std::string defect_key(NetElement kind, const std::string& id);
 
 /// Whether a passenger car may use a lane with these `allow` / `disallow` attributes.
 bool passenger_allowed(const std::string& allow, const std::string& disallow);
+/// Whether vehicles of SUMO class `vclass` ("passenger", "bus", "truck", ...) may use the lane.
+bool lane_permits(const NetLane& lane, const std::string& vclass);
 
 class NetIndex;
 

@@ -102,7 +102,12 @@ std::map<std::string, std::string> NetLoader::params(pugi::xml_node parent, cons
   std::map<std::string, std::string> out;
   for (pugi::xml_node p : parent.children("param")) {
     const XmlElement param(p, owner_what + " <param>", owner, log_);
-    if (const auto key = param.required_text("key")) out[*key] = param.text("value");
+    const auto key = param.required_text("key");
+    if (!key) continue;
+    out[*key] = param.text("value");
+    // The one param signalsim reads as a number (spec TSD §4.1: a lanelet's own search distance).
+    if (*key == "turn_signal_distance" && !parse_double(out[*key]))
+      log_.add(owner, owner_what, "param 'turn_signal_distance' is not a number: '" + out[*key] + "'", p.offset_debug());
   }
   return out;
 }
@@ -131,7 +136,9 @@ NetLane NetLoader::lane(pugi::xml_node node, const NetEdge& edge, const DefectOw
   lane.width = l.number("width", lane.width);
   if (lane.width <= 0.0) l.defect("attribute 'width' is not positive: '" + l.text("width") + "'");
   lane.shape = l.shape("shape").value_or(Polyline{});
-  lane.allows_passenger = passenger_allowed(l.text("allow"), l.text("disallow"));
+  lane.allow = l.text("allow");
+  lane.disallow = l.text("disallow");
+  lane.allows_passenger = passenger_allowed(lane.allow, lane.disallow);
   if (node.first_child()) {
     lane.params = params(node, what, self);
     lane.stop_offset = stop_offset(node, what, self).value_or(edge.stop_offset);

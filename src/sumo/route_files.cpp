@@ -120,6 +120,14 @@ std::optional<RouteFileVehicle> find_route_file_vehicle(const std::vector<std::s
     v.file = f.path;
     v.line = line_at(f.text, e.start);
     v.type = node.attribute("type").value();
+    if (!v.type.empty())
+      for (const LoadedFile& t : files) {
+        const std::vector<FoundElement> types = elements_with_id(t.text, v.type, {"vType"});
+        if (types.empty()) continue;
+        pugi::xml_document type_doc;
+        if (const char* c = parse_element(type_doc, t, types.front()).attribute("vClass").value(); *c != '\0') v.vclass = c;
+        break;
+      }
     v.depart = e.name == "flow" ? node.attribute("begin").value() : node.attribute("depart").value();
     v.depart_lane = node.attribute("departLane").value();
     v.depart_pos = node.attribute("departPos").value();

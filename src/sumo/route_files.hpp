@@ -19,6 +19,9 @@ struct RouteFileVehicle {
   /// the files); empty when SUMO computes them at departure (a trip, a route distribution).
   std::vector<std::string> edges;
   std::string type;                ///< `type`, empty for SUMO's default type
+  /// The vClass of its <vType> in the files ("passenger": SUMO's default type, or a type the files
+  /// do not define, e.g. a distribution's).
+  std::string vclass = "passenger";
   std::string depart;              ///< `depart` (a flow's `begin`), as written
   std::string depart_lane, depart_pos, depart_speed;  ///< as written, empty when absent
   int stops = 0;                   ///< <stop> children of the vehicle (or of its inline route)

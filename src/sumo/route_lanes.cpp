@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "sumo/route_builder.hpp"
+#include "sumo/sumo_lane_choice.hpp"
 
 namespace signalsim::sumo {
 namespace {
@@ -22,17 +23,23 @@ EdgeRoom room_of(const NetEdge& edge, bool first, const LaneChangeEgo& ego) {
   return r;
 }
 
+// "a passenger car" (signalsim's own ego), else "vClass 'bus'".
+std::string vehicle_class(const std::string& vclass) {
+  return vclass == "passenger" ? "a passenger car" : "vClass " + quoted(vclass);
+}
+
 /// A route no plan can drive without crossing a lane the ego may not use: the first such crossing
 /// of the plan that ignores the permission of the lanes crossed.
-[[noreturn]] void refuse_crossing(const std::vector<const NetEdge*>& route, const LanePlan& crossing) {
+[[noreturn]] void refuse_crossing(const std::vector<const NetEdge*>& route, const LanePlan& crossing,
+                                  const std::string& vclass) {
   for (std::size_t i = 0; i < route.size(); ++i) {
     const int a = crossing.lanes[i], b = crossing.exit_lanes[i];
     for (int k = std::min(a, b) + 1; k < std::max(a, b); ++k) {
       const NetLane& lane = route[i]->lanes[static_cast<std::size_t>(k)];
-      if (lane.allows_passenger) continue;
+      if (lane_permits(lane, vclass)) continue;
       throw RouteError("the lane change the route needs on edge " + quoted(route[i]->id) + " (lane " +
                        std::to_string(a) + " -> " + std::to_string(b) + ") crosses lane " + quoted(lane.id) +
-                       ", which a passenger car may not use; no other lane sequence connects the route edges");
+                       ", which " + vehicle_class(vclass) + " may not use; no other lane sequence connects the route edges");
     }
   }
   throw RouteError("no lane sequence connects the route edges");  // not reached: the crossing exists
@@ -48,7 +55,7 @@ RouteLanes plan_route_lanes(const NetIndex& net, const std::vector<const NetEdge
   RouteLanes out;
   for (std::size_t i = 0; i < route.size(); ++i) {
     usable.emplace_back();
-    for (const NetLane& lane : route[i]->lanes) usable.back().push_back(lane.allows_passenger);
+    for (const NetLane& lane : route[i]->lanes) usable.back().push_back(lane_permits(lane, ego.vclass));
     out.rooms.push_back(room_of(*route[i], i == 0, ego));
     if (i + 1 == route.size()) break;
     for (const NetLane& lane : route[i]->lanes) {
@@ -61,10 +68,28 @@ RouteLanes plan_route_lanes(const NetIndex& net, const std::vector<const NetEdge
     }
   }
 
-  out.plan = plan_lanes(usable, links, required_exit, out.rooms, ego);
+  // Where a lane has several connections to the next edge, SUMO takes the one to its best
+  // continuation lane (sumo_lane_choice.hpp), whatever signalsim plans: only that one is planned.
+  // When that leaves no lane sequence, the plan takes any connection (the run then reports where
+  // SUMO leaves it: off_plan).
+  SumoLookahead lookahead;
+  lookahead.vclass = ego.vclass;
+  lookahead.max_speed = ego.max_speed;
+  lookahead.decel = ego.sumo_decel;
+  lookahead.step_length = ego.step_length;
+  const std::vector<std::vector<int>> sumo_next = sumo_next_lanes(net, route, lookahead);
+  std::vector<std::vector<const NetConnection*>> sumo_links = links;
+  for (std::size_t i = 0; i < sumo_links.size(); ++i)
+    std::erase_if(sumo_links[i], [&](const NetConnection* c) {
+      return c->from_lane < 0 || c->from_lane >= static_cast<int>(sumo_next[i].size()) ||
+             sumo_next[i][static_cast<std::size_t>(c->from_lane)] != c->to_lane;
+    });
+  const bool sumo_connected = std::none_of(sumo_links.begin(), sumo_links.end(), [](const auto& l) { return l.empty(); });
+  if (sumo_connected) out.plan = plan_lanes(usable, sumo_links, required_exit, out.rooms, ego);
+  if (out.plan.lanes.size() != route.size()) out.plan = plan_lanes(usable, links, required_exit, out.rooms, ego);
   if (out.plan.lanes.size() != route.size()) {
     const LanePlan crossing = plan_lanes(usable, links, required_exit, out.rooms, ego, true);
-    if (crossing.lanes.size() == route.size()) refuse_crossing(route, crossing);
+    if (crossing.lanes.size() == route.size()) refuse_crossing(route, crossing, ego.vclass);
     throw RouteError("route " + quoted(route.front()->id) + " ... " + quoted(route.back()->id) +
                      ": no lane sequence connects the route edges");
   }

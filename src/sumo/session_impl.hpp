@@ -431,6 +431,7 @@ class SessionImpl : public SumoSession {
     vehicle_.accel = Api::Vehicle::getAccel(ego_);
     vehicle_.decel = Api::Vehicle::getDecel(ego_);
     vehicle_.emergency_decel = Api::Vehicle::getEmergencyDecel(ego_);
+    vehicle_.vclass = Api::Vehicle::getVehicleClass(ego_);
     vehicle_.route = Api::Vehicle::getRoute(ego_);
     vehicle_.depart_time = Api::Simulation::getTime() - Api::Simulation::getDeltaT();  // inserted in the step just done
     vehicle_.depart_lane = Api::Vehicle::getLaneIndex(ego_);

@@ -111,6 +111,7 @@ struct SessionConfig {
 struct EgoVehicle {
   std::string id;
   std::string type;            ///< its vType id (a distribution's member when drawn from one)
+  std::string vclass;          ///< its vType's vClass
   double length = 0.0;         ///< [m]
   double width = 0.0;          ///< [m]
   double max_speed = 0.0;      ///< [m/s]

@@ -71,5 +71,16 @@ check refused_port run "$src/scenarios/intersection_left.yaml" --connect "127.0.
 check bad_connect_address run "$src/scenarios/intersection_left.yaml" --connect nowhere -- "--connect" "not HOST:PORT"
 DISPLAY= check gui_without_display run "$src/scenarios/intersection_left.yaml" --gui -- "--gui needs a display" "DISPLAY is not set"
 
-echo "$((27 - failures)) passed, $failures failed"
+# Issue 11 point 10: the line the README promises, of the scenario or of the net (one block).
+check light_not_on_route run "$bad/light_not_on_route.yaml" -- "light_not_on_route.yaml:7: expect\[1\]: traffic light 'ZZ' is not on the ego's route"
+check depart_beyond_edge_line run "$bad/depart_beyond_edge.yaml" -- "depart_beyond_edge.yaml:5: ego.depart_pos: 500 m is beyond the end of edge"
+check turn_signal_distance_abc run "$bad/turn_signal_distance_abc.yaml" -- "turn_signal_distance_abc.net.xml:40: lane 'ab_0': param 'turn_signal_distance' is not a number: 'abc'" "in ego.route of"
+if "$bin" inspect "$bad/turn_signal_distance_abc.net.xml" 2>&1 | grep -q "40.*lane 'ab_0'.*param 'turn_signal_distance' is not a number: 'abc'"; then
+  echo "ok   inspect_lists_turn_signal_distance_defect"
+else
+  echo "FAIL inspect_lists_turn_signal_distance_defect: $("$bin" inspect "$bad/turn_signal_distance_abc.net.xml" 2>&1 | grep -i defect)"
+  failures=$((failures + 1))
+fi
+
+echo "$((31 - failures)) passed, $failures failed"
 [ $failures -eq 0 ]

@@ -16,3 +16,4 @@ nc -n bend_then_light.nod.xml -e bend_then_light.edg.xml -o bend_then_light.net.
 nc -n bidi_two_lane.nod.xml -e bidi_two_lane.edg.xml -o bidi_two_lane.net.xml
 sed -i -e 's|<edge id="ab" from="A" to="B" priority="-1"|& bidi="ba"|' \
        -e 's|<edge id="ba" from="B" to="A" priority="-1"|& bidi="ab"|' bidi_two_lane.net.xml
+nc -n truck_lanes.nod.xml -e truck_lanes.edg.xml -o truck_lanes.net.xml

@@ -195,14 +195,16 @@ TEST(NetDefectsRefused, ProgramsMayShareAnIdButNotAnIdAndAProgramId) {
   const std::string logic = "<tlLogic id=\"C\" type=\"static\" programID=\"0\" offset=\"0\">";
   const ChangedLine other(logic, "<tlLogic id=\"C\" type=\"static\" programID=\"1\" offset=\"0\"><phase duration=\"5\" "
                                  "state=\"GGGGGGGGGGGGGGGGGGGG\"/></tlLogic>\n    " + logic, "crossing.net.xml");
-  EXPECT_TRUE(other.net.defects().empty());
+  // crossing.net.xml's one defect is edge n_in's turn_signal_distance 'far' (RouteBuilderParams).
+  ASSERT_EQ(other.net.defects().size(), 1u);
+  EXPECT_EQ(other.net.defects()[0].element, "edge 'n_in'");
   EXPECT_EQ(other.net.tl_logics().size(), 2u);
   const ChangedLine same(logic, "<tlLogic id=\"C\" type=\"static\" programID=\"0\" offset=\"0\"><phase duration=\"5\" "
                                 "state=\"GGGGGGGGGGGGGGGGGGGG\"/></tlLogic>\n    " + logic, "crossing.net.xml");
-  ASSERT_EQ(same.net.defects().size(), 1u);
-  EXPECT_EQ(same.net.defects()[0].reason, "another tlLogic has this id and programID '0'; this one is ignored (first "
+  ASSERT_EQ(same.net.defects().size(), 2u);  // in file order: the param (line 137), then the tlLogic
+  EXPECT_EQ(same.net.defects()[1].reason, "another tlLogic has this id and programID '0'; this one is ignored (first "
                                           "defined at line " + std::to_string(line_of(same.text, "<tlLogic")) + ")");
-  EXPECT_EQ(same.net.defects()[0].line, line_of(same.text, "<tlLogic") + 1);
+  EXPECT_EQ(same.net.defects()[1].line, line_of(same.text, "<tlLogic") + 1);
   EXPECT_EQ(same.net.tl_logics().size(), 1u);
 }
 
