@@ -43,13 +43,19 @@ Command add_sweep_command(CLI::App& app) {
               const BatchResult result = run_batch(runs, settings);
               if (!settings.quiet || result.interrupted) std::printf("%s\n", batch_summary(result, settings.out_dir).c_str());
               if (o->plot && !result.interrupted) {
-                std::vector<std::string> args = {settings.out_dir};
-                if (!sweep.plot.metric.empty()) args.insert(args.end(), {"--metric", sweep.plot.metric});
-                if (!sweep.plot.x.empty()) args.insert(args.end(), {"--x", sweep.plot.x});
-                if (!sweep.plot.y.empty()) args.insert(args.end(), {"--y", sweep.plot.y});
-                // The picture was asked for: its failure is a failure of the command (exit 3, kExitPicture), after
+                // One picture per plot: entry (tools/plot's defaults without one).
+                const std::vector<SweepPlot> plots = sweep.plots.empty() ? std::vector<SweepPlot>{{}} : sweep.plots;
+                bool failed = false;
+                for (const SweepPlot& plot : plots) {
+                  std::vector<std::string> args = {settings.out_dir};
+                  if (!plot.metric.empty()) args.insert(args.end(), {"--metric", plot.metric});
+                  if (!plot.x.empty()) args.insert(args.end(), {"--x", plot.x});
+                  if (!plot.y.empty()) args.insert(args.end(), {"--y", plot.y});
+                  failed = run_plot_tool(args) != 0 || failed;
+                }
+                // The pictures were asked for: a failure is a failure of the command (exit 3, kExitPicture), after
                 // the runs' own failures (their code wins when it is not 0).
-                if (run_plot_tool(args) != 0 && result.exit_code() == 0) return kExitPicture;
+                if (failed && result.exit_code() == 0) return kExitPicture;
               }
               return result.exit_code();
             } catch (const std::exception& e) {

@@ -99,6 +99,9 @@ const std::vector<ParameterSpec>& parameter_schema() {
       {"max_accel", -2.8, -50.0, -0.01, {}, "m/s^2", "TLJ §2.1 (pass-judge deceleration, negative)"},
       {"max_jerk", -5.0, -100.0, -0.01, {}, "m/s^3", "TLJ §2.1 (pass-judge jerk, negative)"},
       {"delay_response_time", 0.5, 0.0, 10.0, {}, "s", "TLJ §2.1"},
+      {"stop_release_confirmation_time", 0.0, 0.0, 10.0, {}, "s",
+       "signalsim: a decided stop (the judge's latch, TLJ §1.2 step 3.10) is released only after no stop signal "
+       "for this long without a break (0: the reference, one go cycle releases it)"},
   };
   return schema;
 }

@@ -201,6 +201,7 @@ TrafficLightJudgeParameters traffic_light_parameters(const ParameterSet& set) {
   p.v2i.last_time_allowed_to_pass = set.number("v2i.last_time_allowed_to_pass");
   p.v2i.velocity_threshold = set.number("v2i.velocity_threshold");
   p.v2i.required_time_to_departure = set.number("v2i.required_time_to_departure");
+  p.stop_release_confirmation_time = set.number("stop_release_confirmation_time");  // signalsim's own
   return p;
 }
 

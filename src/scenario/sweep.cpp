@@ -128,13 +128,14 @@ const std::vector<std::string>& other_section_fields() {
   static const std::vector<std::string> fields = {"id", "blinker", "missed"};
   return fields;
 }
+// red_light_violation and emergency_stop are true/false: tools/plot shows the share of runs where
+// they are true (the outcome rates of a perception-fault sweep).
 const std::vector<std::string>& numeric_light_fields() {
-  static const std::vector<std::string> fields = {"stop_position_error"};
+  static const std::vector<std::string> fields = {"stop_position_error", "red_light_violation", "emergency_stop"};
   return fields;
 }
 const std::vector<std::string>& other_light_fields() {
-  static const std::vector<std::string> fields = {"id", "state_at_line", "red_light_violation", "decision", "zone",
-                                                  "emergency_stop"};
+  static const std::vector<std::string> fields = {"id", "state_at_line", "decision", "zone"};
   return fields;
 }
 
@@ -161,7 +162,7 @@ std::string numeric_columns_text() {
 }
 
 // The plot's x and y: swept keys or `scenario`, and not the same column.
-void check_plot_axes(const Sweep& s) {
+void check_plot_axes(const Sweep& s, const SweepPlot& plot) {
   const std::vector<std::string> keys = swept_keys(s);
   const auto check = [&](const char* name, const std::string& column, int line) {
     if (column.empty() || column == "scenario" || contains(keys, column)) return;
@@ -169,13 +170,13 @@ void check_plot_axes(const Sweep& s) {
         keys.empty() ? std::string("nothing is swept: only scenario") : "swept: " + joined(keys) + "; or scenario";
     throw InputError(s.path, line, std::string("plot.") + name + ": '" + column + "' is not a swept key (" + choices + ")");
   };
-  check("x", s.plot.x, s.plot.x_line);
-  check("y", s.plot.y, s.plot.y_line);
-  const std::string x = !s.plot.x.empty() ? s.plot.x : keys.empty() ? std::string("scenario") : keys.front();
-  if (!s.plot.y.empty() && s.plot.y == x)
-    throw InputError(s.path, s.plot.y_line,
+  check("x", plot.x, plot.x_line);
+  check("y", plot.y, plot.y_line);
+  const std::string x = !plot.x.empty() ? plot.x : keys.empty() ? std::string("scenario") : keys.front();
+  if (!plot.y.empty() && plot.y == x)
+    throw InputError(s.path, plot.y_line,
                      "plot.y: '" + x + "' is the x axis too" +
-                         (s.plot.x.empty() ? " (x defaults to the first swept key; give plot.x)" : "") +
+                         (plot.x.empty() ? " (x defaults to the first swept key; give plot.x)" : "") +
                          ": x and y must differ");
 }
 
@@ -291,19 +292,33 @@ Sweep load_sweep(const std::string& path) {
   if (top.has("timeout")) s.timeout = top.required_number("timeout", 0.1, 86400.0);
   if (top.has("out")) s.out = sumo::resolve_beside(path, top.text("out"));
   if (top.has("plot")) {
-    YamlFields plot(top.node("plot"), path, "plot");
-    s.plot.metric_line = plot.line_of("metric");  // the line of plot: when a key is not given
-    s.plot.x_line = plot.line_of("x");
-    s.plot.y_line = plot.line_of("y");
-    s.plot.metric = plot.text_or("metric", "");
-    s.plot.x = plot.text_or("x", "");
-    s.plot.y = plot.text_or("y", "");
-    plot.finish();
-    // Checked here, not by tools/plot after every run finished.
-    if (!s.plot.metric.empty())
-      if (const std::string problem = plot_metric_problem(s.plot.metric); !problem.empty())
-        throw InputError(path, s.plot.metric_line, "plot.metric: " + problem);
-    check_plot_axes(s);
+    // One mapping, or a list of them (one picture each).
+    const YAML::Node node = top.node("plot");
+    std::vector<YAML::Node> items;
+    if (node.IsSequence()) {
+      if (node.size() == 0) top.fail("plot", "an empty list draws nothing");
+      for (const YAML::Node& item : node) items.push_back(item);
+    } else {
+      items.push_back(node);
+    }
+    for (const YAML::Node& item : items) {
+      YamlFields fields(item, path, "plot");
+      SweepPlot plot;
+      plot.metric_line = fields.line_of("metric");  // the line of plot: when a key is not given
+      plot.x_line = fields.line_of("x");
+      plot.y_line = fields.line_of("y");
+      plot.metric = fields.text_or("metric", "");
+      plot.x = fields.text_or("x", "");
+      plot.y = fields.text_or("y", "");
+      fields.finish();
+      // Checked here, not by tools/plot after every run finished.
+      if (!plot.metric.empty())
+        if (const std::string problem = plot_metric_problem(plot.metric); !problem.empty())
+          throw InputError(path, plot.metric_line, "plot.metric: " + problem);
+      check_plot_axes(s, plot);
+      s.plots.push_back(plot);
+    }
+    s.plot = s.plots.front();
   }
   top.finish();
   return s;
@@ -328,7 +343,11 @@ std::string plot_metric_problem(const std::string& metric) {
 }
 
 void check_sweep_plot(const Sweep& sweep, const std::vector<RunSpec>& runs) {
-  const std::optional<MetricColumn> column = parse_metric_column(sweep.plot.metric);
+  for (const SweepPlot& plot : sweep.plots) check_plot_metric(sweep, plot, runs);
+}
+
+void check_plot_metric(const Sweep& sweep, const SweepPlot& plot, const std::vector<RunSpec>& runs) {
+  const std::optional<MetricColumn> column = parse_metric_column(plot.metric);
   if (!column) return;  // empty (tools/plot chooses) or a run-level column every run has
   // Sections and lights per route, from the same code that computes the metrics (an empty record:
   // the route's sections and lights, no values). Maneuver sections belong to each run's scenario
@@ -374,9 +393,9 @@ void check_sweep_plot(const Sweep& sweep, const std::vector<RunSpec>& runs) {
   for (const std::string& kind : section_kinds())  // the kinds some route has
     if (most[kind] > 0) have.push_back(std::to_string(most[kind]) + " " + kind);
   have.push_back(std::to_string(most["light"]) + " light");
-  throw InputError(sweep.path, sweep.plot.metric_line,
+  throw InputError(sweep.path, plot.metric_line,
                    "plot.metric: no run's route has a " + column->kind + std::to_string(column->number) +
-                       ", so no run can give '" + sweep.plot.metric + "' (the most any route has: " + joined(have) +
+                       ", so no run can give '" + plot.metric + "' (the most any route has: " + joined(have) +
                        ")");
 }
 

@@ -14,6 +14,7 @@
 //   timeout: 120                           # s of wall-clock time per run (default 300)
 //   out: ../out/exit_blinker               # results directory (the command line's --out wins)
 //   plot: {metric: turn1.lead_distance, x: ego.max_speed, y: country}   # for `sweep --plot`
+//                                          # (or a list of such mappings: one picture each)
 //
 // Keys of grid, zip and set are anything `signalsim run --set` accepts: scenario keys (`seed`,
 // `country`, `ego.max_speed`, ...) or parameter names. Runs are numbered 0.. in the order
@@ -58,7 +59,8 @@ struct Sweep {
   std::vector<int> set_lines;
   std::optional<double> timeout;             ///< [s] per run
   std::string out;                           ///< resolved against the file; empty when not given
-  SweepPlot plot;
+  std::vector<SweepPlot> plots;  ///< plot: one mapping or a list of them, one picture each
+  SweepPlot plot;                ///< the first of plots (empty when there is none)
 };
 
 /// One run of a batch or sweep.
@@ -81,15 +83,19 @@ Sweep load_sweep(const std::string& path);
 /// Why `metric` cannot be the plot: metric of a sweep, "" when it can: it must be a results.csv
 /// column that holds numbers - a run metric (max_decel, ...), expectations_passed/_total, wall_time,
 /// a section's `<kind><n>.<lead_distance|lead_time|time_on|flickers>` (kind turn, roundabout_entry,
-/// roundabout_exit; n from 1) or `light<n>.stop_position_error`. Text and true/false columns
-/// (turn1.blinker, light1.red_light_violation) are refused: a heat map of them shows no value.
+/// roundabout_exit; n from 1) or `light<n>.stop_position_error|red_light_violation|emergency_stop`
+/// (the true/false ones as the share of runs where true). Text and the other true/false columns
+/// (turn1.blinker, turn1.missed) are refused: a heat map of them shows no value.
 std::string plot_metric_problem(const std::string& metric);
 
-/// Checks the plot: metric against the runs before any of them starts: a section or light metric
+/// Checks every plot's metric (check_plot_metric) before any run starts.
+void check_sweep_plot(const Sweep& sweep, const std::vector<RunSpec>& runs);
+
+/// Checks one plot: metric against the runs before any of them starts: a section or light metric
 /// (`roundabout_exit1.lead_distance`, `light2.stop_position_error`) needs a run whose route has that
 /// section or light (routes built from the nets as the runs build them; no SUMO). Runs whose route
 /// cannot be built are left to fail on their own. Throws InputError at the line of plot.metric.
-void check_sweep_plot(const Sweep& sweep, const std::vector<RunSpec>& runs);
+void check_plot_metric(const Sweep& sweep, const SweepPlot& plot, const std::vector<RunSpec>& runs);
 
 /// Scenario files from paths: a file as given, a directory's *.yaml (sorted by name). Throws
 /// InputError for a missing path or an empty directory (`origin`/`line` name where it was given).

@@ -66,10 +66,12 @@ void validate(const TrafficLightJudgeParameters& p) {
   finite(p.max_accel, "max_accel");
   finite(p.max_jerk, "max_jerk");
   finite(p.delay_response_time, "delay_response_time");
+  finite(p.stop_release_confirmation_time, "stop_release_confirmation_time");
   if (p.tl_state_timeout < 0.0) fail("tl_state_timeout is negative");
   if (p.stop_time_hysteresis < 0.0) fail("stop_time_hysteresis is negative");
   if (p.yellow_lamp_period < 0.0) fail("yellow_lamp_period is negative");
   if (p.delay_response_time < 0.0) fail("delay_response_time is negative");
+  if (p.stop_release_confirmation_time < 0.0) fail("stop_release_confirmation_time is negative");
   if (p.max_accel == 0.0) fail("max_accel is zero");
   if (p.max_jerk == 0.0) fail("max_jerk is zero");
   if (p.restart_suppression.min_behind_distance_to_stop > p.restart_suppression.max_behind_distance_to_stop) {
@@ -86,61 +88,11 @@ double distance_to_stop_point(double front_to_stop_line, double stop_margin) {
 // stopped.
 bool is_vehicle_stopped(double velocity) { return velocity < kStopVelocityEps; }
 
-std::string_view to_string(JudgeState s) {
-  switch (s) {
-    case JudgeState::Approach: return "APPROACH";
-    case JudgeState::GoOut: return "GO_OUT";
-  }
-  return "invalid";
-}
-
-std::string_view to_string(JudgeDecision d) {
-  switch (d) {
-    case JudgeDecision::None: return "none";
-    case JudgeDecision::Pass: return "pass";
-    case JudgeDecision::Stop: return "stop";
-    case JudgeDecision::EmergencyStop: return "emergency_stop";
-  }
-  return "invalid";
-}
-
-std::string_view to_string(JudgeZone z) {
-  switch (z) {
-    case JudgeZone::None: return "none";
-    case JudgeZone::Stoppable: return "stoppable";
-    case JudgeZone::OptionalZone: return "optional_zone";
-    case JudgeZone::PassThroughYellow: return "pass_through_yellow";
-    case JudgeZone::DilemmaZone: return "dilemma_zone";
-    case JudgeZone::Slow: return "slow";
-  }
-  return "invalid";
-}
-
-std::string_view to_string(SignalVerdict v) {
-  switch (v) {
-    case SignalVerdict::NotEvaluated: return "not_evaluated";
-    case SignalVerdict::NeverReceived: return "never_received";
-    case SignalVerdict::TimedOut: return "timed_out";
-    case SignalVerdict::ArrowAwareYellowPass: return "arrow_aware_yellow_pass";
-    case SignalVerdict::Go: return "go";
-    case SignalVerdict::Stop: return "stop";
-  }
-  return "invalid";
-}
-
-std::string_view to_string(YellowState y) {
-  switch (y) {
-    case YellowState::NotYellow: return "not_yellow";
-    case YellowState::FromGreen: return "from_green";
-    case YellowState::FromNonGreen: return "from_non_green";
-  }
-  return "invalid";
-}
-
 TrafficLightJudge::TrafficLightJudge(const TrafficLightJudgeParameters& params) : params_(params) {
   validate(params_);
   hysteresis_ns_ = to_ns(params_.stop_time_hysteresis);
   timeout_ns_ = to_ns(params_.tl_state_timeout);
+  release_confirmation_ns_ = to_ns(params_.stop_release_confirmation_time);
 }
 
 void TrafficLightJudge::reset() {
@@ -148,6 +100,7 @@ void TrafficLightJudge::reset() {
   is_prev_state_stop_ = false;
   latched_decision_ = JudgeDecision::Stop;
   stop_signal_start_ns_.reset();
+  release_start_ns_.reset();
   received_.reset();
   stamp_ns_.reset();
   looking_.clear();
@@ -238,6 +191,7 @@ TrafficLightJudgeResult TrafficLightJudge::step(const TrafficLightJudgeInput& in
       r.reason = strf("none: GO_OUT (re-arms when d > %.1f m)", kRestartLength);
     }
     stop_signal_start_ns_.reset();
+    release_start_ns_.reset();
     return finish();
   }
 
@@ -245,6 +199,7 @@ TrafficLightJudgeResult TrafficLightJudge::step(const TrafficLightJudgeInput& in
   if (d < kDeadLine) {
     state_ = JudgeState::GoOut;
     stop_signal_start_ns_.reset();
+    release_start_ns_.reset();
     r.reason = strf("none: APPROACH -> GO_OUT (d = %.2f m < %.1f m)", d, kDeadLine);
     return finish();
   }
@@ -278,6 +233,28 @@ TrafficLightJudgeResult TrafficLightJudge::step(const TrafficLightJudgeInput& in
       v2i_text = strf("; V2I: red in %.2f s < horizon %.2f s (t_pass %.2f s + %.2f s)", *v2i.time_to_red, v2i.horizon,
                       v2i.t_pass, params_.v2i.last_time_allowed_to_pass);
       to_be_stopped = true;
+    }
+  }
+  // signalsim, beyond the reference (stop_release_confirmation_time, header): a latched stop is held
+  // until no stop signal has been looked at for that long; a stop signal restarts the clock.
+  std::string hold_text;
+  if (to_be_stopped || is_stop) {
+    release_start_ns_.reset();
+  } else if (is_prev_state_stop_) {
+    // The go evidence's time: the capture stamp of the observation looked at (a stale one adds
+    // nothing); never received (no stamp) counts by the clock.
+    const bool observed = verdict == SignalVerdict::Go || verdict == SignalVerdict::ArrowAwareYellowPass;
+    const std::int64_t evidence_ns = observed ? *stamp_ns_ : now_ns;
+    if (!release_start_ns_) release_start_ns_ = evidence_ns;
+    const std::int64_t confirmed_ns = std::max<std::int64_t>(0, evidence_ns - *release_start_ns_);
+    r.release_elapsed = static_cast<double>(confirmed_ns) * 1e-9;
+    if (confirmed_ns < release_confirmation_ns_) {
+      r.release_pending = true;
+      to_be_stopped = true;
+      hold_text = strf("; release pending: no stop signal for %.3f s < stop_release_confirmation_time %.3f s",
+                       r.release_elapsed, params_.stop_release_confirmation_time);
+    } else {
+      release_start_ns_.reset();
     }
   }
   r.to_be_stopped = to_be_stopped;
@@ -390,7 +367,8 @@ TrafficLightJudgeResult TrafficLightJudge::step(const TrafficLightJudgeInput& in
   is_prev_state_stop_ = true;
   r.decision = latched_decision_;
   r.stop_point_distance = d;
-  r.reason = std::string(to_string(latched_decision_)) + latch_text + ": " + zone_text + "; " + signal_text + v2i_text;
+  r.reason = std::string(to_string(latched_decision_)) + latch_text + ": " + zone_text + "; " + signal_text + v2i_text +
+             hold_text;
   return finish();
 }
 

@@ -19,7 +19,7 @@
 //   yellow_lamp_line := v * yellow_lamp_period                                 (spec TLJ §2.3)
 //   if state == APPROACH:                   // STEP 3
 //       if d < -2.0 m:                                                           (3.1)
-//           state := GO_OUT; clear timer; return None
+//           state := GO_OUT; clear timer; clear release clock; return None
 //       is_stop := IS_STOP_SIGNAL()                                              (3.3)
 //       if is_stop: start timer at now unless running   else: clear timer        (3.4)
 //       elapsed := timer running ? max(0, now - start) : 0
@@ -28,6 +28,13 @@
 //           to_be_stopped := to_be_stopped or WILL_TURN_RED(d, v, in.predictions)  (v2i_rule.hpp)
 //       if in.is_vehicle_stopped and min_behind < d < max_behind and is_stop:    (3.7, §1.6)
 //           return Stop at the ego's own position (restart_suppressed; latch untouched)
+//       if is_stop or to_be_stopped: clear release clock                        (signalsim, below)
+//       else if is_prev_state_stop:         // a decided stop sees no stop signal
+//           t_go := verdict is Go/ArrowAwareYellowPass ? stamp : now
+//           start release clock at t_go unless running
+//           if t_go - release_start < stop_release_confirmation_time:
+//               to_be_stopped := true       // held: release_pending (the latched stop stands)
+//           else: clear release clock       // released below, as the reference does
 //       if not to_be_stopped:                                                    (3.8, 3.9)
 //           is_prev_state_stop := false; return Pass
 //       ZONE := classify(judge_dist < d, v < yellow_light_stop_velocity,        (3.10, §2.3, §2.6)
@@ -39,7 +46,7 @@
 //       is_prev_state_stop := true; return latched at distance d
 //   else (GO_OUT):                          // STEP 4
 //       if d > 1.0 m: state := APPROACH     // re-arm
-//       clear timer; return None
+//       clear timer; clear release clock; return None
 //
 //   IS_STOP_SIGNAL():                                                       (spec TLJ §1.3, §1.8)
 //       previous := looking
@@ -66,6 +73,22 @@
 //   the last metres of a normal stop (where the judge line, with its 0.5 s dead time, exceeds d)
 //   are not relabelled as an emergency. A stop inserted while not stoppable is an EmergencyStop also
 //   with enable_pass_judge = false (the planner must relax its limits there too).
+// - Stop release confirmation (signalsim's own parameter, beyond the reference; 0 = the reference).
+//   The reference releases a decided stop at the first cycle without a stop signal (step 3.9), so
+//   one misread green cancels it and, near the line, the next red is judged afresh by the pass
+//   judge (spec TLJ §1.2 consequences, §2.6), which may pass through on red.
+//   "Decided" is the judge's latched stop: is_prev_state_stop, set where a Stop or EmergencyStop is
+//   returned at step 3.10 (a restart suppression, 3.7, neither sets nor needs it). While it holds, a
+//   cycle with no stop signal (IS_STOP_SIGNAL false and no V2I stop) keeps the stop, at the latched
+//   level and at the stop point, until the go evidence has lasted stop_release_confirmation_time
+//   without a break (>=, integer nanoseconds: at a 0.1 s step and 0.5 s the sixth go cycle
+//   releases). The evidence is timed by the capture stamp of the observation looked at, so a green
+//   kept in force over dropouts (absent observations) adds no time. A stop signal restarts the
+//   clock: a red/amber/unknown reading, nothing recognised, and a timeout (row 2: the observation
+//   older than tl_state_timeout), as does a V2I stop. Never received (row 1) with is_simulation is a
+//   go verdict without a stamp and is timed by `now`; without is_simulation it is a stop signal. A
+//   stop not yet decided (hysteresis running) is not held: a go cycle passes at once. GO_OUT,
+//   the dead line and reset() clear the clock; with 0 every go cycle releases at once.
 // - V2I (spec TLJ §1.7): in.predictions are the predictions in force this step (the V2I channel's,
 //   scenario/light_stage); the rule is OR-ed in after the hysteresis, so a green light can give a
 //   stop, which the pass judge still classifies. RTC (spec TLJ §1.5; disabled path = activated :=
@@ -105,10 +128,14 @@ struct TrafficLightJudgeParameters {
   double max_jerk = -5.0;             ///< [m/s^3] j_s of the judge line, negative (common param)
   double delay_response_time = 0.5;   ///< [s] t_d of the judge line (common param)
   V2iParameters v2i;                  ///< spec TLJ §1.7 (off by default)
+  /// [s] >= 0, signalsim's own (beyond the reference): a latched stop is released only after no stop
+  /// signal for this long without a break (see "Stop release confirmation" above); 0: the reference.
+  double stop_release_confirmation_time = 0.0;
 };
 
 /// Throws std::invalid_argument naming the first bad member: a non-finite value, a negative
-/// time (tl_state_timeout, stop_time_hysteresis, yellow_lamp_period, delay_response_time),
+/// time (tl_state_timeout, stop_time_hysteresis, yellow_lamp_period, delay_response_time,
+/// stop_release_confirmation_time),
 /// max_accel == 0 or max_jerk == 0 (divisors of §2.2), or min_behind > max_behind.
 /// Signs of max_accel/max_jerk are not checked (upstream test fixtures use +1.0).
 void validate(const TrafficLightJudgeParameters& params);
@@ -204,6 +231,10 @@ struct TrafficLightJudgeResult {
   /// to_be_stopped), and the earliest red stop the predictions tell, minus now [s] (empty: none).
   bool v2i_stop = false;
   std::optional<double> v2i_time_to_red;
+  /// stop_release_confirmation_time > 0 only: a latched stop saw no stop signal this cycle and is held
+  /// (decision Stop/EmergencyStop as latched), and how long the go evidence has lasted [s].
+  bool release_pending = false;
+  double release_elapsed = 0.0;
   std::string reason;  ///< one human-readable line for timelines and logs
 };
 
@@ -236,6 +267,8 @@ class TrafficLightJudge {
   bool is_prev_state_stop_ = false;
   JudgeDecision latched_decision_ = JudgeDecision::Stop;  ///< Stop or EmergencyStop while latched
   std::optional<std::int64_t> stop_signal_start_ns_;       ///< the stop-signal timer
+  std::int64_t release_confirmation_ns_ = 0;
+  std::optional<std::int64_t> release_start_ns_;  ///< when the go evidence of a latched stop began
 
   std::optional<SignalObservation> received_;   ///< last delivered observation (node-level map)
   std::optional<std::int64_t> stamp_ns_;        ///< stamp of the observation last looked at

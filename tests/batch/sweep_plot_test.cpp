@@ -55,9 +55,13 @@ TEST(SweepPlot, TheMetricMustBeANumericColumnOfWhatFlattenMetricsWrites) {
   m.lights.push_back(light);
   const auto cells = flatten_metrics(to_json(m));
   ASSERT_EQ(cells.size(), 7u + 3u * 7u + 7u);
-  for (const auto& [column, text] : cells)  // accepted exactly when the cell holds a number
-    EXPECT_EQ(plot_metric_problem(column).empty(), is_number(text)) << column << " = " << text << ": "
-                                                                    << plot_metric_problem(column);
+  // Accepted exactly when the cell holds a number, or is a light's true/false outcome (shown as the
+  // share of runs where it is true).
+  for (const auto& [column, text] : cells) {
+    const bool outcome = column == "light1.red_light_violation" || column == "light1.emergency_stop";
+    EXPECT_EQ(plot_metric_problem(column).empty(), is_number(text) || outcome)
+        << column << " = " << text << ": " << plot_metric_problem(column);
+  }
   for (const char* column : {"expectations_passed", "expectations_total", "wall_time", "turn12.lead_distance",
                              "lane_change1.lead_time", "avoidance2.lead_distance", "pull_out1.time_on",
                              "pull_over1.flickers"})
@@ -92,11 +96,35 @@ TEST(SweepPlot, BadPlotIsRefusedWhenTheFileIsRead) {
             at + "7: plot.metric: 'turn1.missed' holds text or true/false, not numbers: a heat map cannot show it "
                  "(numeric fields of turn<n>: lead_distance, lead_time, time_on, flickers)");
   EXPECT_EQ(load("plot: {metric: light1.zne}\n"),
-            at + "2: plot.metric: 'zne' in 'light1.zne' is not a field of light<n> (numeric fields: stop_position_error)");
+            at + "2: plot.metric: 'zne' in 'light1.zne' is not a field of light<n> (numeric fields: stop_position_error, "
+                 "red_light_violation, emergency_stop)");
   EXPECT_EQ(load("plot: {metric: exit1.lead_distance}\n"),
             at + "2: plot.metric: 'exit' in 'exit1.lead_distance' is not a section kind or light (turn, "
                  "roundabout_entry, roundabout_exit, lane_change, avoidance, pull_out, pull_over, light)");
   EXPECT_EQ(load("plot: {metric: lead_distance}\n").rfind(at + "2: plot.metric: 'lead_distance' is not a results.csv metric column (numeric columns: max_decel, ", 0), 0u);
+}
+
+// plot: may be a list of mappings: one picture each, every one checked at its own line.
+TEST(SweepPlot, APlotListGivesOnePictureEach) {
+  TempDir dir;
+  const std::string grid = "grid:\n  country: [jp, de]\n  seed: [1, 2]\n";  // lines 2-4
+  const std::string path = dir.write("s.yaml", "scenarios: " + data_dir() + "/turns.yaml\n" + grid +
+                                                   "plot:\n"
+                                                   "  - {metric: red_light_violations, x: seed, y: country}\n"
+                                                   "  - {metric: light1.emergency_stop, x: country, y: seed}\n");
+  const Sweep sweep = load_sweep(path);
+  ASSERT_EQ(sweep.plots.size(), 2u);
+  EXPECT_EQ(sweep.plot.metric, "red_light_violations");
+  EXPECT_EQ(sweep.plots[1].metric, "light1.emergency_stop");
+  EXPECT_EQ(sweep.plots[1].x, "country");
+  const auto load = [&](const std::string& text) {
+    const std::string bad = dir.write("bad.yaml", "scenarios: " + data_dir() + "/turns.yaml\n" + text);
+    return error_of([&] { load_sweep(bad); });
+  };
+  const std::string at = dir.path() + "/bad.yaml:";
+  EXPECT_EQ(load(grid + "plot:\n  - {x: seed}\n  - {x: seed, y: seed}\n"),
+            at + "7: plot.y: 'seed' is the x axis too: x and y must differ");
+  EXPECT_EQ(load(grid + "plot: []\n"), at + "5: key 'plot': an empty list draws nothing");
 }
 
 // Maneuver sections belong to each run's scenario, not to its route: a run with the same route but

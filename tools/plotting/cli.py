@@ -20,7 +20,9 @@ def main(argv):
     parser = argparse.ArgumentParser(prog="tools/plot", description=(__doc__ or "").strip())
     parser.add_argument("path", help="a run directory (timeline.csv ...) or a sweep directory / results.csv")
     parser.add_argument("--out", help="where the PNGs go (default: PATH/plots)")
-    parser.add_argument("--metric", help="sweep: results.csv column to show (default: the first *.lead_distance)")
+    parser.add_argument("--metric", action="append",
+                        help="sweep: results.csv column to show (default: the first *.lead_distance); "
+                             "repeat it for one picture per metric")
     parser.add_argument("--x", help="sweep: swept column along x")
     parser.add_argument("--y", help="sweep: swept column along y")
     parser.add_argument("--quiet", action="store_true", help="do not print the files written")
@@ -33,11 +35,12 @@ def main(argv):
         elif os.path.isfile(path) and path.endswith(".csv"):
             from plotting import sweep_plots
             out = args.out or os.path.join(os.path.dirname(path) or ".", "plots")
-            written = sweep_plots.plot_results(path, out, args.metric, args.x, args.y)
+            written = [f for m in args.metric or [None] for f in sweep_plots.plot_results(path, out, m, args.x, args.y)]
         elif os.path.isfile(os.path.join(path, "results.csv")):
             from plotting import sweep_plots
             out = args.out or os.path.join(path, "plots")
-            written = sweep_plots.plot_results(os.path.join(path, "results.csv"), out, args.metric, args.x, args.y)
+            csv_path = os.path.join(path, "results.csv")
+            written = [f for m in args.metric or [None] for f in sweep_plots.plot_results(csv_path, out, m, args.x, args.y)]
         elif os.path.isfile(os.path.join(path, "summary.json")):
             from plotting import run_plots
             out = args.out or os.path.join(path, "plots")

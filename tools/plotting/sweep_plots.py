@@ -1,4 +1,7 @@
-"""A sweep's results.csv as a heat map (a table with colours) of one metric over two swept columns."""
+"""A sweep's results.csv as a heat map (a table with colours) of one metric over two swept columns.
+
+A true/false column (light<n>.red_light_violation, light<n>.emergency_stop) is shown as the share of
+runs where it is true (true = 1, false = 0, averaged like any number)."""
 import math
 import os
 import re
@@ -19,6 +22,13 @@ def swept_columns(header):
         return header[header.index("file") + 1:header.index("status")]
     except ValueError as e:
         raise InputError("results.csv lacks the 'file' or 'status' column") from e
+
+
+def cell_value(text):
+    """A cell as a number: numbers as they are, true/false as 1/0, anything else None."""
+    if text in ("true", "false"):
+        return 1.0 if text == "true" else 0.0
+    return number(text)
 
 
 def ordered_values(values):
@@ -62,7 +72,7 @@ def plot_results(csv_path, out, metric, x, y):
     scenarios = ordered_values([r["scenario"] for r in rows])
     panels = scenarios if "scenario" not in (x, y) and len(scenarios) > 1 else [None]
     if panels != [None]:  # only the scenarios that have the metric (e.g. a roundabout exit)
-        having = [p for p in panels if any(r["scenario"] == p and number(r.get(metric)) is not None for r in rows)]
+        having = [p for p in panels if any(r["scenario"] == p and cell_value(r.get(metric)) is not None for r in rows)]
         panels = having or panels
         if len(panels) == 1:
             rows = [r for r in rows if r["scenario"] == panels[0]]
@@ -87,7 +97,7 @@ def plot_results(csv_path, out, metric, x, y):
             if panel is not None and r["scenario"] != panel:
                 continue
             i, j = ys.index(r[y]) if y else 0, xs.index(r[x])
-            v = number(r.get(metric))
+            v = cell_value(r.get(metric))
             if r.get("status") == "error":
                 errors[i, j] += 1
             if v is not None:
