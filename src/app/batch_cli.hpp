@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/batch_runner.hpp"
+#include "scenario/notes.hpp"
 #include "app/cli_numbers.hpp"
 
 namespace signalsim::app {
@@ -31,7 +32,8 @@ inline void add_batch_options(CLI::App* sub, BatchCliOptions& o, const std::stri
     sub->add_flag("--resume", o.resume,
                   "Keep the finished rows of OUT/results.csv (passed, failed, no_expectations) and run only the "
                   "others (error rows run again)");
-  sub->add_flag("--quiet,-q", o.quiet, "No progress output");
+  sub->add_flag("--quiet,-q", o.quiet, "No progress output, no notes")
+      ->each([](const std::string&) { set_notes_enabled(false); });  // notes print as scenarios load
 }
 
 inline BatchSettings to_settings(const BatchCliOptions& o, const std::string& default_out, double default_timeout) {

@@ -37,6 +37,7 @@ int inspect(const InspectOptions& o) {
         overrides[item.substr(0, eq)] = YAML::Load(item.substr(eq + 1));
       }
       if (overrides.size() > 0) params.apply(overrides, "--set");
+      params.check_consistency("--set");
       plan = prepare_route(sumo::build_route(net, o.route), params);
     }
     print_net_summary(std::cout, net);

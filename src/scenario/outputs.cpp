@@ -179,7 +179,10 @@ void write_run_outputs(const std::string& dir, const Scenario& scenario, const s
   ego["width"] = departed.width;
   ego["base_link_to_front"] = std::stod(fixed(scenario.ego.base_link_to_front, 3));
   ego["base_link_to_rear"] = std::stod(fixed(scenario.ego.length - scenario.ego.base_link_to_front, 3));
-  if (!scenario.ego.vehicle_info.empty()) ego["vehicle_info"] = scenario.ego.vehicle_info;
+  if (!scenario.ego.vehicle_info.empty()) {
+    ego["vehicle_info"] = scenario.ego.vehicle_info;
+    ego["vehicle_info_unused_keys"] = scenario.ego.vehicle_info_unused;
+  }
   ego["max_speed"] = scenario.ego.max_speed;
   ego["accel"] = scenario.ego.accel;
   ego["decel"] = scenario.ego.decel;

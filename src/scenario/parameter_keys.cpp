@@ -35,23 +35,49 @@ std::string leaf_of(const std::string& key) {
 
 }  // namespace
 
-// The parameters of a mapping: inside Autoware's `<node>: ros__parameters:` wrapper (`/**` for
-// every node) when there is one.
-YAML::Node unwrap_ros_parameters(const YAML::Node& mapping, const std::string& file) {
+namespace {
+
+bool is_wrapper_key(const std::string& key) { return key == "ros__parameters" || edit_distance(key, "ros__parameters") <= 2; }
+
+// A ROS parameter file: some top-level value is a node section (`ros__parameters`, or nearly),
+// or a top-level key is a node name pattern (`/**`, `/planning/...`).
+bool is_ros_file(const YAML::Node& mapping) {
+  for (const auto& entry : mapping) {
+    if (entry.first.IsScalar() && entry.first.Scalar().rfind('/', 0) == 0) return true;
+    if (entry.second.IsMap())
+      for (const auto& inner : entry.second)
+        if (inner.first.IsScalar() && is_wrapper_key(inner.first.Scalar())) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+std::vector<YAML::Node> parameter_sections(const YAML::Node& mapping, const std::string& file) {
+  if (!mapping || mapping.IsNull()) return {};
   if (!mapping.IsMap()) throw InputError(file, yaml_line(mapping), "parameters must be a mapping of name: value");
-  if (mapping.size() != 1) return mapping;
-  const auto only = *mapping.begin();
-  if (!only.second.IsMap() || !only.second["ros__parameters"]) return mapping;
-  for (const auto& entry : only.second)
-    if (entry.first.Scalar() != "ros__parameters")
-      throw InputError(file, yaml_line(entry.first), "unknown key '" + only.first.Scalar() + "." + entry.first.Scalar() +
-                                                       "' beside ros__parameters");
-  const YAML::Node parameters = only.second["ros__parameters"];
-  if (parameters.IsNull()) return YAML::Node(YAML::NodeType::Map);
-  if (!parameters.IsMap())
-    throw InputError(file, yaml_line(parameters), "'" + only.first.Scalar() + ".ros__parameters' must be a mapping of name: value, got " +
-                                                    (parameters.IsSequence() ? "a list" : "'" + parameters.Scalar() + "'"));
-  return parameters;
+  if (!is_ros_file(mapping)) return {mapping};
+  std::vector<YAML::Node> sections;
+  for (const auto& node : mapping) {
+    const std::string name = node.first.Scalar();
+    if (node.second.IsNull()) continue;  // `/**:` with nothing under it
+    if (!node.second.IsMap())
+      throw InputError(file, yaml_line(node.first), "'" + name + "' must hold ros__parameters: (a ROS parameter file)");
+    for (const auto& entry : node.second) {
+      const std::string key = entry.first.Scalar();
+      if (key == "ros__parameters") continue;
+      throw InputError(file, yaml_line(entry.first), "unknown key '" + name + "." + key + "'" +
+                                                       (is_wrapper_key(key) ? " (did you mean 'ros__parameters'?)"
+                                                                            : " beside ros__parameters"));
+    }
+    const YAML::Node parameters = node.second["ros__parameters"];
+    if (!parameters || parameters.IsNull()) continue;
+    if (!parameters.IsMap())
+      throw InputError(file, yaml_line(parameters), "'" + name + ".ros__parameters' must be a mapping of name: value, got " +
+                                                      (parameters.IsSequence() ? "a list" : "'" + parameters.Scalar() + "'"));
+    sections.push_back(parameters);
+  }
+  return sections;
 }
 
 std::vector<FlatParameter> flatten_parameters(const YAML::Node& mapping, const std::string& file) {
@@ -83,15 +109,31 @@ std::size_t edit_distance(const std::string& a, const std::string& b) {
 std::optional<std::string> suggest_parameter(const std::string& key) {
   // One edit on the whole name: measured on autoware_launch's shipped files, no key signalsim does
   // not use is one edit from a known name, while two edits already pair min_/max_ siblings.
+  // A '.' for a '_' (or back) is another nesting, not a typo: path_generator.param.yaml's
+  // `turn_signal.search_time` is its own parameter, not turn_signal_search_time.
+  const auto same_but_nesting = [](const std::string& a, const std::string& b) {
+    if (a.size() != b.size()) return false;
+    for (std::size_t i = 0; i < a.size(); ++i)
+      if (a[i] != b[i] && !((a[i] == '.' && b[i] == '_') || (a[i] == '_' && b[i] == '.'))) return false;
+    return true;
+  };
   for (const ParameterSpec& spec : parameter_schema())
     for (const std::string* known : {&spec.name, &spec.autoware_key})
-      if (!known->empty() && edit_distance(key, *known) <= 1) return *known;
+      if (!known->empty() && edit_distance(key, *known) <= 1 && !same_but_nesting(key, *known)) return *known;
   // The right name at the wrong depth of a known module namespace.
   for (const ParameterSpec& spec : parameter_schema()) {
     const std::string& place = spec.autoware_key;
     if (place.find('.') == std::string::npos || key.find('.') == std::string::npos) continue;
     if (namespace_of(place) == namespace_of(key) && leaf_of(place) == leaf_of(key)) return place;
   }
+  // A known parameter directly under another known module (`lane_change.stop_margin`,
+  // `traffic_light.max_accel`): signalsim reads it only from its own place. Deeper keys of a module
+  // may reuse a name for another parameter (start_planner...safety_check_params.forward_path_length).
+  const std::string head = namespace_of(key);
+  if (key.size() > head.size() && key.find('.', head.size() + 1) == std::string::npos && is_parameter_group(head))
+    for (const ParameterSpec& spec : parameter_schema())
+      if (leaf_of(key) == leaf_of(spec.name) || (!spec.autoware_key.empty() && leaf_of(key) == leaf_of(spec.autoware_key)))
+        return spec.autoware_key.empty() ? spec.name : spec.autoware_key;
   return std::nullopt;
 }
 

@@ -21,10 +21,12 @@ struct FlatParameter {
   int line = 0;
 };
 
-/// The parameters of a mapping: inside Autoware's `<node>: ros__parameters:` wrapper (`/**` for every
-/// node) when there is one, else the mapping itself. Throws InputError (naming `file` and the line)
-/// for a mapping that is not one, or a wrapper whose ros__parameters is not a mapping.
-YAML::Node unwrap_ros_parameters(const YAML::Node& mapping, const std::string& file);
+/// The parameter mappings of a file: each node section's `ros__parameters` of a ROS parameter file
+/// (`/**:` or `<node>:` sections; several are all applied), else the mapping itself; none for an
+/// empty file or `/**:` alone. Throws InputError (naming `file` and the line) for a mapping that is
+/// not one, a section with a key beside ros__parameters (a misspelt `ros_parameters`: "did you mean"),
+/// or a ros__parameters that is not a mapping.
+std::vector<YAML::Node> parameter_sections(const YAML::Node& mapping, const std::string& file);
 
 /// The leaves of `mapping`, in file order: a map value is descended into (its keys joined with '.'),
 /// any other value (scalar, list, null) is a leaf. Throws InputError (naming `file`) for a key that

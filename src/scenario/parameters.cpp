@@ -67,16 +67,16 @@ ParameterSet::ParameterSet() {
 }
 
 void ParameterSet::apply(const YAML::Node& mapping, const ParameterOrigin& origin) {
-  if (!mapping || mapping.IsNull()) return;
-  apply_parameters(unwrap_ros_parameters(mapping, origin.file), origin);
-  check_consistency(origin.file);
+  apply_parameters(parameter_sections(mapping, origin.file), origin);
 }
 
-void ParameterSet::apply_parameters(const YAML::Node& mapping, const ParameterOrigin& origin) {
+void ParameterSet::apply_parameters(const std::vector<YAML::Node>& sections, const ParameterOrigin& origin) {
   const std::string& file = origin.file;
   std::map<std::string, const FlatParameter*> given;  // schema name -> where this mapping gave it
   std::vector<std::string> unused;
-  const std::vector<FlatParameter> flat = flatten_parameters(mapping, file);
+  std::vector<FlatParameter> flat;
+  for (const YAML::Node& section : sections)
+    for (FlatParameter& entry : flatten_parameters(section, file)) flat.push_back(std::move(entry));
   for (const FlatParameter& entry : flat) {
     const ParameterSpec* spec = find_parameter(entry.name);
     if (!spec) {
@@ -97,8 +97,8 @@ void ParameterSet::apply_parameters(const YAML::Node& mapping, const ParameterOr
       throw InputError(file, entry.line, "parameter '" + entry.name + "' is given twice (" +
                                              (earlier.name == entry.name ? "lines " + std::to_string(earlier.line) + " and " +
                                                                                std::to_string(entry.line)
-                                                                         : "also as '" + earlier.name + "' at line " +
-                                                                               std::to_string(earlier.line)) +
+                                                                         : "also as '" + earlier.name + "'" +
+                                                                               (earlier.line > 0 ? " at line " + std::to_string(earlier.line) : "")) +
                                              ")");
     }
     given[spec->name] = &entry;
@@ -113,15 +113,17 @@ void ParameterSet::apply_parameters(const YAML::Node& mapping, const ParameterOr
 }
 
 void ParameterSet::check_consistency(const std::string& file) const {
-  // Cross-parameter rule (spec TLJ §1.6): the restart-suppression window must not be inverted.
-  if (number("restart_suppression.min_behind_distance_to_stop") >
-      number("restart_suppression.max_behind_distance_to_stop"))
-    throw InputError(file, 0,
-                     "restart_suppression.min_behind_distance_to_stop is greater than "
-                     "restart_suppression.max_behind_distance_to_stop");
-  // The lane change's prepare duration lies in [min, max] (spec TSD §8.2).
-  if (number("min_prepare_duration") > number("max_prepare_duration"))
-    throw InputError(file, 0, "min_prepare_duration is greater than max_prepare_duration");
+  // Checked on the final values (after every file, preset and override): a later layer may mend
+  // what an earlier one set.
+  const auto inverted = [&](const char* low, const char* high, const char* rule) {
+    if (number(low) <= number(high)) return;
+    throw InputError(file, 0, std::string(low) + " " + sumo::short_number(number(low)) + " (" + origin(low) +
+                                  ") is greater than " + high + " " + sumo::short_number(number(high)) + " (" +
+                                  origin(high) + ")" + rule);
+  };
+  inverted("restart_suppression.min_behind_distance_to_stop", "restart_suppression.max_behind_distance_to_stop",
+           " (spec TLJ §1.6: the restart-suppression window)");
+  inverted("min_prepare_duration", "max_prepare_duration", " (spec TSD §8.2: the prepare duration lies in [min, max])");
 }
 
 void ParameterSet::apply_file(const std::string& path, bool strict) {

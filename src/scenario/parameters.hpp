@@ -78,12 +78,14 @@ class ParameterSet {
   const std::map<std::string, ParameterValue>& values() const { return values_; }
   /// Where the value of `name` came from: "default", "<file>:<line>", "country jp", "set", "--set".
   const std::string& origin(const std::string& name) const { return origins_.at(name); }
+  /// The rules between parameters (a window's min <= max), on the values as they are now: call once
+  /// after the last apply. Throws InputError naming `file` and both values' origins.
+  void check_consistency(const std::string& file) const;
   /// Per parameter file applied with unknown keys allowed: the keys signalsim does not use.
   const std::vector<UnusedParameters>& unused() const { return unused_; }
 
  private:
-  void apply_parameters(const YAML::Node& mapping, const ParameterOrigin& origin);
-  void check_consistency(const std::string& file) const;
+  void apply_parameters(const std::vector<YAML::Node>& sections, const ParameterOrigin& origin);
   std::map<std::string, ParameterValue> values_;
   std::map<std::string, std::string> origins_;
   std::vector<UnusedParameters> unused_;

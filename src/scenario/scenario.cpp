@@ -184,6 +184,7 @@ void apply_vehicle_info(const VehicleInfo& info, int line, const std::string& pa
     throw InputError(info.file, info.lines.at("wheel_base"),
                      "the vehicle is " + sumo::short_number(ego.length) + " m x " + sumo::short_number(ego.width) +
                          " m (length 0.5-30 m, width 0.3-5 m)");
+  ego.vehicle_info_unused = info.unused;
   if (!info.unused.empty()) notes.push_back(unused_parameters_note({info.file, info.unused}));
 }
 
@@ -325,11 +326,23 @@ Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrid
   s.ego.length = ego.number("length", 4.5, 0.5, 30.0);
   s.ego.width = ego.number("width", 1.8, 0.3, 5.0);
   s.ego.base_link_to_front = ego.number("base_link_to_front", kBaseLinkShare * s.ego.length, 0.0, 30.0);
+  // params.strict is read here already: it applies to the vehicle description too.
+  const YAML::Node& const_root = root;  // (a lookup through a non-const node would add the key)
+  const YAML::Node params_node = const_root["params"];
+  if (params_node && params_node.IsMap() && params_node["strict"]) {
+    const YAML::Node strict = params_node["strict"];
+    if (!(strict.IsScalar() && YAML::convert<bool>::decode(strict, s.strict_params)))
+      throw InputError(path, yaml_line(strict), "key 'params.strict': expected true or false");
+  }
   if (ego.has("vehicle_info"))
-    apply_vehicle_info(load_vehicle_info(sumo::resolve_beside(path, ego.text("vehicle_info"))),
+    apply_vehicle_info(load_vehicle_info(sumo::resolve_beside(path, ego.text("vehicle_info")), s.strict_params),
                        ego.line_of("vehicle_info"), path, s.ego, s.notes);
-  if (s.ego.base_link_to_front > s.ego.length)
+  if (s.ego.base_link_to_front > s.ego.length) {
+    if (s.ego.from_vehicle_info.count("base_link_to_front"))
+      ego.fail("length", sumo::short_number(s.ego.length) + " m is shorter than base_link_to_front " +
+                             sumo::short_number(s.ego.base_link_to_front) + " m from vehicle_info " + s.ego.vehicle_info);
     ego.fail("base_link_to_front", "is longer than the vehicle (ego.length)");
+  }
   s.ego.accel = ego.number("accel", 1.0, 0.1, 10.0);
   s.ego.decel = ego.number("decel", 1.0, 0.1, 10.0);
   s.ego.emergency_decel = ego.number("emergency_decel", 9.0, 1.0, 15.0);
@@ -447,9 +460,7 @@ Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrid
   if (top.has("params")) {
     YamlFields params(top.node("params"), path, "params");
     // strict: every key of a parameter file must be one signalsim uses (else they are listed).
-    const YAML::Node strict = params.node("strict");
-    if (strict && !(strict.IsScalar() && YAML::convert<bool>::decode(strict, s.strict_params)))
-      params.fail("strict", "expected true or false");
+    (void)params.node("strict");  // read with the ego (it applies to ego.vehicle_info too)
     for (const std::string& file : params.text_list("files"))
       s.params.apply_file(sumo::resolve_beside(path, file), s.strict_params);
     const YAML::Node given = params.node("set");
@@ -462,6 +473,7 @@ Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrid
   }
   if (set && !set.IsNull()) s.params.apply(set, ParameterOrigin{path, "set"});
   if (parameter_overrides.size() > 0) s.params.apply(parameter_overrides, ParameterOrigin{"--set", "--set"});
+  s.params.check_consistency(path);
   for (const UnusedParameters& file : s.params.unused()) s.notes.push_back(unused_parameters_note(file));
 
   const YAML::Node expect = top.node("expect");

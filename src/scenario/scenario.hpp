@@ -49,6 +49,7 @@ struct EgoSpec {
   std::set<std::string> given;
   std::string vehicle_info;                ///< `vehicle_info:` (resolved), empty when none
   std::set<std::string> from_vehicle_info; ///< of `given`: the keys the vehicle_info file set
+  std::vector<std::string> vehicle_info_unused;  ///< keys of the vehicle_info file signalsim does not use
   std::map<std::string, int> lines;  ///< the scenario file's line of each given key (0: from --set)
 };
 /// base_link_to_front / length when the scenario gives no base_link_to_front: Autoware's default

@@ -114,7 +114,7 @@ std::map<std::string, std::string> ego_sources(const Scenario& scenario, const s
   std::map<std::string, std::string> out;
   const auto source = [&](const char* key, bool from_sumo) {
     out[key] = ego.from_vehicle_info.count(key) ? "vehicle_info " + ego.vehicle_info
-               : ego.given.count(key)           ? "scenario"
+               : ego.given.count(key)           ? (ego.lines.count(key) && ego.lines.at(key) == 0 ? "--set" : "scenario")
                : (taken && from_sumo ? sumo_type : "default");
   };
   source("route", true);

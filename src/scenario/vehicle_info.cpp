@@ -20,15 +20,21 @@ constexpr double kMaxDimension = 30.0;  // [m] as ego.length's upper bound
 
 }  // namespace
 
-VehicleInfo load_vehicle_info(const std::string& path) {
-  const YAML::Node mapping = unwrap_ros_parameters(load_yaml_file(path, "vehicle_info file"), path);
+VehicleInfo load_vehicle_info(const std::string& path, bool strict) {
+  const std::vector<YAML::Node> sections = parameter_sections(load_yaml_file(path, "vehicle_info file"), path);
   VehicleInfo info;
   info.file = path;
   std::map<std::string, double*> fields = {
       {"wheel_base", &info.wheel_base},   {"front_overhang", &info.front_overhang},
       {"rear_overhang", &info.rear_overhang}, {"wheel_tread", &info.wheel_tread},
       {"left_overhang", &info.left_overhang}, {"right_overhang", &info.right_overhang}};
-  for (const FlatParameter& entry : flatten_parameters(mapping, path)) {
+  std::vector<FlatParameter> flat;
+  for (const YAML::Node& section : sections)
+    for (FlatParameter& entry : flatten_parameters(section, path)) flat.push_back(std::move(entry));
+  for (const FlatParameter& entry : flat) {
+    if (info.lines.count(entry.name))
+      throw InputError(path, entry.line, "'" + entry.name + "' is given twice (also at line " +
+                                             std::to_string(info.lines.at(entry.name)) + ")");
     const auto field = fields.find(entry.name);
     if (field == fields.end()) {
       bool known = false;
@@ -36,6 +42,8 @@ VehicleInfo load_vehicle_info(const std::string& path) {
       for (const char* name : kUsed)
         if (!known && edit_distance(entry.name, name) <= 1)
           throw InputError(path, entry.line, "unknown key '" + entry.name + "' (did you mean '" + name + "'?)");
+      if (strict && !known)
+        throw InputError(path, entry.line, "unknown key '" + entry.name + "' (strict parameters: every key must be known)");
       info.unused.push_back(entry.name);
       continue;
     }

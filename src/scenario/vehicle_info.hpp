@@ -25,7 +25,9 @@ struct VehicleInfo {
 
 /// Reads a vehicle_info file. Throws InputError naming the file and line: missing file, malformed
 /// YAML, a missing or non-numeric dimension, a negative one (a zero wheel base or tread), a key one
-/// edit away from a known one ("did you mean").
-VehicleInfo load_vehicle_info(const std::string& path);
+/// edit away from a known one ("did you mean"), and when `strict` a key that is not one of
+/// Autoware's vehicle_info keys (wheel_radius, wheel_width, vehicle_height, max_steer_angle are
+/// known but unused: listed in `unused`).
+VehicleInfo load_vehicle_info(const std::string& path, bool strict = false);
 
 }  // namespace signalsim

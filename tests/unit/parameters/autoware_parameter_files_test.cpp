@@ -147,6 +147,56 @@ TEST(AutowareFilesBadInput, AWrapperWithMoreThanRosParameters) {
             ":4: unknown key '/**.stray' beside ros__parameters");
 }
 
+TEST(AutowareFilesBadInput, TheWrapperMustBeRosParameters) {
+  // A misspelt wrapper would drop every value: an error, not a list of unused keys.
+  EXPECT_EQ(apply_text("/**:\n  ros_parameters:\n    traffic_light:\n      stop_margin: 3.0\n"),
+            ":2: unknown key '/**.ros_parameters' (did you mean 'ros__parameters'?)");
+  EXPECT_EQ(apply_text("/**:\n"), "");  // empty: nothing to apply
+}
+
+TEST(AutowareFiles, SeveralNodeSectionsAreAllApplied) {
+  TempDir dir("params");
+  const std::string path =
+      dir.file("p.yaml", "/**:\n  ros__parameters:\n    max_accel: -3.0\nbehavior_velocity_planner:\n  ros__parameters:\n"
+                         "    traffic_light:\n      stop_margin: 1.5\n");
+  ParameterSet set;
+  set.apply_file(path, false);
+  EXPECT_DOUBLE_EQ(set.number("max_accel"), -3.0);
+  EXPECT_DOUBLE_EQ(set.number("stop_margin"), 1.5);
+  EXPECT_EQ(set.origin("stop_margin"), path + ":7");
+  EXPECT_TRUE(set.unused().empty());
+}
+
+TEST(AutowareFilesBadInput, AKnownNameDirectlyUnderAnotherModule) {
+  EXPECT_EQ(apply_text("lane_change:\n  stop_margin: 1.0\n"),
+            ":2: unknown parameter 'lane_change.stop_margin' (did you mean 'traffic_light.stop_margin'?)");
+  EXPECT_EQ(apply_text("traffic_light:\n  max_accel: -1.0\n"),
+            ":2: unknown parameter 'traffic_light.max_accel' (did you mean 'max_accel'?)");
+}
+
+TEST(AutowareFiles, AnotherNestingIsAnotherParameterNotATypo) {
+  // path_generator.param.yaml keeps its own turn_signal.search_time (not the decider's).
+  TempDir dir("params");
+  const std::string path = dir.file("path_generator.param.yaml",
+                                    "/**:\n  ros__parameters:\n    turn_signal:\n      search_time: 3.0\n      search_distance: 30.0\n");
+  ParameterSet set;
+  set.apply_file(path, false);
+  ASSERT_EQ(set.unused().size(), 1u);
+  EXPECT_EQ(set.unused()[0].keys, (std::vector<std::string>{"turn_signal.search_time", "turn_signal.search_distance"}));
+  EXPECT_EQ(set.origin("turn_signal_search_time"), "default");
+}
+
+TEST(ParameterOrigins, ConsistencyIsCheckedOnTheFinalValues) {
+  ParameterSet set;
+  set.apply(YAML::Load("min_prepare_duration: 5.0"), ParameterOrigin{"a.yaml", "set"});  // max still 4
+  set.apply(YAML::Load("max_prepare_duration: 6.0"), ParameterOrigin{"--set", "--set"});
+  EXPECT_NO_THROW(set.check_consistency("s.yaml"));
+  set.apply(YAML::Load("max_prepare_duration: 4.5"), ParameterOrigin{"--set", "--set"});
+  EXPECT_EQ(error_of([&] { set.check_consistency("s.yaml"); }),
+            "s.yaml: min_prepare_duration 5 (set) is greater than max_prepare_duration 4.5 (--set) (spec TSD §8.2: "
+            "the prepare duration lies in [min, max])");
+}
+
 // --- the other sources of values: always strict, each with its label -------------------------
 
 TEST(ParameterOrigins, PresetSetAndCommandLineAreLabelledAndStrict) {

@@ -50,6 +50,26 @@ TEST(VehicleInfo, BadFiles) {
             ":2: '/**.ros__parameters' must be a mapping of name: value, got a list");
 }
 
+TEST(VehicleInfo, UnequalOverhangsAddUp) {
+  TempDir dir("vehicle");
+  const std::string path = dir.file("v.yaml", "/**:\n  ros__parameters:\n    wheel_base: 3.0\n    wheel_tread: 1.5\n"
+                                               "    front_overhang: 0.9\n    rear_overhang: 1.2\n    left_overhang: 0.1\n"
+                                               "    right_overhang: 0.3\n    vehicle_mass: 1500\n");
+  const VehicleInfo info = load_vehicle_info(path);
+  EXPECT_NEAR(info.length(), 5.1, 1e-12);
+  EXPECT_NEAR(info.width(), 1.9, 1e-12);
+  EXPECT_NEAR(info.base_link_to_front(), 3.9, 1e-12);
+  EXPECT_EQ(info.unused, (std::vector<std::string>{"vehicle_mass"}));
+  // Strict: a key that is not Autoware's is refused; Autoware's own unused keys are not.
+  try {
+    load_vehicle_info(path, /*strict=*/true);
+    ADD_FAILURE() << "strict accepted vehicle_mass";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), path + ":9: unknown key 'vehicle_mass' (strict parameters: every key must be known)");
+  }
+  EXPECT_NO_THROW(load_vehicle_info(fixture("vehicle_info.param.yaml"), /*strict=*/true));
+}
+
 TEST(VehicleInfo, TheScenarioTakesTheFootprintAndExplicitKeysWin) {
   TempDir dir("scenario");
   dir.file("x.net.xml", "<net/>\n");  // only its existence is checked at load
@@ -69,7 +89,8 @@ TEST(VehicleInfo, TheScenarioTakesTheFootprintAndExplicitKeysWin) {
     load_scenario(dir.file("c.yaml", head + "  length: 3.0\n"));
     ADD_FAILURE() << "accepted a base_link_to_front beyond the vehicle";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("base_link_to_front"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("key 'ego.length': 3 m is shorter than base_link_to_front 3.79 m from vehicle_info"),
+              std::string::npos) << e.what();
   }
 }
 
