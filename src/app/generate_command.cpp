@@ -28,7 +28,9 @@ struct GenerateCli {
 // A whole number in [low, high], written in decimal digits only: "-3", "+3", "1e3", "0x10" and
 // anything above `high` (18446744073709551616 included) throw GenerateError naming the option.
 std::uint64_t whole_number(const std::string& option, const std::string& text, std::uint64_t low, std::uint64_t high) {
-  const std::string range = std::to_string(low) + ".." + std::to_string(high);
+  // The largest seed reads as 2^64-1, not as 20 digits.
+  const std::string high_text = high == std::numeric_limits<std::uint64_t>::max() ? "2^64-1" : std::to_string(high);
+  const std::string range = std::to_string(low) + ".." + high_text;
   bool digits = !text.empty() && text.size() <= 20;
   for (const char c : text) digits = digits && c >= '0' && c <= '9';
   if (!digits) throw generate::GenerateError(option + " '" + text + "': not a whole number in " + range);

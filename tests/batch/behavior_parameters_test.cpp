@@ -50,9 +50,10 @@ TEST(BehaviorParameters, PrepareDurationsMustNotBeInverted) {
   ParameterSet set;
   try {
     set.apply(YAML::Load("min_prepare_duration: 5.0\n"), "params.yaml");
+    set.check_consistency("params.yaml");  // on the final values
     FAIL() << "accepted min_prepare_duration > max_prepare_duration";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("min_prepare_duration is greater than max_prepare_duration"),
+    EXPECT_NE(std::string(e.what()).find("is greater than max_prepare_duration"),
               std::string::npos)
         << e.what();
   }

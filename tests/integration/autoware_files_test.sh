@@ -78,15 +78,17 @@ grep -q '"status": "error"' "$work/strict/summary.json" || fail "--strict-params
 # An explicit ego key wins over vehicle_info, and the note says so.
 "$bin" run "$scenario" --out "$work/explicit" --set ego.length=5.2 >/dev/null 2>"$work/explicit.stderr" || fail "explicit length: exit $?"
 grep -q "ego.length 5.2 replaces 4.89 from vehicle_info" "$work/explicit.stderr" || fail "no note for ego.length: $(cat "$work/explicit.stderr")"
-python3 -c "import json,sys; e=json.load(open(sys.argv[1]))['ego']; sys.exit(0 if e['length']==5.2 and e['source']['length']=='scenario' else 1)" \
+python3 -c "import json,sys; e=json.load(open(sys.argv[1]))['ego']; sys.exit(0 if e['length']==5.2 and e['source']['length']=='--set' else 1)" \
   "$work/explicit/summary.json" || fail "explicit length not used"
 
 # A batch of the same scenario twice: each note once (the workers run quietly).
-"$bin" batch "$scenario" "$scenario" --out "$work/batch" --jobs 2 --quiet 2>"$work/batch.stderr"
+"$bin" batch "$scenario" "$scenario" --out "$work/batch" --jobs 2 >/dev/null 2>"$work/batch.stderr"
 code=$?
 [ "$code" -eq 0 ] || fail "batch: exit $code"
 notes=$(grep -c 'lane_change.param.yaml: 20 keys' "$work/batch.stderr")
 [ "$notes" -eq 1 ] || fail "batch: lane_change note $notes times, want once"
+"$bin" batch "$scenario" --out "$work/batch_quiet" --quiet 2>"$work/batch_quiet.stderr" || fail "quiet batch: exit $?"
+[ -s "$work/batch_quiet.stderr" ] && fail "batch --quiet printed: $(head -2 "$work/batch_quiet.stderr")"
 
 if [ "$failures" -eq 0 ]; then echo "autoware files: all checks passed"; else echo "$failures failure(s)"; fi
 [ "$failures" -eq 0 ]
