@@ -44,6 +44,4 @@ std::string unused_parameters_note(const UnusedParameters& unused) {
   return text;
 }
 
-void note_unused_parameters(const UnusedParameters& unused) { note_once(unused_parameters_note(unused)); }
-
 }  // namespace signalsim

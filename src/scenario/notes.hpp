@@ -16,9 +16,6 @@ void set_notes_enabled(bool enabled);
 /// Prints "signalsim: note: <text>" on stderr unless a note with the same text was printed before.
 void note_once(const std::string& text);
 
-/// One note line for a parameter file's unused keys: the count and the first few names.
-void note_unused_parameters(const UnusedParameters& unused);
-
 /// The note's text (for tests): "<file>: N keys signalsim does not use: a, b, ... (+M more; all in
 /// summary.json parameter_files)".
 std::string unused_parameters_note(const UnusedParameters& unused);

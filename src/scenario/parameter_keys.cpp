@@ -86,6 +86,12 @@ std::vector<FlatParameter> flatten_parameters(const YAML::Node& mapping, const s
   return out;
 }
 
+std::vector<FlatParameter> document_parameters(const YAML::Node& document, const std::string& file) {
+  std::vector<FlatParameter> out;
+  for (const YAML::Node& section : parameter_sections(document, file)) flatten_into(section, "", file, out);
+  return out;
+}
+
 const ParameterSpec* find_parameter(const std::string& key) {
   for (const ParameterSpec& spec : parameter_schema())
     if (spec.name == key || (!spec.autoware_key.empty() && spec.autoware_key == key)) return &spec;

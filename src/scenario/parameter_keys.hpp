@@ -28,6 +28,10 @@ struct FlatParameter {
 /// or a ros__parameters that is not a mapping.
 std::vector<YAML::Node> parameter_sections(const YAML::Node& mapping, const std::string& file);
 
+/// The leaves of every section of a parameter document (parameter_sections, then
+/// flatten_parameters of each), in file order.
+std::vector<FlatParameter> document_parameters(const YAML::Node& document, const std::string& file);
+
 /// The leaves of `mapping`, in file order: a map value is descended into (its keys joined with '.'),
 /// any other value (scalar, list, null) is a leaf. Throws InputError (naming `file`) for a key that
 /// is not a plain scalar or a key repeated in one mapping.

@@ -67,16 +67,13 @@ ParameterSet::ParameterSet() {
 }
 
 void ParameterSet::apply(const YAML::Node& mapping, const ParameterOrigin& origin) {
-  apply_parameters(parameter_sections(mapping, origin.file), origin);
+  apply_parameters(document_parameters(mapping, origin.file), origin);
 }
 
-void ParameterSet::apply_parameters(const std::vector<YAML::Node>& sections, const ParameterOrigin& origin) {
+void ParameterSet::apply_parameters(const std::vector<FlatParameter>& flat, const ParameterOrigin& origin) {
   const std::string& file = origin.file;
   std::map<std::string, const FlatParameter*> given;  // schema name -> where this mapping gave it
   std::vector<std::string> unused;
-  std::vector<FlatParameter> flat;
-  for (const YAML::Node& section : sections)
-    for (FlatParameter& entry : flatten_parameters(section, file)) flat.push_back(std::move(entry));
   for (const FlatParameter& entry : flat) {
     const ParameterSpec* spec = find_parameter(entry.name);
     if (!spec) {

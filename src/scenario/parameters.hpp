@@ -16,6 +16,7 @@
 namespace signalsim {
 
 using ParameterValue = std::variant<bool, int, double, std::string>;
+struct FlatParameter;  // scenario/parameter_keys.hpp
 
 struct ParameterSpec {
   std::string name;                   ///< Autoware name; nested Autoware keys joined with '.'
@@ -85,7 +86,7 @@ class ParameterSet {
   const std::vector<UnusedParameters>& unused() const { return unused_; }
 
  private:
-  void apply_parameters(const std::vector<YAML::Node>& sections, const ParameterOrigin& origin);
+  void apply_parameters(const std::vector<FlatParameter>& flat, const ParameterOrigin& origin);
   std::map<std::string, ParameterValue> values_;
   std::map<std::string, std::string> origins_;
   std::vector<UnusedParameters> unused_;

@@ -166,10 +166,14 @@ PerceptionModelParameters parse_perception(const YAML::Node& node, const std::st
 void apply_vehicle_info(const VehicleInfo& info, int line, const std::string& path, EgoSpec& ego,
                         std::vector<std::string>& notes) {
   ego.vehicle_info = info.file;
-  const std::pair<const char*, double> derived[] = {
-      {"length", info.length()}, {"width", info.width()}, {"base_link_to_front", info.base_link_to_front()}};
-  for (const auto& [key, value] : derived) {
-    double& field = key == std::string("length") ? ego.length : key == std::string("width") ? ego.width : ego.base_link_to_front;
+  const struct {
+    const char* key;
+    double value;
+    double& field;
+  } derived[] = {{"length", info.length(), ego.length},
+                 {"width", info.width(), ego.width},
+                 {"base_link_to_front", info.base_link_to_front(), ego.base_link_to_front}};
+  for (const auto& [key, value, field] : derived) {
     if (ego.given.count(key)) {
       notes.push_back(path + ":" + std::to_string(ego.lines[key]) + ": ego." + key + " " + sumo::short_number(field) +
                       " replaces " + sumo::short_number(value) + " from vehicle_info " + info.file);

@@ -21,16 +21,13 @@ constexpr double kMaxDimension = 30.0;  // [m] as ego.length's upper bound
 }  // namespace
 
 VehicleInfo load_vehicle_info(const std::string& path, bool strict) {
-  const std::vector<YAML::Node> sections = parameter_sections(load_yaml_file(path, "vehicle_info file"), path);
+  const std::vector<FlatParameter> flat = document_parameters(load_yaml_file(path, "vehicle_info file"), path);
   VehicleInfo info;
   info.file = path;
   std::map<std::string, double*> fields = {
       {"wheel_base", &info.wheel_base},   {"front_overhang", &info.front_overhang},
       {"rear_overhang", &info.rear_overhang}, {"wheel_tread", &info.wheel_tread},
       {"left_overhang", &info.left_overhang}, {"right_overhang", &info.right_overhang}};
-  std::vector<FlatParameter> flat;
-  for (const YAML::Node& section : sections)
-    for (FlatParameter& entry : flatten_parameters(section, path)) flat.push_back(std::move(entry));
   for (const FlatParameter& entry : flat) {
     if (info.lines.count(entry.name))
       throw InputError(path, entry.line, "'" + entry.name + "' is given twice (also at line " +
