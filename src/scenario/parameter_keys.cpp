@@ -83,9 +83,14 @@ std::size_t edit_distance(const std::string& a, const std::string& b) {
 std::optional<std::string> suggest_parameter(const std::string& key) {
   // One edit on the whole name: measured on autoware_launch's shipped files, no key signalsim does
   // not use is one edit from a known name, while two edits already pair min_/max_ siblings.
+  // The length test first (the distance is at least the length difference): a long key is not
+  // compared cell by cell with every name (fuzzing: 0.4 s for one mutated file, mostly here).
+  const auto within_one_length = [&](const std::string& known) {
+    return key.size() <= known.size() + 1 && known.size() <= key.size() + 1;
+  };
   for (const ParameterSpec& spec : parameter_schema())
     for (const std::string* known : {&spec.name, &spec.autoware_key})
-      if (!known->empty() && edit_distance(key, *known) <= 1) return *known;
+      if (!known->empty() && within_one_length(*known) && edit_distance(key, *known) <= 1) return *known;
   // The right name at the wrong depth of a known module namespace.
   for (const ParameterSpec& spec : parameter_schema()) {
     const std::string& place = spec.autoware_key;
