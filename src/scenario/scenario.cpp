@@ -299,6 +299,9 @@ std::string describe(const Expectation& expectation) {
 
 Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrides) {
   YAML::Node root = load_yaml_file(path, "scenario file");
+  // Before the overrides walk it (fuzzing: a scalar file and --set threw yaml-cpp's own "operator[]
+  // call on a scalar"; yaml-cpp turned a list file into a mapping). An empty file stays empty.
+  if (root && !root.IsNull() && !root.IsMap()) YamlFields(root, path, "");
   YAML::Node parameter_overrides;
   root = apply_overrides(root, overrides, parameter_overrides);
   Scenario s;

@@ -17,8 +17,14 @@ constexpr double kDeadLine = -2.0;          // APPROACH -> GO_OUT when d < -2.0 
 constexpr double kRestartLength = 1.0;      // GO_OUT -> APPROACH when d > +1.0 m
 constexpr double kStopVelocityEps = 1e-3;   // isVehicleStopped(0.0)
 
-// Times are compared in integer nanoseconds, like rclcpp::Time (spec TLJ §1.5 choice).
-std::int64_t to_ns(double seconds) { return static_cast<std::int64_t>(std::llround(seconds * 1e9)); }
+// Times are compared in integer nanoseconds, like rclcpp::Time (spec TLJ §1.5 choice). Saturated
+// at +-4e18 ns (about 127 years): llround of a larger finite time is unspecified, and the
+// difference of two saturated times (now - stamp, now - timer start) stays within int64 (fuzzing
+// found `now - stamp` overflowing for a stamp of 1e300 s).
+constexpr double kMaxNs = 4e18;
+std::int64_t to_ns(double seconds) {
+  return static_cast<std::int64_t>(std::llround(std::clamp(seconds * 1e9, -kMaxNs, kMaxNs)));
+}
 
 __attribute__((format(printf, 1, 2))) std::string strf(const char* format, ...) {
   char buffer[512];

@@ -65,7 +65,8 @@
 // - Time. Times are rounded to integer nanoseconds (as rclcpp::Time) before any comparison, so at a
 //   0.1 s step the second STOP cycle has elapsed exactly 0.1 s (not > 0.1: pass) and the third
 //   0.2 s (stop) however the caller's clock accumulated rounding error (spec TLJ §1.5). The same
-//   holds for the timeout: age 1.0 s is not timed out, 1.1 s is.
+//   holds for the timeout: age 1.0 s is not timed out, 1.1 s is. Times beyond +-4e9 s (any
+//   finite stamp, `now` or parameter) saturate there, so every difference is defined.
 // - Observations. An absent observation means "nothing new was delivered": the last one stays in
 //   force and ages towards the timeout (the node keeps the last message). An observation with no
 //   elements means "delivered, nothing recognised" and is a stop signal (spec TLJ §1.3 notes).

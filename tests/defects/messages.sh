@@ -14,6 +14,13 @@ scenario_copy close_turns "$work/null_seed.yaml"
 sed -i 's/^seed: 1$/seed:/' "$work/null_seed.yaml"
 bad_input null_seed_in_file "null_seed.yaml:[0-9]+: key 'seed': empty value \(expected an integer\)" -- run "$work/null_seed.yaml"
 
+# A scenario file that is not a mapping, with --set (found by tests/fuzz/fuzz_scenario: yaml-cpp's
+# "operator[] call on a scalar" for a scalar file; a list file was turned into a mapping).
+printf 'just a scalar\n' >"$work/scalar.yaml"
+printf -- '- a\n- b\n' >"$work/list.yaml"
+bad_input set_on_scalar_file "scalar.yaml:1: the file must be a mapping of key: value" -- run "$work/scalar.yaml" --set seed=3
+bad_input set_on_list_file "list.yaml:1: the file must be a mapping of key: value" -- run "$work/list.yaml" --set ego.route=x
+
 for code in ../countries/jp jp/../jp /etc/passwd; do
   bad_input "country_${code//\//_}" "close_turns.yaml: key 'country': unknown country '$code' \(known: de, jp, kr\)" -- \
     run "$s" --set "country=$code"

@@ -570,6 +570,28 @@ TEST(TrafficLightJudge, InvalidInputThrowsAndLeavesTheStateAlone) {
   EXPECT_EQ(judge.step(red_at(0.2, 59.0, 10.0)).decision, JudgeDecision::Stop);
 }
 
+// Found by tests/fuzz/fuzz_traffic_light_judge: a finite but huge stamp overflowed now - stamp
+// (signed overflow, UB) when converted to nanoseconds. Times now saturate at +-4e9 s.
+TEST(TrafficLightJudge, HugeFiniteTimesSaturate) {
+  TrafficLightJudge judge(no_hysteresis());
+  const double huge = std::numeric_limits<double>::max();
+  // A stamp far in the past: timed out (a stop), not an overflow.
+  EXPECT_EQ(judge.step(input(0.1, 50.0, 10.0, obs({el(C::Green)}, -huge))).verdict, SignalVerdict::TimedOut);
+  // A stamp far in the future: not timed out, the green is looked at.
+  EXPECT_EQ(judge.step(input(0.2, 50.0, 10.0, obs({el(C::Green)}, huge))).verdict, SignalVerdict::Go);
+  // now itself huge, with the timer running from a normal time.
+  TrafficLightJudge other(no_hysteresis());
+  other.step(red_at(0.1, 60.0, 10.0));
+  const TrafficLightJudgeResult r = other.step(input(huge, 59.0, 10.0, obs({el(C::Red)}, -huge)));
+  EXPECT_TRUE(r.is_stop_signal);
+  EXPECT_GE(r.stop_signal_elapsed, 0.0);
+  TrafficLightJudgeParameters p = no_hysteresis();
+  p.tl_state_timeout = 1e300;
+  p.stop_time_hysteresis = 1e300;
+  TrafficLightJudge saturated(p);
+  EXPECT_EQ(saturated.step(input(huge, 50.0, 10.0, obs({el(C::Red)}, huge))).verdict, SignalVerdict::Stop);
+}
+
 TEST(TrafficLightJudge, ResetForgetsEverything) {
   TrafficLightJudgeParameters p = no_hysteresis();
   p.is_simulation = false;
