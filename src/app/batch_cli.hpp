@@ -7,7 +7,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "app/batch_runner.hpp"
+#include "batch/batch_runner.hpp"
 #include "scenario/notes.hpp"
 #include "app/cli_numbers.hpp"
 

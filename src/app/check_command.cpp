@@ -17,8 +17,8 @@
 #include "app/batch_cli.hpp"
 #include "app/cli_numbers.hpp"
 #include "app/command.hpp"
-#include "app/golden.hpp"
-#include "app/run_outputs.hpp"
+#include "batch/golden.hpp"
+#include "batch/run_outputs.hpp"
 #include "scenario/input_error.hpp"
 
 namespace signalsim::app {

@@ -1,7 +1,5 @@
-// One subcommand of the command line: its CLI11 sub-app and the function that runs it.
-// Exit codes for every command: 0 success, 1 an expectation (or regression) failed, 2 bad input;
-// sweep --plot and compare: 3 the picture failed; batch, sweep and check: 4 a run errored (no verdict);
-// 130 interrupted, `run`: 143 on SIGTERM (see README).
+// One subcommand of the command line: its CLI11 sub-app and the function that runs it (exit codes:
+// report/exit_codes.hpp).
 #pragma once
 
 #include <functional>
@@ -9,14 +7,9 @@
 
 #include <CLI/CLI.hpp>
 
-namespace signalsim::app {
+#include "report/exit_codes.hpp"
 
-inline constexpr int kExitFailed = 1;
-inline constexpr int kExitBadInput = 2;
-inline constexpr int kExitPicture = 3;        ///< sweep --plot, compare: the runs were fine, the picture failed
-inline constexpr int kExitRunErrors = 4;      ///< batch, sweep, check: a run errored (no verdict; wins over 1)
-inline constexpr int kExitInterrupted = 130;  ///< SIGINT (batch, sweep, check, compare: also SIGTERM)
-inline constexpr int kExitTerminated = 143;   ///< `run` stopped by SIGTERM (128 + 15)
+namespace signalsim::app {
 
 struct Command {
   CLI::App* sub = nullptr;

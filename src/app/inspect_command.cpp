@@ -5,7 +5,7 @@
 #include "app/command.hpp"
 #include "app/inspect.hpp"
 #include "scenario/countries.hpp"
-#include "scenario/route_planning.hpp"
+#include "sim/route_planning.hpp"
 #include "sumo/route_builder.hpp"
 
 namespace signalsim::app {

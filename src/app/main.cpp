@@ -31,6 +31,7 @@ int report_bad_input(const std::string& message) {
 
 int main(int argc, char** argv) {
   using namespace signalsim::app;
+  using signalsim::kExitBadInput;
   CLI::App app{"signalsim: Autoware's turn-signal decider and traffic-light judge on SUMO"};
   app.set_version_flag("--version", "signalsim 0.1.0");
   app.require_subcommand(1);

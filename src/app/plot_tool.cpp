@@ -4,7 +4,7 @@
 #include <cstdlib>
 #include <filesystem>
 
-#include "app/process_pool.hpp"
+#include "batch/process_pool.hpp"
 
 namespace signalsim::app {
 

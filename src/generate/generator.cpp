@@ -11,9 +11,9 @@
 #include "generate/number_text.hpp"
 #include "generate/output_dir.hpp"
 #include "scenario/countries.hpp"
-#include "scenario/expectations.hpp"
+#include "report/expectations.hpp"
 #include "scenario/input_error.hpp"
-#include "scenario/route_planning.hpp"
+#include "sim/route_planning.hpp"
 #include "sumo/sumo_session.hpp"
 
 namespace signalsim::generate {

@@ -9,7 +9,7 @@
 #include "generate/expectation_rules.hpp"
 #include "generate/sections.hpp"
 #include "generate/speed_profile.hpp"
-#include "scenario/route_planning.hpp"
+#include "sim/route_planning.hpp"
 #include "sumo/net_index.hpp"
 
 namespace signalsim::generate {

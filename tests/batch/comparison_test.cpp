@@ -5,11 +5,11 @@
 
 #include <functional>
 
-#include "app/comparison.hpp"
-#include "scenario/metrics.hpp"
-#include "scenario/sweep.hpp"
+#include "batch/comparison.hpp"
+#include "report/metrics.hpp"
+#include "batch/sweep.hpp"
 
-namespace signalsim::app {
+namespace signalsim {
 namespace {
 
 Lanelet lanelet(const std::string& lane, double s_start, double length, TurnDirection turn = TurnDirection::None,
@@ -213,4 +213,4 @@ TEST(Comparison, CsvAndScreen) {
 }
 
 }  // namespace
-}  // namespace signalsim::app
+}  // namespace signalsim

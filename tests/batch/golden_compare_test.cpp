@@ -1,9 +1,9 @@
 // signalsim check's event comparison: tolerance, moved/missing/extra events, JUnit XML.
 #include <gtest/gtest.h>
 
-#include "app/golden.hpp"
+#include "batch/golden.hpp"
 
-namespace signalsim::app {
+namespace signalsim {
 namespace {
 
 TimelineEvent ev(double t, double s, const std::string& from, const std::string& to,
@@ -70,4 +70,4 @@ TEST(GoldenCompare, JUnitXmlCountsAndEscapes) {
 }
 
 }  // namespace
-}  // namespace signalsim::app
+}  // namespace signalsim

@@ -3,7 +3,7 @@
 
 #include <functional>
 
-#include "scenario/metrics.hpp"
+#include "report/metrics.hpp"
 
 namespace signalsim {
 namespace {

@@ -1,8 +1,8 @@
 // results.csv: fixed columns around the metrics, a canonical metric order, quoting, reading back.
 #include <gtest/gtest.h>
 
-#include "scenario/metrics.hpp"
-#include "scenario/sweep.hpp"
+#include "report/metrics.hpp"
+#include "batch/sweep.hpp"
 #include "test_files.hpp"
 
 namespace signalsim {

@@ -1,7 +1,7 @@
 // The status of a finished run: a scenario without expectations did not "pass" - nothing was checked.
 #include <gtest/gtest.h>
 
-#include "scenario/outputs.hpp"
+#include "report/outputs.hpp"
 
 namespace signalsim {
 namespace {

@@ -2,7 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "scenario/input_error.hpp"
-#include "scenario/sweep.hpp"
+#include "batch/sweep.hpp"
 #include "test_files.hpp"
 
 namespace signalsim {

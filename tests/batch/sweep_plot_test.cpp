@@ -5,8 +5,8 @@
 #include <string>
 
 #include "scenario/input_error.hpp"
-#include "scenario/metrics.hpp"
-#include "scenario/sweep.hpp"
+#include "report/metrics.hpp"
+#include "batch/sweep.hpp"
 #include "test_files.hpp"
 
 namespace signalsim {

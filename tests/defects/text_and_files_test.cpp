@@ -9,7 +9,7 @@
 
 #include <gtest/gtest.h>
 
-#include "scenario/atomic_file.hpp"
+#include "report/atomic_file.hpp"
 #include "scenario/input_error.hpp"
 #include "scenario/utf8_text.hpp"
 #include "scenario/yaml_fields.hpp"

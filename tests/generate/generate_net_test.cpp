@@ -9,9 +9,9 @@
 
 #include "generate/net_graph.hpp"
 #include "generate/route_facts.hpp"
-#include "scenario/expectations.hpp"
+#include "report/expectations.hpp"
 #include "scenario/input_error.hpp"
-#include "scenario/route_planning.hpp"
+#include "sim/route_planning.hpp"
 #include "sumo/net_index.hpp"
 
 namespace signalsim::generate {

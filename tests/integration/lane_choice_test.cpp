@@ -12,13 +12,13 @@
 #include <string>
 #include <vector>
 
-#include "scenario/expectations.hpp"
-#include "scenario/metrics.hpp"
-#include "scenario/plan_watch.hpp"
-#include "scenario/route_planning.hpp"
+#include "report/expectations.hpp"
+#include "report/metrics.hpp"
+#include "sim/plan_watch.hpp"
+#include "sim/route_planning.hpp"
 #include "scenario/scenario.hpp"
-#include "scenario/session_setup.hpp"
-#include "scenario/step_loop.hpp"
+#include "sim/session_setup.hpp"
+#include "sim/step_loop.hpp"
 #include "sumo/net_index.hpp"
 #include "sumo/route_builder.hpp"
 #include "sumo/sumo_lane_choice.hpp"

@@ -8,12 +8,12 @@
 
 #include <nlohmann/json.hpp>
 
-#include "app/run_outputs.hpp"
-#include "scenario/expectations.hpp"
-#include "scenario/metrics.hpp"
-#include "scenario/outputs.hpp"
-#include "scenario/route_planning.hpp"
-#include "scenario/step_loop.hpp"
+#include "batch/run_outputs.hpp"
+#include "report/expectations.hpp"
+#include "report/metrics.hpp"
+#include "report/outputs.hpp"
+#include "sim/route_planning.hpp"
+#include "sim/step_loop.hpp"
 #include "sumo/net_index.hpp"
 
 namespace signalsim {
@@ -34,7 +34,7 @@ TEST_P(MetricsFromFiles, MatchTheRunsOwn) {
   fs::remove_all(dir);
   const auto results = evaluate_expectations(scenario, plan.map, record);
   write_run_outputs(dir.string(), scenario, plan, record, results, run_status(results));
-  const nlohmann::ordered_json from_files = app::metrics_from_run_dir(dir.string(), file, {});
+  const nlohmann::ordered_json from_files = metrics_from_run_dir(dir.string(), file, {});
   EXPECT_EQ(from_files.dump(1), own.dump(1));
   // The maneuver sections are there (not only the route's turns).
   bool maneuver = false;

@@ -14,11 +14,11 @@
 #include <string>
 #include <vector>
 
-#include "scenario/expectations.hpp"
+#include "report/expectations.hpp"
 #include "scenario/input_error.hpp"
-#include "scenario/route_planning.hpp"
+#include "sim/route_planning.hpp"
 #include "scenario/scenario.hpp"
-#include "scenario/step_loop.hpp"
+#include "sim/step_loop.hpp"
 #include "sumo/net_index.hpp"
 
 namespace signalsim {

@@ -6,9 +6,9 @@
 #include <algorithm>
 #include <string>
 
-#include "scenario/route_planning.hpp"
+#include "sim/route_planning.hpp"
 #include "scenario/scenario.hpp"
-#include "scenario/step_loop.hpp"
+#include "sim/step_loop.hpp"
 #include "sumo/net_index.hpp"
 
 namespace signalsim {

@@ -6,12 +6,12 @@
 
 #include <string>
 
-#include "scenario/expectations.hpp"
-#include "scenario/outputs.hpp"
-#include "scenario/route_planning.hpp"
+#include "report/expectations.hpp"
+#include "report/outputs.hpp"
+#include "sim/route_planning.hpp"
 #include "scenario/scenario.hpp"
-#include "scenario/step_loop.hpp"
-#include "scenario/stuck_watch.hpp"
+#include "sim/step_loop.hpp"
+#include "sim/stuck_watch.hpp"
 #include "sumo/net_index.hpp"
 #include "sumo/route_builder.hpp"
 

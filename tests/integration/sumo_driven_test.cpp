@@ -9,10 +9,10 @@
 #include <algorithm>
 #include <string>
 
-#include "scenario/metrics.hpp"
+#include "report/metrics.hpp"
 #include "scenario/scenario.hpp"
-#include "scenario/session_setup.hpp"
-#include "scenario/sumo_driven.hpp"
+#include "sim/session_setup.hpp"
+#include "sim/sumo_driven.hpp"
 #include "sumo/net_index.hpp"
 
 namespace signalsim {

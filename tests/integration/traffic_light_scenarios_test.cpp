@@ -10,8 +10,8 @@
 #include <string>
 
 #include "scenario/scenario.hpp"
-#include "scenario/route_planning.hpp"
-#include "scenario/step_loop.hpp"
+#include "sim/route_planning.hpp"
+#include "sim/step_loop.hpp"
 #include "sumo/net_index.hpp"
 #include "sumo/route_builder.hpp"
 

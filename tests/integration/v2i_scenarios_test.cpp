@@ -7,9 +7,9 @@
 #include <cmath>
 #include <string>
 
-#include "scenario/route_planning.hpp"
+#include "sim/route_planning.hpp"
 #include "scenario/scenario.hpp"
-#include "scenario/step_loop.hpp"
+#include "sim/step_loop.hpp"
 #include "sumo/net_index.hpp"
 
 namespace signalsim {

@@ -1,0 +1,72 @@
+// Runs many scenario runs in worker processes and keeps results.csv up to date (batch, sweep, check).
+//
+//   read OUT/results.csv when resuming: rows of finished runs (passed, failed, no_expectations) that
+//     match this batch are kept, error rows are dropped (run again); a row that does not match
+//     (another sweep) is an error
+//   for each remaining run (by index): worker `signalsim run SCENARIO --out OUT/runs/NNNN-name
+//     --quiet --set ...` (process_pool), at most `jobs` at a time, each with the wall-clock timeout
+//   a run whose scenario file did not load (RunSpec::load_error): an error row with the message, no worker
+//   as each worker ends: a row from its exit code and RUNDIR/summary.json (status passed, failed or
+//     no_expectations - a scenario without expectations, nothing checked, not a failure - expectations,
+//     "metrics"; computed from the run's files when summary.json has none), or an error row (exit
+//     code 2 with its stderr, a signal, a timeout, an unreadable summary);
+//     results.csv rewritten (tmp + rename, results_file.hpp: a failed rewrite on a full disk keeps
+//     the previous file and is tried again) with every finished row, ordered by run index
+//   progress: one updating line on a terminal, one plain line per finished run otherwise
+//   Ctrl-C: start nothing more, stop the workers, keep every finished row; exit code 130
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "report/exit_codes.hpp"
+#include "batch/sweep.hpp"
+
+namespace signalsim {
+
+struct BatchSettings {
+  std::string out_dir;              ///< results.csv and runs/ go here
+  int jobs = 1;                     ///< worker processes at a time
+  double timeout = 300.0;           ///< [s] per run, wall clock
+  bool resume = false;              ///< keep finished rows of an earlier results.csv
+  bool quiet = false;               ///< no progress output
+  std::vector<std::string> swept;   ///< swept keys (results.csv columns after "file")
+};
+
+struct BatchResult {
+  ResultRows rows;                  ///< every finished row (kept and new), by run index
+  std::size_t total = 0;            ///< runs in the batch
+  std::size_t passed = 0, failed = 0, errors = 0;  ///< over all rows
+  std::size_t no_expectations = 0;  ///< rows of scenarios without expectations (not failures)
+  std::size_t skipped = 0;          ///< rows kept from an earlier results.csv
+  bool interrupted = false;
+  std::string results_error;        ///< results.csv could not be written at the end (the rows went to stdout)
+  double wall = 0.0;                ///< [s]
+  /// 130 interrupted, 4 a run errored (it has no verdict) or results.csv could not be written, 1 a run
+  /// failed an expectation, else 0.
+  int exit_code() const;
+};
+
+/// True for the statuses of a run that finished (passed, failed, no_expectations): --resume keeps
+/// such rows; anything else ("error") is run again.
+bool is_finished_status(const std::string& status);
+
+/// Default number of worker processes: the number of cores.
+int default_jobs();
+
+/// Runs the batch; see the file comment. Throws InputError when --resume meets a results.csv of
+/// another batch, std::runtime_error when the output directory cannot be written.
+BatchResult run_batch(const std::vector<RunSpec>& runs, const BatchSettings& settings);
+
+/// A worker's stderr as one line: "signalsim: " prefixes dropped, lines joined with " / ", at most
+/// about 600 characters.
+std::string stderr_one_line(const std::string& text);
+
+/// OUT/results.csv
+std::string results_path(const std::string& out_dir);
+
+/// One line: "18 runs: 15 passed, 1 failed, 1 without expectations, 1 error in 3.2 s; results:
+/// out/x/results.csv".
+std::string batch_summary(const BatchResult& result, const std::string& out_dir);
+
+}  // namespace signalsim

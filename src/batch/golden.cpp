@@ -1,0 +1,157 @@
+#include "batch/golden.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+namespace signalsim {
+namespace {
+
+constexpr double kEpsilon = 1e-6;  // the files hold 3 decimals
+
+bool same_key(const TimelineEvent& a, const TimelineEvent& b) {
+  return a.kind == b.kind && a.from == b.from && a.to == b.to && a.source == b.source;
+}
+
+std::string format(const char* fmt, auto... args) {
+  char buf[512];
+  std::snprintf(buf, sizeof buf, fmt, args...);
+  return buf;
+}
+
+std::string describe(const TimelineEvent& e) {
+  return format("%9.3f s %9.3f m  %s %s -> %s (%s)", e.time, e.s_front, e.kind.c_str(), e.from.c_str(), e.to.c_str(),
+                e.source.c_str());
+}
+
+std::string xml_escape(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      case '\'': out += "&apos;"; break;
+      default:
+        if (static_cast<unsigned char>(c) < 0x20 && c != '\n' && c != '\t' && c != '\r') out += ' ';
+        else out += c;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<EventDiff> compare_events(const std::vector<TimelineEvent>& golden, const std::vector<TimelineEvent>& run,
+                                      double tol_s, double tol_t) {
+  const std::size_t n = golden.size(), m = run.size();
+  constexpr int kInf = std::numeric_limits<int>::max() / 2;
+  // cost[i][j]: fewest differences aligning golden[0, i) with run[0, j).
+  std::vector<std::vector<int>> cost(n + 1, std::vector<int>(m + 1, kInf));
+  auto pair_cost = [&](std::size_t i, std::size_t j) {
+    if (!same_key(golden[i], run[j])) return kInf;
+    const bool within = std::abs(golden[i].s_front - run[j].s_front) <= tol_s + kEpsilon &&
+                        std::abs(golden[i].time - run[j].time) <= tol_t + kEpsilon;
+    return within ? 0 : 1;
+  };
+  cost[0][0] = 0;
+  for (std::size_t i = 0; i <= n; ++i)
+    for (std::size_t j = 0; j <= m; ++j) {
+      int& c = cost[i][j];
+      if (i > 0) c = std::min(c, cost[i - 1][j] + 1);
+      if (j > 0) c = std::min(c, cost[i][j - 1] + 1);
+      if (i > 0 && j > 0) {
+        const int p = pair_cost(i - 1, j - 1);
+        if (p < kInf) c = std::min(c, cost[i - 1][j - 1] + p);
+      }
+    }
+  // Walk back, preferring pairs, then missing golden events, then extra run events.
+  std::vector<EventDiff> out;
+  std::size_t i = n, j = m;
+  while (i > 0 || j > 0) {
+    if (i > 0 && j > 0) {
+      const int p = pair_cost(i - 1, j - 1);
+      if (p < kInf && cost[i][j] == cost[i - 1][j - 1] + p) {
+        out.push_back({p == 0 ? EventDiff::Op::Same : EventDiff::Op::Moved, golden[i - 1], run[j - 1]});
+        --i, --j;
+        continue;
+      }
+    }
+    if (i > 0 && cost[i][j] == cost[i - 1][j] + 1) {
+      out.push_back({EventDiff::Op::Missing, golden[i - 1], std::nullopt});
+      --i;
+      continue;
+    }
+    out.push_back({EventDiff::Op::Extra, std::nullopt, run[j - 1]});
+    --j;
+  }
+  std::reverse(out.begin(), out.end());
+  return out;
+}
+
+std::size_t count_differences(const std::vector<EventDiff>& diff) {
+  return static_cast<std::size_t>(
+      std::count_if(diff.begin(), diff.end(), [](const EventDiff& d) { return d.op != EventDiff::Op::Same; }));
+}
+
+std::string format_diff(const std::vector<EventDiff>& diff, const std::string& indent) {
+  std::string out;
+  for (const EventDiff& d : diff) {
+    switch (d.op) {
+      case EventDiff::Op::Same:
+        out += indent + "=  " + describe(*d.run) + "\n";
+        break;
+      case EventDiff::Op::Moved:
+        out += indent + "~  " + describe(*d.run) +
+               format("   golden %.3f s %.3f m: ds %+.3f m, dt %+.3f s\n", d.golden->time, d.golden->s_front,
+                      d.run->s_front - d.golden->s_front, d.run->time - d.golden->time);
+        break;
+      case EventDiff::Op::Missing:
+        out += indent + "-  " + describe(*d.golden) + "   missing in this run\n";
+        break;
+      case EventDiff::Op::Extra:
+        out += indent + "+  " + describe(*d.run) + "   not in the golden file\n";
+        break;
+    }
+  }
+  if (diff.empty()) out += indent + "(no events on either side)\n";
+  return out;
+}
+
+std::string junit_xml(const std::string& suite, const std::vector<JUnitCase>& cases, double time) {
+  std::size_t failures = 0, errors = 0, skipped = 0;
+  for (const JUnitCase& c : cases) {
+    failures += c.result == JUnitCase::Result::Failed;
+    errors += c.result == JUnitCase::Result::Error;
+    skipped += c.result == JUnitCase::Result::Skipped;
+  }
+  std::string head = format(R"(tests="%zu" failures="%zu" errors="%zu" skipped="%zu" time="%.3f")", cases.size(),
+                            failures, errors, skipped, time);
+  std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+  out += "<testsuites name=\"" + xml_escape(suite) + "\" " + head + ">\n";
+  out += "  <testsuite name=\"" + xml_escape(suite) + "\" " + head + ">\n";
+  for (const JUnitCase& c : cases) {
+    out += "    <testcase classname=\"" + xml_escape(suite) + "\" name=\"" + xml_escape(c.name) + "\" file=\"" +
+           xml_escape(c.file) + "\"" + format(" time=\"%.3f\"", c.time);
+    if (c.result == JUnitCase::Result::Passed && c.system_out.empty()) {
+      out += "/>\n";
+      continue;
+    }
+    out += ">\n";
+    if (c.result != JUnitCase::Result::Passed) {
+      const char* tag = c.result == JUnitCase::Result::Failed  ? "failure"
+                        : c.result == JUnitCase::Result::Error ? "error"
+                                                               : "skipped";
+      out += "      <" + std::string(tag) + " message=\"" + xml_escape(c.message) + "\"";
+      out += c.details.empty() ? "/>\n" : ">" + xml_escape(c.details) + "</" + tag + ">\n";
+    }
+    if (!c.system_out.empty()) out += "      <system-out>" + xml_escape(c.system_out) + "</system-out>\n";
+    out += "    </testcase>\n";
+  }
+  out += "  </testsuite>\n</testsuites>\n";
+  return out;
+}
+
+}  // namespace signalsim

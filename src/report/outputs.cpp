@@ -1,0 +1,340 @@
+#include "report/outputs.hpp"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
+
+#include "report/atomic_file.hpp"
+#include "report/metrics.hpp"
+#include "scenario/take_over.hpp"
+#include "sumo/sumo_session.hpp"
+
+namespace signalsim {
+namespace fs = std::filesystem;
+namespace {
+
+void write_atomically(const std::string& path, const std::string& content) { write_file_atomically(path, content); }
+
+// Input text is checked to be UTF-8 when it is loaded; anything else that reaches a summary (a net's
+// ids, SUMO's messages) is written with U+FFFD in place of a bad byte rather than losing the run.
+std::string json_text(const nlohmann::ordered_json& summary) {
+  return summary.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
+}
+
+nlohmann::ordered_json parameters_json(const ParameterSet& set) {
+  nlohmann::ordered_json out = nlohmann::ordered_json::object();
+  for (const ParameterSpec& spec : parameter_schema()) {
+    std::visit([&](const auto& v) { out[spec.name] = v; }, set.values().at(spec.name));
+  }
+  return out;
+}
+
+// Every parameter's value and where it came from ("default", "<file>:<line>", "country jp", "set",
+// "--set"), with its Autoware place when that differs from its name.
+nlohmann::ordered_json parameter_sources_json(const ParameterSet& set) {
+  nlohmann::ordered_json out = nlohmann::ordered_json::object();
+  for (const ParameterSpec& spec : parameter_schema()) {
+    nlohmann::ordered_json entry;
+    std::visit([&](const auto& v) { entry["value"] = v; }, set.values().at(spec.name));
+    entry["from"] = set.origin(spec.name);
+    if (!spec.autoware_key.empty()) entry["autoware_key"] = spec.autoware_key;
+    out[spec.name] = entry;
+  }
+  return out;
+}
+
+// The parameter files with keys signalsim does not use, and those keys.
+nlohmann::ordered_json parameter_files_json(const ParameterSet& set) {
+  nlohmann::ordered_json out = nlohmann::ordered_json::array();
+  for (const UnusedParameters& file : set.unused()) out.push_back({{"file", file.file}, {"unused_keys", file.keys}});
+  return out;
+}
+
+// Which SUMO ran with which files and options, and what it said (counted from its log).
+nlohmann::ordered_json sumo_json(const Scenario& scenario, const RunSumoInfo& info) {
+  nlohmann::ordered_json out;
+  out["backend"] = std::string(sumo::to_string(info.backend));
+  if (!info.endpoint.empty()) out["endpoint"] = info.endpoint;
+  out["sumocfg"] = scenario.sumo.sumocfg;
+  out["route_files"] = scenario.sumo.route_files;
+  out["additional"] = scenario.additional;
+  // Paths in the run's own directory are written relative to it: the summary is the same whatever
+  // --out (a batch's run folder or a run of its own).
+  nlohmann::ordered_json options = nlohmann::ordered_json::array();
+  const std::string prefix = info.out_dir.empty() ? std::string() : fs::path(info.out_dir).lexically_normal().string() + "/";
+  for (const std::string& a : info.args)
+    options.push_back(!prefix.empty() && a.rfind(prefix, 0) == 0 ? a.substr(prefix.size()) : a);
+  out["options"] = options;
+  if (!info.server_options.empty()) {
+    nlohmann::ordered_json server = nlohmann::ordered_json::object();
+    for (const auto& [name, value] : info.server_options) server[name] = value;
+    out["server_options"] = server;
+  }
+  if (!info.notes.empty()) out["notes"] = info.notes;
+  if (!scenario.sumo.sumocfg.empty())
+    out["sumocfg_used"] = {{"used", scenario.sumo.cfg_used},
+                           {"replaced_by_scenario", scenario.sumo.cfg_overridden},
+                           {"ignored", scenario.sumo.cfg_ignored}};
+  out["log"] = info.log.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(fs::path(info.log).filename().string());
+  if (info.log_counts.read)
+    out["messages"] = {{"warnings", info.log_counts.warnings},
+                       {"errors", info.log_counts.errors},
+                       {"teleports", info.log_counts.teleports},
+                       {"emergency_braking", info.log_counts.emergency_braking},
+                       {"collisions", info.log_counts.collisions}};
+  return out;
+}
+
+}  // namespace
+
+std::string fixed(double v, int decimals) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  std::string s = buf;
+  if (s == "-0.000" || s == "-0.00" || s == "-0.0") s.erase(0, 1);  // deterministic zero
+  return s;
+}
+
+std::string_view to_string(RunStatus status) {
+  switch (status) {
+    case RunStatus::Passed: return "passed";
+    case RunStatus::Failed: return "failed";
+    case RunStatus::NoExpectations: return "no_expectations";
+    case RunStatus::Error: break;
+  }
+  return "error";
+}
+
+
+RunStatus run_status(const std::vector<ExpectationResult>& results) {
+  if (results.empty()) return RunStatus::NoExpectations;
+  for (const ExpectationResult& r : results)
+    if (!r.passed) return RunStatus::Failed;
+  return RunStatus::Passed;
+}
+
+void write_timeline_csv(const std::string& path, const std::vector<TimelineRow>& rows, bool v2i_column) {
+  std::string out =
+      "time,s_front,x,y,speed,accel,edge,lane,lateral_offset,blinker,blinker_source,sumo_signals,"
+      "tl_id,tl_state,tl_observed,tl_decision,stop_distance,judge_distance,yellow_lamp_line,zone,stop_s,"
+      "stop_level,planned_offset";
+  out += v2i_column ? ",v2i_time_to_red\n" : "\n";
+  out.reserve(rows.size() * 120);
+  for (const TimelineRow& r : rows) {
+    out += fixed(r.time, 3) + ',' + fixed(r.s_front, 3) + ',' + fixed(r.x, 3) + ',' + fixed(r.y, 3) + ',' +
+           fixed(r.speed, 3) + ',' + fixed(r.accel, 3) + ',' + r.edge + ',' + r.lane + ',' +
+           fixed(r.lateral_offset, 3) + ',' + std::string(to_string(r.blinker)) + ',' +
+           std::string(to_string(r.blinker_source)) + ',' +
+           (r.sumo_signals >= 0 ? std::to_string(r.sumo_signals) : std::string()) + ',' + r.tl_id + ',' +
+           (r.tl_state ? std::string(1, r.tl_state) : std::string()) + ',' + r.tl_observed + ',' +
+           (r.tl_id.empty() ? std::string() : std::string(to_string(r.tl_decision))) + ',' +
+           (r.stop_distance ? fixed(*r.stop_distance, 3) : std::string()) + ',' +
+           (r.stop_distance ? fixed(r.judge_distance, 3) : std::string()) + ',' +
+           (r.stop_distance ? fixed(r.yellow_lamp_line, 3) : std::string()) + ',' +
+           (r.zone == JudgeZone::None ? std::string() : std::string(to_string(r.zone))) + ',' +
+           (r.stop_s ? fixed(*r.stop_s, 3) : std::string()) + ',' +
+           (r.stop_level ? std::string(to_string(*r.stop_level)) : std::string()) + ',' +
+           (r.planned_offset ? fixed(*r.planned_offset, 3) : std::string());
+    if (v2i_column) out += ',' + (r.v2i_time_to_red ? fixed(*r.v2i_time_to_red, 3) : std::string());
+    out += '\n';
+  }
+  write_atomically(path, out);
+}
+
+void write_events_csv(const std::string& path, const std::vector<TimelineEvent>& events) {
+  std::string out = "time,s_front,kind,from,to,source\n";
+  for (const TimelineEvent& e : events)
+    out += fixed(e.time, 3) + ',' + fixed(e.s_front, 3) + ',' + e.kind + ',' + e.from + ',' + e.to + ',' +
+           e.source + '\n';
+  write_atomically(path, out);
+}
+
+void write_run_outputs(const std::string& dir, const Scenario& scenario, const sumo::RoutePlan& plan,
+                       const RunRecord& record, const std::vector<ExpectationResult>& results,
+                       RunStatus status) {
+  fs::create_directories(dir);
+  fs::remove(fs::path(dir) / "summary.json");  // a stale summary must never describe new files
+  write_timeline_csv((fs::path(dir) / "timeline.csv").string(), record.rows, record.v2i);
+  write_events_csv((fs::path(dir) / "events.csv").string(), record.events);
+
+  nlohmann::ordered_json summary;
+  summary["scenario"] = scenario.name;
+  summary["file"] = scenario.path;
+  summary["net"] = scenario.net;
+  summary["status"] = to_string(status);
+  summary["driver"] = to_string(record.driver);
+  summary["seed"] = scenario.seed;
+  summary["step_length"] = scenario.step_length;
+  summary["duration"] = scenario.duration;
+  const sumo::EgoVehicle& departed = record.sumo.ego;
+  nlohmann::ordered_json ego;
+  ego["id"] = departed.id.empty() ? std::string(sumo::kDefaultEgoId) : departed.id;
+  ego["taken_over"] = !scenario.ego.id.empty();
+  ego["type"] = departed.type;
+  ego["length"] = std::stod(fixed(scenario.ego.length, 3));
+  ego["width"] = departed.width;
+  ego["base_link_to_front"] = std::stod(fixed(scenario.ego.base_link_to_front, 3));
+  ego["base_link_to_rear"] = std::stod(fixed(scenario.ego.length - scenario.ego.base_link_to_front, 3));
+  if (!scenario.ego.vehicle_info.empty()) {
+    ego["vehicle_info"] = scenario.ego.vehicle_info;
+    ego["vehicle_info_unused_keys"] = scenario.ego.vehicle_info_unused;
+  }
+  ego["max_speed"] = scenario.ego.max_speed;
+  ego["accel"] = scenario.ego.accel;
+  ego["decel"] = scenario.ego.decel;
+  ego["type_decel"] = departed.decel;
+  ego["emergency_decel"] = scenario.ego.emergency_decel;
+  ego["depart_time"] = std::stod(fixed(departed.depart_time, 3));
+  ego["depart_lane"] = departed.depart_lane;
+  ego["depart_pos"] = std::stod(fixed(departed.depart_pos, 3));
+  ego["depart_speed"] = std::stod(fixed(departed.depart_speed, 3));
+  ego["source"] = ego_sources(scenario, departed.type);
+  summary["ego"] = ego;
+  summary["route"] = {{"edges", scenario.ego.route},
+                      {"lanelets", plan.map.size()},
+                      {"length", std::stod(fixed(plan.map.length(), 3))},
+                      {"lane_changes", plan.lane_changes}};
+  nlohmann::ordered_json counts;
+  counts["steps"] = record.rows.size();
+  counts["simulated_time"] = record.rows.empty() ? 0.0 : std::stod(fixed(record.rows.back().time, 3));
+  counts["arrived"] = record.arrived;
+  counts["collisions"] = record.collisions;
+  counts["off_route_steps"] = record.off_route_steps;
+  int off_plan_steps = 0;
+  for (const OffPlanStretch& o : record.off_plan) off_plan_steps += o.steps;
+  counts["off_plan_steps"] = off_plan_steps;
+  std::size_t blinker_events = 0, light_events = 0;
+  for (const TimelineEvent& e : record.events) {
+    blinker_events += e.kind == "blinker";
+    light_events += e.kind == "light";
+  }
+  counts["blinker_events"] = blinker_events;
+  counts["light_events"] = light_events;
+  std::size_t left = 0, right = 0, hazard = 0, mismatches = 0;
+  for (const TimelineRow& r : record.rows) {
+    left += r.blinker == Blinker::Left;
+    right += r.blinker == Blinker::Right;
+    hazard += r.blinker == Blinker::Hazard;
+    if (r.sumo_signals >= 0) {
+      mismatches += (r.sumo_signals & sumo::kBlinkerMask) != signal_mask(r.blinker);
+    }
+  }
+  counts["steps_left"] = left;
+  counts["steps_right"] = right;
+  counts["steps_hazard"] = hazard;
+  counts["sumo_signal_mismatches"] = mismatches;
+  summary["counts"] = counts;
+  // Why the ego did not arrive (scenario/stuck_watch), null when it did.
+  nlohmann::ordered_json not_arrived = nullptr;
+  if (const auto& n = record.not_arrived) {
+    nlohmann::ordered_json leader = nullptr;
+    if (n->leader) leader = {{"id", n->leader->id}, {"gap", std::stod(fixed(n->leader->gap, 3))}};
+    not_arrived = {{"reason", n->reason},
+                   {"detail", n->detail},
+                   {"time", std::stod(fixed(n->time, 3))},
+                   {"s_front", std::stod(fixed(n->s_front, 3))},
+                   {"edge", n->edge},
+                   {"lane", n->lane},
+                   {"at_rest_for", std::stod(fixed(n->at_rest_for, 3))},
+                   {"held_by", n->held_by},
+                   {"leader", leader},
+                   {"junction", n->junction}};
+  }
+  summary["not_arrived"] = not_arrived;
+  {  // where SUMO left the lane plan (its own lane changes; with signalsim, another connection)
+    nlohmann::ordered_json off_plan = nlohmann::ordered_json::array();
+    for (const OffPlanStretch& o : record.off_plan)
+      off_plan.push_back({{"lane", o.lane}, {"planned_lane", o.planned_lane}, {"s_from", std::stod(fixed(o.s_from, 3))},
+                          {"s_to", std::stod(fixed(o.s_to, 3))}, {"steps", o.steps}});
+    summary["off_plan"] = off_plan;
+  }
+  nlohmann::ordered_json lights;
+  nlohmann::ordered_json stops = nlohmann::ordered_json::array();
+  for (const LightStop& stop : record.stops)
+    stops.push_back({{"light", stop.tl_id}, {"time", std::stod(fixed(stop.time, 3))},
+                     {"stop_s", std::stod(fixed(stop.stop_s, 3))}, {"rest_s", std::stod(fixed(stop.rest_s, 3))},
+                     {"error", std::stod(fixed(stop.error, 3))},
+                     {"decision", stop.by_judge ? nlohmann::ordered_json(to_string(stop.decision)) : nullptr},
+                     {"level", stop.by_judge ? nlohmann::ordered_json(to_string(stop.worst_level)) : nullptr},
+                     {"queued_behind", stop.queued_behind.empty() ? nlohmann::ordered_json(nullptr)
+                                                                  : nlohmann::ordered_json(stop.queued_behind)},
+                     {"waiting_at", stop.waiting_at.empty() ? nlohmann::ordered_json(nullptr)
+                                                            : nlohmann::ordered_json(stop.waiting_at)}});
+  lights["stops"] = stops;
+  nlohmann::ordered_json violations = nlohmann::ordered_json::array();
+  for (const RedLightViolation& v : record.red_violations)
+    violations.push_back({{"light", v.tl_id}, {"time", std::stod(fixed(v.time, 3))},
+                          {"s_front", std::stod(fixed(v.s_front, 3))}});
+  lights["red_light_violations"] = violations;
+  std::size_t emergency = 0;
+  for (const TimelineEvent& e : record.events) emergency += e.kind == "light" && e.to == "emergency_stop";
+  lights["emergency_stops"] = emergency;
+  if (record.v2i) {  // spec TLJ §1.7; only with V2I on, so every other summary stays as it was
+    std::size_t stop_steps = 0;
+    const TimelineRow* first = nullptr;
+    for (const TimelineRow& row : record.rows)
+      if (row.v2i_stop) {
+        ++stop_steps;
+        if (!first) first = &row;
+      }
+    nlohmann::ordered_json first_stop = nullptr;
+    if (first)
+      first_stop = {{"light", first->tl_id}, {"time", std::stod(fixed(first->time, 3))},
+                    {"s_front", std::stod(fixed(first->s_front, 3))},
+                    {"light_state", first->tl_state ? std::string(1, first->tl_state) : std::string()},
+                    {"time_to_red", first->v2i_time_to_red ? nlohmann::ordered_json(std::stod(fixed(*first->v2i_time_to_red, 3)))
+                                                           : nlohmann::ordered_json(nullptr)},
+                    {"stop_distance", first->stop_distance ? nlohmann::ordered_json(std::stod(fixed(*first->stop_distance, 3)))
+                                                           : nlohmann::ordered_json(nullptr)}};
+    lights["v2i"] = {{"stop_steps", stop_steps}, {"first_stop", first_stop}};
+  }
+  summary["lights"] = lights;
+  // Each lane change as executed (spec TSD §8.2): blinker, approval, prepare, lateral motion.
+  nlohmann::ordered_json lane_changes = nlohmann::ordered_json::array();
+  const auto rounded = [](const std::optional<double>& v) -> nlohmann::ordered_json {
+    return v ? nlohmann::ordered_json(std::stod(fixed(*v, 3))) : nlohmann::ordered_json(nullptr);
+  };
+  for (const LaneChangeRecord& lc : record.lane_changes)
+    lane_changes.push_back({{"edge", lc.edge},
+                            {"phase", lc.phase},
+                            {"shift", std::stod(fixed(lc.shift, 3))},
+                            {"blinker_on_time", rounded(lc.blinker_on_time)},
+                            {"approval_time", rounded(lc.approval_time)},
+                            {"approval_s_base", rounded(lc.approval_s_base)},
+                            {"prepare_duration", rounded(lc.prepare_duration)},
+                            {"lateral_start_s", rounded(lc.start)},
+                            {"lateral_end_s", rounded(lc.end)}});
+  summary["lane_changes"] = lane_changes;
+  summary["metrics"] = metrics_json(scenario, plan.map, record);
+  nlohmann::ordered_json expectations = nlohmann::ordered_json::array();
+  for (const ExpectationResult& r : results)
+    expectations.push_back({{"expectation", r.description}, {"passed", r.passed}, {"detail", r.detail}});
+  summary["expectations"] = expectations;
+  summary["parameters"] = parameters_json(scenario.params);
+  summary["parameter_sources"] = parameter_sources_json(scenario.params);
+  summary["parameter_files"] = parameter_files_json(scenario.params);
+  summary["sumo"] = sumo_json(scenario, record.sumo);
+  write_atomically((fs::path(dir) / "summary.json").string(), json_text(summary));
+}
+
+void clear_run_outputs(const std::string& dir) {
+  fs::create_directories(dir);
+  for (const char* name : {"summary.json", "timeline.csv", "events.csv", "gui.png"}) fs::remove(fs::path(dir) / name);
+}
+
+void write_error_summary(const std::string& dir, const Scenario* scenario, const std::string& message,
+                         const std::string& status) {
+  fs::create_directories(dir);
+  for (const char* name : {"summary.json", "timeline.csv", "events.csv", "gui.png"}) fs::remove(fs::path(dir) / name);
+  nlohmann::ordered_json summary;
+  summary["scenario"] = scenario ? scenario->name : "";
+  summary["file"] = scenario ? scenario->path : "";
+  summary["status"] = status;
+  summary["error"] = message;
+  write_atomically((fs::path(dir) / "summary.json").string(), json_text(summary));
+}
+
+}  // namespace signalsim

@@ -1,0 +1,95 @@
+// The behaviour stage of the step loop (spec TSD §8): every step it builds the inputs of the four
+// behaviour modules from the scenario's lateral plan and the ego, runs them in Autoware's order
+// (merge_behavior_requests), and moves each lane change through its phases (pending, waiting for
+// approval, running, done; planning/lane_change_execution.hpp). It also says where the ego must be
+// sideways: the planned offset of the maneuver on the ego's edge.
+//
+// When each module runs (as Autoware would run it):
+// - lane change: the first lane change not yet done whose earliest start lies within the module
+//   path (forward_path_length ahead of base_link), until base_link passes its lateral motion's end;
+//   the module is reset after each lane change, so the next one starts afresh;
+// - avoidance: once its whole plan lies within the module path (Autoware registers shift lines only
+//   for objects within the path), until its last line is behind base_link;
+// - start planner (pull out): from departure until base_link passes the pull-out end;
+// - goal planner (pull over): once the pull-over goal lies within the module path.
+// No SUMO here: the target lane's traffic is handed in by the caller.
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "planning/lane_change_execution.hpp"
+#include "sim/route_planning.hpp"
+#include "report/timeline.hpp"
+#include "turn_signal/behavior_modules.hpp"
+
+namespace signalsim {
+
+struct BehaviorStageConfig {
+  double path_forward = 300.0;   ///< [m] module path ahead of base_link (forward_path_length)
+  double route_length = 0.0;     ///< [m]
+  double vehicle_length = 4.5;   ///< [m]
+  double max_speed = 13.89;      ///< [m/s] the ego's (the lane change's prepare segment)
+  LaneChangeGaps gaps;           ///< the lane-change approval's target-lane margins
+};
+
+class BehaviorStage {
+ public:
+  BehaviorStage(LateralPlan plan, const BehaviorSignalParameters& params, const BehaviorStageConfig& config);
+
+  struct Observation {
+    double now = 0.0;
+    EgoOnRoute ego;
+    double accel = 0.0;     ///< [m/s^2] measured
+    bool backing = false;   ///< emulated backward driving (pull out): not driving forward
+    bool departed = false;  ///< the ego has moved (start planner has_departed)
+    const LateralSegment* segment = nullptr;  ///< plan().on_edge(the ego's edge)
+    double lateral_offset = 0.0;  ///< measured from segment->reference_lane's centre [m]
+  };
+  /// The other vehicles on a lane change's target lane (segment.reference_lane), in route s.
+  using TargetLaneTraffic = std::function<std::vector<OccupiedSpan>(const LateralSegment&)>;
+
+  struct Transition {
+    std::string edge;  ///< the lane change's edge
+    LaneChangePhase from = LaneChangePhase::Pending;
+    LaneChangePhase to = LaneChangePhase::Pending;
+  };
+  struct Result {
+    TurnSignalInfo behavior;               ///< the merged request for the decider
+    std::vector<Transition> transitions;   ///< lane-change phase changes this step
+    std::optional<double> hold_distance;   ///< [m] base_link must come to rest within this (a lane change not yet approved)
+  };
+
+  /// One step. `traffic` is asked only while a lane change waits for approval.
+  Result step(const Observation& observation, const TargetLaneTraffic& traffic);
+
+  /// The offset `seg` plans for base_link at s (left positive, from its reference lane's centre).
+  /// Backing up: the pull out's road-side offset. A lane change not yet approved: its original lane.
+  double planned_offset(const LateralSegment& seg, double s, bool backing) const;
+
+  const LateralPlan& plan() const { return plan_; }
+
+  /// Every lane change of the plan as executed so far, in route order.
+  std::vector<LaneChangeRecord> lane_change_records() const;
+
+ private:
+  const LaneChangeExecution* execution_of(const LateralSegment& seg) const;
+
+  LateralPlan plan_;
+  BehaviorSignalParameters params_;
+  BehaviorStageConfig config_;
+  BehaviorModules modules_;
+  std::vector<LaneChangeExecution> executions_;  ///< one per segment (used by lane changes only)
+};
+
+/// The lateral motions the metrics measure, ordered by start: each lane change's executed line
+/// (`executed` matched by edge; none for a lane change recorded without one, i.e. never approved; the
+/// nominal line from the earliest start for a lane change `executed` does not list), and each
+/// shift line of an avoidance, pull out or pull over moving at least `min_shift` metres sideways
+/// (turn_signal_shift_length_threshold: smaller shifts never ask for a blinker, spec TSD §8.1).
+std::vector<ManeuverLine> maneuver_lines(const LateralPlan& plan, const std::vector<LaneChangeRecord>& executed,
+                                         double min_shift);
+
+}  // namespace signalsim

@@ -1,0 +1,114 @@
+#include "sim/light_stage.hpp"
+
+namespace signalsim {
+namespace {
+
+constexpr double kDeadLine = -2.0;  // [m] spec TLJ §1.2 step 3.1: past this the light is behind
+
+// Each light's perception draws from its own seeded streams, so a capture of one light is never
+// delivered for another and adding a light does not change the draws of the others.
+PerceptionModelParameters perception_for(PerceptionModelParameters p, std::size_t index) {
+  p.seed ^= 0x9E3779B97F4A7C15ULL * (index + 1);
+  return p;
+}
+
+// Each light's V2I channel has its own stream too (a message of one light never reaches another).
+V2iChannelParameters channel_for(V2iChannelParameters p, std::size_t index) {
+  p.seed ^= 0x9E3779B97F4A7C15ULL * (index + 1);
+  return p;
+}
+
+}  // namespace
+
+std::vector<SignalPrediction> v2i_predictions(const std::vector<sumo::LightProgram>& programs,
+                                              const sumo::LightTiming& timing, const sumo::ApproachLight& light) {
+  std::vector<SignalPrediction> out;
+  const sumo::LightProgram* program = sumo::find_program(programs, timing.program);
+  if (!program) return out;
+  for (const sumo::PhasePrediction& phase : sumo::predict_phases(*program, timing.phase, timing.next_switch))
+    if (auto elements = sumo::signal_elements(phase.state, light)) out.push_back({phase.stamp, std::move(*elements)});
+  return out;
+}
+
+TrafficLightStage::TrafficLightStage(std::vector<sumo::ApproachLight> lights, const TrafficLightJudgeParameters& judge,
+                                     const PerceptionModelParameters& perception, double horizon, V2iSource v2i)
+    : judge_params_(judge), horizon_(horizon), v2i_(std::move(v2i)) {
+  for (std::size_t i = 0; i < lights.size(); ++i) {
+    lights_.push_back({std::move(lights[i]), PerceptionModel(perception_for(perception, i)), std::nullopt, false,
+                       std::nullopt, std::nullopt});
+    // The channel counts a message while the judge would count a camera result (tl_state_timeout).
+    if (judge_params_.v2i.use_remaining_time) {
+      V2iChannelParameters channel = channel_for(v2i_.channel, i);
+      channel.max_age = judge_params_.tl_state_timeout;
+      lights_.back().v2i.emplace(channel);
+    }
+  }
+}
+
+const sumo::ApproachLight* TrafficLightStage::next_light() const {
+  for (std::size_t i = first_; i < lights_.size(); ++i)
+    if (!lights_[i].dropped) return &lights_[i].light;
+  return nullptr;
+}
+
+std::vector<LightStep> TrafficLightStage::step(double now, double s_front, double speed, double accel,
+                                               const std::function<std::string(const std::string&)>& state_of) {
+  std::vector<LightStep> out;
+  for (std::size_t i = first_; i < lights_.size(); ++i) {
+    Tracked& t = lights_[i];
+    if (t.dropped) continue;
+    const double front_to_line = t.light.s_stop_line - s_front;
+    if (front_to_line > horizon_) break;  // route order: the rest are further ahead
+    LightStep step;
+    step.light = &t.light;
+    step.front_to_stop_line = front_to_line;
+    const std::string state = state_of(t.light.tls_id);
+    step.own_state = t.light.link_index >= 0 && static_cast<std::size_t>(t.light.link_index) < state.size()
+                         ? state[static_cast<std::size_t>(t.light.link_index)]
+                         : '?';
+    // spec SUMO §3: an 'o'/'O' link is not regulating: no judge, SUMO's right of way applies.
+    if (const auto truth = sumo::signal_elements(state, t.light)) {
+      const auto observation = t.perception.observe(*truth, front_to_line, now);
+      if (observation) step.observed = sumo::describe_elements(observation->elements);
+      if (!t.judge) t.judge.emplace(judge_params_);
+      TrafficLightJudgeInput in;
+      in.now = now;
+      in.distance_to_stop_point = distance_to_stop_point(front_to_line, judge_params_.stop_margin);
+      in.velocity = speed;
+      in.acceleration = accel;
+      in.observation = observation;
+      in.is_vehicle_stopped = is_vehicle_stopped(speed);
+      in.turn_direction = sumo::judge_turn_direction(t.light.direction);
+      in.is_turn_lane = t.light.direction == TurnDirection::Left || t.light.direction == TurnDirection::Right;
+      in.has_static_arrow = t.light.has_arrow;
+      if (t.v2i) {  // spec TLJ §1.7: the program once, the timing every step
+        if (!t.programs) t.programs = v2i_.programs_of(t.light.tls_id);
+        in.predictions = t.v2i->step(v2i_predictions(*t.programs, v2i_.timing_of(t.light.tls_id), t.light), now);
+      }
+      step.result = t.judge->step(in);
+      step.judged = true;
+    }
+    // Behind the dead line (GO_OUT, or an unregulated light) the light is done.
+    if ((step.judged && step.result.state == JudgeState::GoOut) || front_to_line < kDeadLine) {
+      t.dropped = true;
+      t.judge.reset();
+    }
+    out.push_back(std::move(step));
+  }
+  while (first_ < lights_.size() && lights_[first_].dropped) ++first_;
+  return out;
+}
+
+bool light_decides_next_junction(const RouteMap& route, double s_front, const std::vector<LightStep>& lights) {
+  if (route.empty()) return false;
+  const std::size_t here = route.index_at(s_front);
+  if (route.at(here).is_internal) return false;  // inside a junction: its right of way is SUMO's
+  for (const LightStep& l : lights) {
+    if (l.light->route_index != here) continue;
+    const char c = l.own_state;
+    return c == 'r' || c == 'u' || c == 'y' || c == 'Y';
+  }
+  return false;
+}
+
+}  // namespace signalsim

@@ -1,0 +1,366 @@
+#include "sim/route_planning.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <optional>
+#include <sstream>
+
+#include "scenario/input_error.hpp"
+#include "turn_signal/behavior_modules.hpp"
+#include "turn_signal/exit_signal_marking.hpp"
+
+namespace signalsim {
+
+sumo::RoutePlan prepare_route(sumo::RoutePlan plan, const ParameterSet& params) {
+  if (params.boolean("turn_signal_roundabout_exit_signal_from_previous_exit"))
+    plan.map = mark_exit_signal_lanes(std::move(plan.map));
+  return plan;
+}
+
+sumo::LaneChangeEgo lane_change_ego(const Scenario& scenario) {
+  sumo::LaneChangeEgo ego;
+  ego.base_link_to_front = scenario.ego.base_link_to_front;
+  ego.depart_pos = scenario.ego.depart_pos;
+  ego.max_speed = scenario.ego.max_speed;
+  ego.max_lateral_accel = scenario.ego.emergency_decel;
+  // A taken-over vehicle's departure lane is SUMO's: the plan starts where it is (an added ego's
+  // depart_lane asks for a lane change onto the planned lane instead).
+  if (!scenario.ego.id.empty()) ego.first_lane = scenario.ego.depart_lane;
+  ego.vclass = scenario.ego.vclass;
+  ego.sumo_decel = scenario.ego.sumo_decel;
+  ego.step_length = scenario.step_length;
+  return ego;
+}
+
+sumo::RoutePlan build_scenario_route(const Scenario& scenario, const sumo::NetIndex& net) {
+  return sumo::build_route(net, scenario.ego.route, required_exit_lanes(scenario), lane_change_ego(scenario));
+}
+
+std::string no_room_message(const sumo::RoutePlan& plan) {
+  std::ostringstream out;
+  out << std::fixed << std::setprecision(2) << "no lane plan leaves room for every lane change the route needs; "
+      << "the best one changes lanes";
+  const char* sep = " ";
+  for (const sumo::PlannedLaneChange& c : plan.changes) {
+    out << sep << "on edge '" << c.edge << "' (lane " << c.from_lane << " -> " << c.to_lane << ", a " << c.shift
+        << " m shift, " << c.room << " m of room";
+    if (!c.fits) {
+      const double room = sumo::lane_change_room_needed(c.min_length);
+      out << "; at " << plan.rooms[c.edge_index].speed << " m/s it needs " << c.min_length << " m of lateral motion, ";
+      if (std::isfinite(room)) out << "so " << room << " m of room";
+      else out << "more than the " << sumo::kLaneChangeLength << " m a lane change is given";
+    }
+    out << ")";
+    sep = ", ";
+  }
+  return out.str();
+}
+
+namespace {
+
+[[noreturn]] void fail(const Scenario& scenario, const std::string& message) {
+  throw InputError(scenario.path, 0, message);
+}
+
+// The lane changes of the route: on every edge the ego enters on another lane than the planned one
+// (the first edge: ego.depart_lane; later edges: the previous connection's to-lane), one shift line
+// from the entry lane's offset to 0 on that edge.
+std::vector<LateralSegment> plan_lane_changes(const Scenario& scenario, const sumo::RoutePlan& plan,
+                                              const sumo::NetIndex& net) {
+  std::vector<LateralSegment> out;
+  const double b2f = scenario.ego.base_link_to_front;
+  const auto& edges = scenario.ego.route;
+  const BehaviorSignalParameters module_params = behavior_parameters(
+      scenario.params, turn_signal_parameters(scenario.params, b2f), scenario.ego.length, kObstacleWidth);
+  for (const LaneChangeManeuver& m : scenario.lane_changes)
+    if (!m.edge.empty() && std::find(edges.begin(), edges.end(), m.edge) == edges.end())
+      fail(scenario, "maneuvers: lane_change: edge '" + m.edge + "' is not on the ego's route");
+  for (std::size_t i = 0; i < edges.size() && i < plan.lane_per_edge.size(); ++i) {
+    const auto index = plan.map.find_edge(edges[i]);
+    const sumo::NetEdge* edge = net.edge(edges[i]);
+    if (!index || edge == nullptr) continue;
+    const Lanelet& lanelet = plan.map.at(*index);
+    const int planned = plan.lane_per_edge[i];
+    int entry = i < plan.entry_lane_per_edge.size() ? plan.entry_lane_per_edge[i] : planned;
+    const bool first = i == 0;
+    if (first && scenario.ego.depart_lane >= 0) entry = scenario.ego.depart_lane;
+    if (first && (entry >= static_cast<int>(edge->lanes.size()) ||
+                  !sumo::lane_permits(edge->lanes[static_cast<std::size_t>(entry)], scenario.ego.vclass))) {
+      std::ostringstream out_msg;
+      out_msg << "ego.depart_lane: edge '" << edge->id << "' has no lane " << entry << " the ego may drive ("
+              << edge->lanes.size() << " lanes)";
+      fail(scenario, out_msg.str());
+    }
+    // The lane change the scenario asks for on this edge (no `edge`: the first edge).
+    const LaneChangeManeuver* requested = nullptr;
+    for (const LaneChangeManeuver& m : scenario.lane_changes)
+      if (m.edge.empty() ? first : m.edge == edges[i]) {
+        if (requested) fail(scenario, "maneuvers: two lane_change maneuvers on the first edge '" + edges[i] + "'");
+        requested = &m;
+      }
+    const bool asked = requested != nullptr;
+    if (entry == planned) {
+      if (asked)
+        fail(scenario, first && requested->edge.empty()
+                           ? "maneuvers: lane_change: the ego departs on the planned lane " + lanelet.lane_id +
+                                 " of the first edge; set ego.depart_lane to another lane"
+                           : "maneuvers: lane_change on '" + edges[i] + "': the ego already enters it on lane " +
+                                 lanelet.lane_id + " (to_lane)");
+      continue;
+    }
+    LateralSegment seg;
+    seg.kind = LateralKind::LaneChange;
+    seg.edge = lanelet.edge_id;
+    seg.reference_lane = lanelet.lane_id;
+    seg.route_index = *index;
+    // A lane change never crosses a lane the ego may not use (the lane plan avoids them; the first
+    // edge's change from ego.depart_lane is the scenario's).
+    for (int k = std::min(entry, planned) + 1; k < std::max(entry, planned); ++k)
+      if (!sumo::lane_permits(edge->lanes[static_cast<std::size_t>(k)], scenario.ego.vclass))
+        fail(scenario, "ego.depart_lane: the lane change from lane " + std::to_string(entry) + " to the planned lane " +
+                           lanelet.lane_id + " crosses lane '" + edge->lanes[static_cast<std::size_t>(k)].id +
+                           "', which " + (scenario.ego.vclass == "passenger" ? std::string("a passenger car")
+                                                                               : "vClass '" + scenario.ego.vclass + "'") +
+                           " may not use");
+    // The entry lane's centre seen from the planned lane's centre (left positive).
+    const auto width = [&](int k) { return edge->lanes[static_cast<std::size_t>(k)].width; };
+    const int step = entry > planned ? 1 : -1;
+    // The room, lane widths and speed the lane plan chose this edge by (sumo/lane_change_room).
+    const sumo::EdgeRoom& room = plan.rooms.at(i);
+    const double shift = sumo::lane_shift(room.widths, entry, planned);
+    const double offset = step * shift;
+    seg.boundary = step * 0.5 * width(planned);
+    seg.left_half_width = seg.right_half_width = 0.5 * width(planned);
+    // Where base_link may start: its depart position on the first edge, the edge's start later.
+    const double earliest = first ? scenario.ego.depart_pos - b2f : lanelet.s_start;
+    const sumo::LaneChangeEgo ego = lane_change_ego(scenario);
+    const double needed = sumo::min_lane_change_length(shift, room.speed, ego);
+    LaneChangeManeuver m;
+    if (asked) {
+      m = *requested;
+      if (!requested->edge.empty()) m.at = lanelet.s_start + requested->at;  // `at` on the edge
+    } else {
+      // Default (sumo::default_lane_change): a lead after `earliest`, then the lateral motion, both
+      // shrunk to fit a short edge (the shift ends with the front still on the edge).
+      const sumo::LaneChangeTimingDefault timing = sumo::default_lane_change(room.room);
+      m.at = earliest + timing.lead;
+      m.length = timing.length;
+      if (!sumo::lane_change_fits(room.room, shift, room.speed, ego)) fail(scenario, "ego.route: " + no_room_message(plan));
+    }
+    // Physically sensible: a shift this long is one the ego can drive at its speed there.
+    if (m.length < needed - 1e-9) {
+      std::ostringstream out_msg;
+      out_msg << std::fixed << std::setprecision(2) << "maneuvers: lane_change on '" << edge->id << "': a " << shift
+              << " m shift in " << m.length << " m is sharper than the ego can drive at " << room.speed
+              << " m/s; it needs at least " << needed << " m";
+      fail(scenario, out_msg.str());
+    }
+    if (m.at < earliest - 1e-9) {
+      std::ostringstream out_msg;
+      out_msg << "maneuvers: lane_change.at " << m.at << " m is behind base_link's " << (first ? "depart position " : "entry ")
+              << earliest << " m";
+      fail(scenario, out_msg.str());
+    }
+    // No lateral command on internal lanes: the shift ends while the front is still on the edge.
+    if (m.at + m.length + b2f > lanelet.s_end()) {
+      std::ostringstream out_msg;
+      out_msg << "maneuvers: the lane change on '" << edge->id << "' (base_link " << m.at << " + " << m.length
+              << " m) must end while the front bumper is still on the edge (" << lanelet.length << " m)";
+      fail(scenario, out_msg.str());
+    }
+    seg.first_line_id = 100 + i;
+    seg.plan = ShiftPlan({ShiftLine{m.at, m.at + m.length, offset, 0.0}});  // nominal: started at `at`
+    seg.lane_change.earliest_start = m.at;
+    seg.lane_change.latest_start = lanelet.s_end() - b2f - m.length;
+    seg.lane_change.length = m.length;
+    seg.lane_change.shift_start = offset;
+    seg.lane_change.approval_delay = m.approval_delay;
+    // Hold point margin: the prepare segment from rest, driven at max_longitudinal_acc for the
+    // module's shortest prepare time at standstill (spec TSD §8.2).
+    seg.lane_change.hold_margin = LaneChangeExecution::prepare_distance(
+        0.0, module_params.max_longitudinal_acc, scenario.ego.max_speed,
+        LaneChangeSignal::min_prepare_duration_at(0.0, module_params));
+    out.push_back(std::move(seg));
+  }
+  return out;
+}
+
+LateralSegment plan_avoid(const Scenario& scenario, const sumo::RoutePlan& plan, const AvoidManeuver& avoid,
+                          std::size_t index) {
+  const std::string where = "maneuvers: avoid '" + avoid.obstacle + "': ";
+  const ObstacleSpec* obstacle = nullptr;
+  for (const ObstacleSpec& o : scenario.obstacles)
+    if (o.id == avoid.obstacle) obstacle = &o;
+  if (obstacle == nullptr) fail(scenario, where + "no such obstacle in 'obstacles'");
+  const auto route_index = plan.map.find_edge(obstacle->edge);
+  if (!route_index) fail(scenario, where + "edge '" + obstacle->edge + "' is not on the ego's route");
+  const Lanelet& lanelet = plan.map.at(*route_index);
+  const std::string lane_id = obstacle->edge + "_" + std::to_string(obstacle->lane);
+  if (lanelet.lane_id != lane_id)
+    fail(scenario, where + "it stands on " + lane_id + ", not on the ego's planned lane " + lanelet.lane_id);
+  if (obstacle->pos > lanelet.length || obstacle->pos < obstacle->length)
+    fail(scenario, where + "its position must lie between its length and the lane length");
+  const double b2f = scenario.ego.base_link_to_front;
+  AvoidanceRequest request;
+  request.s_object_start = lanelet.s_start + obstacle->pos - obstacle->length;
+  request.s_object_end = lanelet.s_start + obstacle->pos;
+  request.object_left = 0.5 * kObstacleWidth;
+  request.object_right = -0.5 * kObstacleWidth;
+  request.clearance = avoid.clearance;
+  request.vehicle_width = kObstacleWidth;  // the ego uses SUMO's default width too
+  request.side = avoid.side == "left" ? AvoidSide::Left : avoid.side == "right" ? AvoidSide::Right : AvoidSide::Auto;
+  request.base_link_to_front = b2f;
+  request.rear_overhang = scenario.ego.length - b2f;
+  request.speed = scenario.ego.max_speed;
+  if (avoid.length > 0.0) request.lengths.fixed_length = avoid.length;
+  LateralSegment seg;
+  seg.kind = LateralKind::Avoidance;
+  seg.route_index = *route_index;
+  seg.edge = lanelet.edge_id;
+  seg.reference_lane = lanelet.lane_id;
+  seg.left_half_width = seg.right_half_width = 0.5 * lanelet.width;
+  seg.plan = plan_avoidance(request);
+  seg.first_line_id = 1000 * (index + 1);
+  const double first_s = seg.plan.lines().front().s_start;
+  const double last_s = seg.plan.lines().back().s_end;
+  if (first_s < lanelet.s_start || last_s + b2f > lanelet.s_end()) {
+    std::ostringstream out;
+    out << where << "the avoidance (base_link " << first_s << " to " << last_s << " m) must start and end while the "
+        << "ego is on edge '" << seg.edge << "' (route s " << lanelet.s_start << " to " << lanelet.s_end()
+        << " m, front bumper included); move the obstacle or shorten the shifts (length)";
+    fail(scenario, out.str());
+  }
+  return seg;
+}
+
+// A plan must start and end while base_link and the front are on the segment's edge.
+void check_within_edge(const Scenario& scenario, const LateralSegment& seg, const Lanelet& lanelet,
+                       const std::string& what) {
+  const double b2f = scenario.ego.base_link_to_front;
+  const double first_s = seg.plan.lines().front().s_start;
+  const double last_s = seg.plan.lines().back().s_end;
+  if (first_s < lanelet.s_start - 1e-9 || last_s + b2f > lanelet.s_end()) {
+    std::ostringstream out;
+    out << "maneuvers: " << what << " (base_link " << first_s << " to " << last_s << " m) must start and end while "
+        << "the ego is on edge '" << seg.edge << "' (route s " << lanelet.s_start << " to " << lanelet.s_end()
+        << " m, front bumper included)";
+    fail(scenario, out.str());
+  }
+}
+
+}  // namespace
+
+LateralPlan plan_lateral(const Scenario& scenario, const sumo::RoutePlan& plan, const sumo::NetIndex& net) {
+  LateralPlan lateral;
+  for (LateralSegment& seg : plan_lane_changes(scenario, plan, net)) lateral.segments.push_back(std::move(seg));
+  for (const ObstacleSpec& o : scenario.obstacles) {
+    const sumo::NetEdge* edge = net.edge(o.edge);
+    if (edge == nullptr || edge->is_internal) fail(scenario, "obstacles: '" + o.id + "': no edge '" + o.edge + "'");
+    if (o.lane >= static_cast<int>(edge->lanes.size()))
+      fail(scenario, "obstacles: '" + o.id + "': edge '" + o.edge + "' has no lane " + std::to_string(o.lane));
+    if (o.pos > edge->lanes[static_cast<std::size_t>(o.lane)].length)
+      fail(scenario, "obstacles: '" + o.id + "': pos is beyond the end of its lane");
+  }
+  const double b2f = scenario.ego.base_link_to_front;
+  if (scenario.pull_out) {
+    const PullOutManeuver& m = *scenario.pull_out;
+    if (lateral.on_edge(plan.map.at(0).edge_id)) fail(scenario, "maneuvers: pull_out and a lane change on the first edge");
+    const Lanelet& first = plan.map.at(0);
+    LateralSegment seg;
+    seg.kind = LateralKind::PullOut;
+    seg.edge = first.edge_id;
+    seg.reference_lane = first.lane_id;
+    seg.left_half_width = seg.right_half_width = 0.5 * first.width;
+    const double depart_base = scenario.ego.depart_pos - b2f;
+    if (m.backward > 0.0 && scenario.ego.depart_pos - m.backward < scenario.ego.length) {
+      std::ostringstream out;
+      out << "maneuvers: pull_out.backward " << m.backward << " m would back the ego off the start of edge '"
+          << first.edge_id << "' (depart_pos " << scenario.ego.depart_pos << " m, length " << scenario.ego.length << " m)";
+      fail(scenario, out.str());
+    }
+    if (m.backward > 0.0 && scenario.ego.depart_speed > 0.0)
+      fail(scenario, "maneuvers: pull_out.backward needs ego.depart_speed 0");
+    const double at = m.at < 0.0 ? std::max(0.0, depart_base - m.backward) : m.at;
+    seg.plan = plan_pull_out(at, m.offset, m.length);
+    check_within_edge(scenario, seg, first, "pull_out");
+    lateral.depart_offset = m.offset;
+    lateral.backward = m.backward;
+    lateral.segments.push_back(std::move(seg));
+  }
+  if (scenario.pull_over) {
+    const PullOverManeuver& m = *scenario.pull_over;
+    const auto index = plan.map.find_edge(m.edge);
+    if (!index) fail(scenario, "maneuvers: pull_over: edge '" + m.edge + "' is not on the ego's route");
+    const Lanelet& lanelet = plan.map.at(*index);
+    LateralSegment seg;
+    seg.kind = LateralKind::PullOver;
+    seg.edge = lanelet.edge_id;
+    seg.reference_lane = lanelet.lane_id;
+    seg.route_index = *index;
+    seg.left_half_width = seg.right_half_width = 0.5 * lanelet.width;
+    seg.goal_s = lanelet.s_start + m.pos - b2f;
+    seg.plan = plan_pull_over(seg.goal_s, m.offset, m.length);
+    check_within_edge(scenario, seg, lanelet, "pull_over");
+    if (lateral.on_edge(seg.edge)) fail(scenario, "maneuvers: at most one maneuver per edge ('" + seg.edge + "' has two)");
+    lateral.segments.push_back(std::move(seg));
+  }
+  for (std::size_t i = 0; i < scenario.avoids.size(); ++i) {
+    LateralSegment seg = plan_avoid(scenario, plan, scenario.avoids[i], i);
+    if (lateral.on_edge(seg.edge))
+      fail(scenario, "maneuvers: at most one maneuver per edge ('" + seg.edge + "' has two)");
+    lateral.segments.push_back(std::move(seg));
+  }
+  std::sort(lateral.segments.begin(), lateral.segments.end(), [](const LateralSegment& a, const LateralSegment& b) {
+    return a.plan.lines().front().s_start < b.plan.lines().front().s_start;
+  });
+  return lateral;
+}
+
+std::vector<int> required_exit_lanes(const Scenario& scenario) {
+  std::vector<int> out;
+  for (const LaneChangeManeuver& m : scenario.lane_changes) {
+    if (m.edge.empty()) continue;
+    out.resize(scenario.ego.route.size(), -1);
+    for (std::size_t i = 0; i < out.size(); ++i)
+      if (scenario.ego.route[i] == m.edge) {
+        out[i] = m.to_lane;
+        break;
+      }
+  }
+  return out;
+}
+
+sumo::RoutePlan plan_route(const Scenario& scenario, const sumo::NetIndex& net) {
+  sumo::RoutePlan plan;
+  try {
+    plan = prepare_route(build_scenario_route(scenario, net), scenario.params);
+  } catch (const sumo::NetDefectError& e) {
+    // The defect's own file and line (the net's), and which scenario route uses it.
+    throw InputError(e.file(), e.line(), e.detail() + " in ego.route of " + scenario.path);
+  } catch (const sumo::RouteError& e) {
+    std::string hint;
+    for (const LaneChangeManeuver& m : scenario.lane_changes)
+      if (!m.edge.empty())
+        hint += (hint.empty() ? " (with the requested lane change to lane " : "; to lane ") + std::to_string(m.to_lane) +
+                " on '" + m.edge + "'";
+    if (!hint.empty()) hint += ": each must be reachable from another lane and lead on)";
+    throw InputError(scenario.path, 0, std::string("ego.route: ") + e.what() + hint);
+  }
+  // What SUMO would otherwise clamp or reject only after it started.
+  const Lanelet& first = plan.map.at(0);
+  if (scenario.ego.depart_pos > first.length) {
+    std::ostringstream out;
+    out << "ego.depart_pos: " << scenario.ego.depart_pos << " m is beyond the end of edge '" << first.edge_id
+        << "' (" << first.length << " m)";
+    const auto line = scenario.ego.lines.find("depart_pos");
+    throw InputError(scenario.path, line == scenario.ego.lines.end() ? 0 : line->second, out.str());
+  }
+  plan_lateral(scenario, plan, net);  // checks the depart lane and the maneuvers
+  for (const auto& [tls, offset] : scenario.light_offsets)
+    if (!net.tl_logic(tls))
+      throw InputError(scenario.path, 0, "light_offsets: '" + tls + "' is not a traffic light of the net");
+  return plan;
+}
+
+}  // namespace signalsim

@@ -1,0 +1,187 @@
+#include "sim/session_setup.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdlib>
+#include <filesystem>
+#include <utility>
+
+#include "scenario/input_error.hpp"
+#include "scenario/take_over.hpp"
+
+namespace signalsim {
+namespace fs = std::filesystem;
+namespace {
+
+// SUMO's departLane of a taken-over vehicle, as far as it is known before SUMO starts: a lane index
+// ("2"), "first" (SUMO's default: the rightmost lane a passenger car may use), "best" (a lane its
+// route continues from: no lane change at the start); nullopt for random, free, allowed, ... (SUMO
+// decides at insertion). -1 stands for "best".
+constexpr int kBestLane = -1;
+std::optional<int> known_departure_lane(const sumo::RouteFileVehicle& v, const sumo::NetIndex& net,
+                                        const std::string& first_edge) {
+  const std::string& d = v.depart_lane;
+  if (d == "best") return kBestLane;
+  if (!d.empty() && std::all_of(d.begin(), d.end(), [](unsigned char c) { return std::isdigit(c); }))
+    return std::stoi(d);
+  if (d.empty() || d == "first") {
+    if (const sumo::NetEdge* edge = net.edge(first_edge))
+      for (const sumo::NetLane& lane : edge->lanes)
+        if (sumo::lane_permits(lane, v.vclass)) return lane.index;
+  }
+  return std::nullopt;
+}
+
+constexpr double kSublaneWidth = 0.1;  // [m] SUMO --lateral-resolution when signalsim needs the sublane model
+
+// Waiting for a taken-over vehicle: until the sumocfg's end, else a day.
+double take_over_deadline(const Scenario& s) { return s.sumo.end ? *s.sumo.end : s.sumo.begin + 86400.0; }
+
+}  // namespace
+
+sumo::SessionConfig session_config(const Scenario& scenario, const sumo::RoutePlan& plan, const LateralPlan& lateral,
+                                   const RunContext& context) {
+  const bool connect = context.backend.kind == sumo::BackendKind::Connect;
+  if (connect && !scenario.light_offsets.empty())
+    throw InputError(scenario.path, 0, "light_offsets change the lights of every client of the SUMO at " +
+                                           context.backend.host + ":" + std::to_string(context.backend.port) +
+                                           "; --connect controls only the ego");
+  if (connect && !scenario.sumo.sumo_args.empty())
+    throw InputError(scenario.path, 0, "sumo_args cannot reach a SUMO someone else started (--connect): give the "
+                                       "options to that sumo");
+  if (connect && !scenario.obstacles.empty())
+    throw InputError(scenario.path, 0, "obstacles would be vehicles in the simulation of every client of the SUMO at " +
+                                           context.backend.host + ":" + std::to_string(context.backend.port) +
+                                           "; --connect controls only the ego");
+  sumo::SessionConfig config;
+  config.backend = context.backend;
+  config.net = scenario.net;
+  config.route_files = scenario.sumo.route_files;
+  config.additional = scenario.additional;
+  const bool gui = context.backend.kind == sumo::BackendKind::Gui;
+  std::optional<double> user_lateral_resolution;  // a user's own sublane model, for their traffic too
+  try {
+    // sumo_args win over the sumocfg's options of the same name (SUMO refuses an option twice).
+    const std::vector<sumo::SumoOption> own = sumo::parse_sumo_tokens(scenario.sumo.sumo_args);
+    std::vector<sumo::SumoOption> cfg = scenario.sumo.cfg_options;
+    std::erase_if(cfg, [&](const sumo::SumoOption& c) {
+      return std::any_of(own.begin(), own.end(), [&](const sumo::SumoOption& o) { return o.name == c.name; });
+    });
+    for (const std::vector<sumo::SumoOption>* options : {&std::as_const(cfg), &own})
+      for (const sumo::SumoOption& o : *options)
+        if (o.name == "lateral-resolution") user_lateral_resolution = std::atof(o.value.c_str());
+    config.extra_args = sumo::sumo_tokens(cfg, scenario.sumo.sumocfg, context.out_dir, scenario.sumo.cfg_dir, gui);
+    const auto tokens = sumo::sumo_tokens(own, "sumo_args", context.out_dir, scenario.sumo.scenario_dir, gui);
+    config.extra_args.insert(config.extra_args.end(), tokens.begin(), tokens.end());
+  } catch (const sumo::SumoOptionError& e) {
+    throw InputError(scenario.path, 0, e.what());
+  }
+  if (!context.out_dir.empty()) config.log_file = (fs::path(context.out_dir) / kSumoLogFile).string();
+  config.step_length = scenario.step_length;
+  config.begin = scenario.sumo.begin;
+  config.seed = scenario.seed;
+  config.take_over = scenario.ego.id;
+  config.take_over_until = take_over_deadline(scenario);
+  config.route = scenario.ego.route;
+  config.depart_lane = plan.entry_lane_per_edge.empty() ? 0 : plan.entry_lane_per_edge.front();
+  if (scenario.ego.depart_lane >= 0) config.depart_lane = scenario.ego.depart_lane;
+  config.depart_pos = scenario.ego.depart_pos;
+  config.depart_speed = scenario.ego.depart_speed;
+  config.max_speed = scenario.ego.max_speed;
+  config.length = scenario.ego.length;
+  config.width = scenario.ego.width;
+  config.accel = scenario.ego.accel;
+  config.emergency_decel = scenario.ego.emergency_decel;
+  // SUMO never changes lanes on its own: signalsim drives every lane change (plan_lateral).
+  config.keep_planned_lanes = true;
+  // signalsim drives lateral motion with sublane offsets re-commanded every step (spec SUMO §4):
+  // SUMO's sublane model, the user's own resolution if they run one.
+  if (lateral.active()) config.lateral_resolution = kSublaneWidth;
+  if (user_lateral_resolution) {
+    if (lateral.active() && *user_lateral_resolution <= 0.0)
+      throw InputError(scenario.path, 0, "the scenario drives lateral motion (a lane change or another maneuver), "
+                                         "which needs SUMO's sublane model, but its SUMO options set "
+                                         "lateral-resolution " + std::to_string(*user_lateral_resolution));
+    config.lateral_resolution = *user_lateral_resolution;
+  }
+  config.depart_pos_lat = lateral.depart_offset;
+  for (const ObstacleSpec& o : scenario.obstacles) config.standing.push_back({o.id, o.edge, o.lane, o.pos, o.length});
+  // SUMO driving: its own lane changes; maneuvers (a pull out's depart offset included) are signalsim's.
+  if (context.sumo_drives) {
+    config.sumo_drives = true;
+    config.keep_planned_lanes = false;
+    config.depart_pos_lat = 0.0;
+  }
+  return config;
+}
+
+PlannedRun plan_run(const Scenario& scenario, const sumo::NetIndex& net) {
+  PlannedRun planned;
+  planned.scenario = scenario;
+  planned.taken_over = resolve_route_file_ego(planned.scenario);  // a taken-over vehicle's route
+  if (planned.taken_over && !planned.scenario.ego.route.empty()) {
+    const auto lane = known_departure_lane(*planned.taken_over, net, planned.scenario.ego.route.front());
+    planned.departure_known = lane.has_value();
+    if (lane && *lane >= 0) planned.scenario.ego.depart_lane = *lane;  // plan from where it will be
+  }
+  try {
+    planned.plan = plan_route(planned.scenario, net);
+  } catch (const InputError& e) {
+    // A taken-over vehicle's route is its route file's: the fault is named there.
+    if (!planned.taken_over || e.file() != planned.scenario.path) throw;
+    const sumo::RouteFileVehicle& v = *planned.taken_over;
+    throw InputError(v.file, v.line, "<" + v.kind + "> '" + v.id + "' (ego.id of " + planned.scenario.path +
+                                         "): " + e.reason());
+  }
+  return planned;
+}
+
+PlannedRun plan_run(const Scenario& scenario, sumo::RoutePlan plan) {
+  PlannedRun planned;
+  planned.scenario = scenario;
+  planned.taken_over = resolve_route_file_ego(planned.scenario);
+  planned.plan = std::move(plan);
+  return planned;
+}
+
+StartedRun start_run(PlannedRun planned, const sumo::NetIndex& net, const RunContext& context) {
+  StartedRun run;
+  run.out_dir = context.out_dir;
+  run.scenario = std::move(planned.scenario);
+  const std::optional<sumo::RouteFileVehicle>& definition = planned.taken_over;
+  sumo::RoutePlan& plan = planned.plan;
+  run.lateral = plan_lateral(run.scenario, plan, net);
+  sumo::SessionConfig& config = run.config;
+  config = session_config(run.scenario, plan, run.lateral, context);
+  // A departure lane SUMO chooses at insertion (random, free, ...) may need a lane change at once:
+  // signalsim drives it with the sublane model, which must be on from the start.
+  if (definition && !planned.departure_known && config.lateral_resolution <= 0.0) config.lateral_resolution = kSublaneWidth;
+  if (context.backend.kind == sumo::BackendKind::Connect &&
+      (!run.scenario.sumo.route_files.empty() || !run.scenario.additional.empty() ||
+       !run.scenario.sumo.cfg_options.empty()))
+    run.notes.push_back("--connect: the scenario's route files, additional files and sumocfg options are the "
+                        "server's business; signalsim did not load them (the server reports its own in "
+                        "sumo.server_options)");
+  run.session = sumo::open_session(config);
+  if (definition) {
+    const sumo::EgoVehicle& vehicle = run.session->ego_vehicle();
+    if (vehicle.route != run.scenario.ego.route)
+      throw InputError(definition->file, definition->line,
+                       "vehicle '" + vehicle.id + "' drives [" + edges_text(vehicle.route) + "] in SUMO, not the route [" +
+                           edges_text(run.scenario.ego.route) + "] of its route file (did the SUMO at the other end "
+                           "load other route files?)");
+    // SUMO's values for the vehicle; its lanes planned from the lane it departed on.
+    run.scenario = with_taken_over_ego(run.scenario, vehicle, *definition);
+    plan = plan_route(run.scenario, net);
+    run.lateral = plan_lateral(run.scenario, plan, net);
+    if (run.lateral.active() && config.lateral_resolution <= 0.0 && !context.sumo_drives)
+      throw InputError(definition->file, definition->line,
+                       "vehicle '" + vehicle.id + "' departed on lane " + std::to_string(vehicle.depart_lane) +
+                           " and its route needs a lane change, which signalsim drives with SUMO's sublane model; "
+                           "SUMO runs without it (the route file's departLane did not say that a change is needed)");
+  }
+  run.plan = std::move(plan);
+  return run;
+}
+
+}  // namespace signalsim
