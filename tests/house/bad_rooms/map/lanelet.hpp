@@ -1,0 +1,3 @@
+// Fixture for the include-rule test: map/ including core/ is allowed.
+#pragma once
+#include "core/point.hpp"
