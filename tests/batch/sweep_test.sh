@@ -60,7 +60,7 @@ echo "ok   --jobs 1 and --jobs 2 give the same results.csv"
 if /usr/bin/python3 -c "import matplotlib" 2>/dev/null; then
   "$bin" sweep "$sweep" --out "$work/j1" --jobs 2 --resume --plot > "$work/plot.log" || fail "sweep --plot: exit code $?"
   grep -q "resuming: 18 of 18 runs already done, 0 to run" "$work/plot.log" || fail "--resume reran finished runs"
-  png=$work/j1/plots/roundabout_exit1.lead_distance_by_country_ego.max_speed.png
+  png=$work/j1/plots/roundabout_exit1.lead_distance_by_country_max_speed.png  # keys by their last dotted part
   [ -s "$png" ] || fail "no heat map $png ($(cat "$work/plot.log"))"
   echo "ok   sweep --plot drew $(basename "$png")"
 else

@@ -1,9 +1,11 @@
-"""Reading signalsim's files: CSV columns by name, summary.json, the run's metrics."""
+"""Reading signalsim's files: CSV columns by name, summary.json, the run's metrics, and the inputs a
+run names (its net, its scenario file)."""
 import csv
 import json
 import os
 
 from plotting.cli import InputError
+from plotting.net import find_input, load_net
 
 
 def read_csv(path):
@@ -54,3 +56,54 @@ def read_run(run_dir):
         with open(os.path.join(run_dir, "metrics.json")) as f:
             metrics = json.load(f)
     return timeline, events, summary, metrics or {}
+
+
+def runs_of(values):
+    """[(value, first index, last index)] for consecutive equal values."""
+    out = []
+    for i, v in enumerate(values):
+        if out and out[-1][0] == v:
+            out[-1][2] = i
+        else:
+            out.append([v, i, i])
+    return [tuple(r) for r in out]
+
+
+def span_end(xs, last):
+    """Where a run ending at row `last` ends: the next row's x (the value holds until then)."""
+    return xs[last + 1] if last + 1 < len(xs) else xs[last]
+
+
+def load_scenario_file(path):
+    """The scenario YAML as a dict, None when it cannot be read (or python3-yaml is missing)."""
+    if not path:
+        return None
+    try:
+        import yaml
+    except ImportError:
+        return None
+    try:
+        with open(path) as f:
+            doc = yaml.safe_load(f)
+    except (OSError, yaml.YAMLError):
+        return None
+    return doc if isinstance(doc, dict) else None
+
+
+class RunInputs:
+    """The inputs a run's summary names, where they could be found: `net` (plotting.net.Net or None),
+    `scenario` (the scenario file as a dict or None) and `notes` (why something is missing)."""
+
+    def __init__(self, run_dir, summary):
+        self.notes = []
+        self.scenario_path = find_input(summary.get("file"), run_dir)
+        self.scenario = load_scenario_file(self.scenario_path)
+        net_path = find_input(summary.get("net"), run_dir)
+        if net_path is None and self.scenario and isinstance(self.scenario.get("net"), str):
+            candidate = os.path.join(os.path.dirname(self.scenario_path), self.scenario["net"])
+            net_path = candidate if os.path.isfile(candidate) else None
+        self.net = load_net(net_path) if net_path else None
+        if self.net is None:
+            self.notes.append(f"net {summary.get('net') or '?'} not found")
+        if self.scenario is None:
+            self.notes.append(f"scenario file {summary.get('file') or '?'} not readable")

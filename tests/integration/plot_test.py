@@ -1,0 +1,320 @@
+#!/usr/bin/python3
+"""tools/plot on real runs (issue 15): what each picture draws, read from the plotting functions' data.
+
+Runs the real binary (`run --plot`, `sweep --plot`, with SIGNALSIM_PLOT_TOOL pointing at this source
+tree's tools/plot), then checks, against what the run's own files say (summary.json's expectation
+details and lane_changes, events.csv, timeline.csv, the net), the data behind:
+  - blinker.png: the decided blinker's segments and sources (a lane change handing over to a turn),
+    the required-lead marker, legend entries only for what is drawn (hazard only when used), no
+    picture for a route without sections where no blinker came on
+  - lateral.png: planned and measured series, lane-change phases and marks, obstacles
+  - speed.png: the jerk series from the accel column, the lane speed limit from the net
+  - dilemma.png: only for a light where a yellow or red was met, x range covering where it was met
+  - the sweep heat map: colour normalisation centred on 0 for a lead distance, failed and errored
+    cells marked, the averaged key named, the unit on the colour bar, the short file name
+usage: plot_test.py SIGNALSIM_BINARY SOURCE_DIR  (exit 77: no matplotlib, skipped)
+"""
+import csv
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+import unittest
+import xml.etree.ElementTree as ET
+
+try:
+    import matplotlib  # noqa: F401
+except ImportError:
+    print("skip: /usr/bin/python3 has no matplotlib (python3-matplotlib)")
+    sys.exit(77)
+
+BIN, SRC = (sys.argv[1], sys.argv[2]) if len(sys.argv) >= 3 else (None, None)
+sys.path.insert(0, os.path.join(SRC or ".", "tools"))
+WORK = None
+RUNS = {}
+
+
+def setUpModule():
+    global WORK
+    WORK = tempfile.mkdtemp(prefix="plot_test.")
+    env = dict(os.environ, SIGNALSIM_PLOT_TOOL=os.path.join(SRC, "tools", "plot"))
+    for name in ("lane_change_then_left", "lane_change_approval_delay", "avoidance_left", "pull_out_backward_hazard",
+                 "tl_yellow_pass"):
+        out = os.path.join(WORK, name)
+        p = subprocess.run([BIN, "run", os.path.join(SRC, "scenarios", name + ".yaml"), "--out", out, "--plot",
+                            "--quiet"], env=env, capture_output=True, text=True, cwd=WORK)
+        assert p.returncode == 0, (name, p.returncode, p.stdout, p.stderr)
+        RUNS[name] = out
+    sweep = os.path.join(SRC, "tests", "data", "sweeps", "plot_heatmap.yaml")
+    p = subprocess.run([BIN, "sweep", sweep, "--out", os.path.join(WORK, "sweep"), "--jobs", "2", "--plot", "--quiet"],
+                       env=env, capture_output=True, text=True, cwd=WORK)
+    # 4 runs fail nothing but 4 are in error (SUMO refuses an option): the errors' exit code, pictures drawn
+    assert p.returncode == 4, (p.returncode, p.stdout, p.stderr)
+    RUNS["sweep"] = os.path.join(WORK, "sweep")
+
+
+def tearDownModule():
+    if WORK:
+        shutil.rmtree(WORK, ignore_errors=True)
+
+
+def load(name):
+    from plotting.data import RunInputs, read_run
+    d = RUNS[name]
+    timeline, events, summary, metrics = read_run(d)
+    return d, timeline, events, summary, metrics, RunInputs(d, summary)
+
+
+def expectation(summary, prefix):
+    matches = [e for e in summary["expectations"] if e["expectation"].startswith(prefix)]
+    assert len(matches) == 1, (prefix, summary["expectations"])
+    return matches[0]
+
+
+def pictures(name):
+    return sorted(os.listdir(os.path.join(RUNS[name], "plots")))
+
+
+class Blinker(unittest.TestCase):
+    def test_lane_change_hands_over_to_the_turn(self):
+        from plotting.blinker import SOURCE_COLORS, blinker_data
+        _, timeline, events, summary, metrics, _ = load("lane_change_then_left")
+        data = blinker_data(timeline, summary, metrics)
+        segs = data["segments"]
+        self.assertEqual([(g["blinker"], g["source"]) for g in segs], [("left", "lane_change"), ("left", "intersection")])
+        # on where events.csv turns it on, off where it turns it off; the handover where the timeline's source changes
+        on = [e for e in events if e["kind"] == "blinker" and e["to"] == "left"]
+        off = [e for e in events if e["kind"] == "blinker" and e["from"] == "left"]
+        self.assertEqual(len(on), 1)
+        self.assertAlmostEqual(segs[0]["s0"], float(on[0]["s_front"]), places=3)
+        self.assertAlmostEqual(segs[1]["s1"], float(off[0]["s_front"]), places=3)
+        handover = next(float(r["s_front"]) for r in timeline if r["blinker_source"] == "intersection")
+        self.assertAlmostEqual(segs[0]["s1"], handover, places=3)
+        self.assertAlmostEqual(segs[1]["s0"], handover, places=3)
+        self.assertNotEqual(SOURCE_COLORS["lane_change"], SOURCE_COLORS["intersection"])
+
+    def test_required_lead_marker_where_the_checker_starts(self):
+        from plotting.blinker import blinker_data
+        _, timeline, _, summary, metrics, _ = load("lane_change_then_left")
+        data = blinker_data(timeline, summary, metrics)
+        self.assertEqual(len(data["required"]), 1)
+        req = data["required"][0]
+        e = expectation(summary, "blinker_through_junction C left lead 30")
+        # the checker's own start (expectations.cpp): "... steps from s_front 159.6 m until base_link passed ..."
+        checker_from = float(re.search(r"from s_front (\S+) m", e["detail"]).group(1))
+        self.assertAlmostEqual(req["from_s"], checker_from, places=2)
+        turn = next(s for s in metrics["sections"] if s["kind"] == "turn")
+        self.assertAlmostEqual(req["from_s"], turn["s_start"] - 30, places=3)
+        self.assertTrue(req["passed"])
+        self.assertEqual(req["section"]["id"], "C")
+        # the speed there gives the time equivalent
+        self.assertGreater(req["speed"], 1.0)
+        self.assertAlmostEqual(req["lead_time"], 30 / req["speed"], places=6)
+
+    def test_legend_only_for_what_is_drawn(self):
+        from plotting.blinker import BLINKER_COLORS, SOURCE_COLORS, blinker_data, blinker_legend
+        from matplotlib.colors import to_hex
+        _, timeline, _, summary, metrics, _ = load("lane_change_then_left")
+        handles = blinker_legend(blinker_data(timeline, summary, metrics))
+        by_label = {h.get_label(): h for h in handles}
+        self.assertEqual(to_hex(by_label["decided, source lane_change"].get_facecolor()), SOURCE_COLORS["lane_change"])
+        self.assertEqual(to_hex(by_label["decided, source intersection"].get_facecolor()),
+                         SOURCE_COLORS["intersection"])
+        self.assertFalse([lab for lab in by_label if lab.startswith("hazard") or lab.startswith("right")], by_label)
+        left = [h for lab, h in by_label.items() if lab.startswith("left (")]
+        self.assertEqual(len(left), 1)
+        self.assertEqual(to_hex(left[0].get_facecolor()), BLINKER_COLORS["left"])
+        # hazard when used: backing out with hazard lights
+        _, timeline, _, summary, metrics, _ = load("pull_out_backward_hazard")
+        data = blinker_data(timeline, summary, metrics)
+        hazard = [g for g in data["segments"] if g["blinker"] == "hazard"]
+        self.assertEqual(len(hazard), 1)
+        self.assertTrue(hazard[0]["reversing"])
+        self.assertEqual(hazard[0]["source"], "pull_out")
+        self.assertTrue([h for h in blinker_legend(data) if h.get_label().startswith("hazard (")])
+
+    def test_no_blinker_picture_without_sections_and_blinker(self):
+        from plotting.blinker import blinker_data
+        _, timeline, _, summary, metrics, _ = load("tl_yellow_pass")
+        self.assertEqual(metrics["sections"], [])
+        self.assertTrue(all(r["blinker"] == "none" for r in timeline))
+        self.assertIsNone(blinker_data(timeline, summary, metrics))
+        self.assertNotIn("blinker.png", pictures("tl_yellow_pass"))
+        self.assertIn("blinker.png", pictures("lane_change_then_left"))
+
+
+class Lateral(unittest.TestCase):
+    def test_planned_and_measured_series(self):
+        from plotting.lateral import lateral_data
+        _, timeline, events, summary, metrics, inputs = load("lane_change_then_left")
+        data = lateral_data(timeline, events, summary, inputs)
+        self.assertEqual(len(data["planned"]), len(timeline))
+        self.assertEqual(len(data["measured"]), len(timeline))
+        planned_rows = sum(1 for r in timeline if r["planned_offset"] != "")
+        self.assertGreater(planned_rows, 50)
+        self.assertEqual(data["planned_rows"], planned_rows)
+        # the checker counts the same steps ("152 steps, worst deviation ...")
+        e = expectation(summary, "lateral_offset_follows_plan")
+        self.assertEqual(data["planned_rows"], int(e["detail"].split()[0]))
+        self.assertEqual(data["measured_rows"], sum(1 for r in timeline if r["edge"] == "in_S"))
+        f = summary["ego"]["base_link_to_front"]
+        self.assertAlmostEqual(data["s_base"][10], float(timeline[10]["s_front"]) - f, places=6)
+        # the planned lane is the left one of in_S (two 3.2 m lanes): borders at -4.8, -1.6, 1.6
+        (edge,) = data["edges"]
+        self.assertEqual((edge["edge"], edge["planned"], edge["assumed"]), ("in_S", 1, False))
+        self.assertEqual([round(b, 2) for b in edge["borders"]], [-4.8, -1.6, 1.6])
+        self.assertIn("lateral.png", pictures("lane_change_then_left"))
+        self.assertNotIn("lateral.png", pictures("tl_yellow_pass"))
+
+    def test_lane_change_phases_from_events(self):
+        from plotting.lateral import lateral_data
+        _, timeline, events, summary, metrics, inputs = load("lane_change_approval_delay")
+        data = lateral_data(timeline, events, summary, inputs)
+        f = summary["ego"]["base_link_to_front"]
+        (lc,) = summary["lane_changes"]
+        ev = {(e["from"], e["to"]): e for e in events if e["kind"] == "lane_change"}
+        phases = {p["phase"]: p for p in data["phases"] if p["s1"] > p["s0"]}
+        self.assertEqual(sorted(phases), ["pending", "running", "shifting", "waiting_approval"])
+        wait = phases["waiting_approval"]
+        self.assertAlmostEqual(wait["s0"], float(ev[("pending", "waiting_approval")]["s_front"]) - f, places=3)
+        self.assertAlmostEqual(wait["s1"], lc["approval_s_base"], places=2)
+        self.assertAlmostEqual(phases["shifting"]["s0"], lc["lateral_start_s"], places=3)
+        self.assertAlmostEqual(phases["shifting"]["s1"], lc["lateral_end_s"], places=3)
+        self.assertLess(wait["s1"], phases["running"]["s1"])
+        marks = {m["what"]: m for m in data["marks"]}
+        self.assertAlmostEqual(marks["approved"]["t"], lc["approval_time"], places=3)
+        self.assertAlmostEqual(marks["done"]["s"], float(ev[("running", "done")]["s_front"]) - f, places=3)
+
+    def test_obstacle_where_the_scenario_puts_it(self):
+        from plotting.lateral import lateral_data
+        _, timeline, events, summary, metrics, inputs = load("avoidance_left")
+        data = lateral_data(timeline, events, summary, inputs)
+        self.assertEqual(data["phases"], [])  # no lane change
+        (ob,) = data["obstacles"]
+        # scenarios/avoidance_left.yaml: {id: parked, edge: in_S, lane: 0, pos: 120, length: 4.5}; in_S starts the route
+        self.assertEqual(ob["id"], "parked")
+        self.assertAlmostEqual(ob["s1"], 120.0, delta=0.05)
+        self.assertAlmostEqual(ob["s0"], 115.5, delta=0.05)
+        self.assertAlmostEqual(ob["y0"], -0.9, places=6)
+        peak = max(v for v in data["planned"] if v == v)
+        self.assertGreater(peak - summary["ego"]["width"] / 2, ob["y1"])  # the plan clears it
+        self.assertLessEqual(data["x_range"][0], ob["s0"])
+        self.assertGreaterEqual(data["x_range"][1], ob["s1"])
+
+
+class Speed(unittest.TestCase):
+    def test_jerk_from_the_accel_column(self):
+        from plotting.speed import speed_data
+        _, timeline, _, summary, metrics, inputs = load("lane_change_then_left")
+        data = speed_data(timeline, summary, metrics, inputs.net)
+        self.assertEqual(len(data["jerk"]), len(timeline) - 1)
+        t = [float(r["time"]) for r in timeline]
+        a = [float(r["accel"]) for r in timeline]
+        for i, j in data["jerk"][:40]:
+            self.assertAlmostEqual(j, (a[i] - a[i - 1]) / (t[i] - t[i - 1]), places=9)
+        self.assertAlmostEqual(max(abs(j) for _, j in data["jerk"]), metrics["max_jerk"], delta=0.01)
+        self.assertGreater(metrics["max_jerk"], 0.5)
+        self.assertEqual(len(data["jerk_s"]), len(data["jerk"]))
+
+    def test_lane_speed_limit_from_the_net(self):
+        from plotting.speed import speed_data
+        _, timeline, _, summary, metrics, inputs = load("lane_change_then_left")
+        data = speed_data(timeline, summary, metrics, inputs.net)
+        self.assertIsNone(data["limit_note"])
+        net = ET.parse(os.path.join(SRC, "sumo_nets", "cross", "cross.net.xml"))
+        speed = {l.get("id"): float(l.get("speed")) for l in net.iter("lane")}
+        turn = next(s for s in metrics["sections"] if s["kind"] == "turn")
+        internal = [seg for seg in data["limits"] if seg[2] < speed["in_S_1"]]
+        self.assertEqual(len(internal), 1)
+        s0, s1, limit, lane = internal[0]
+        self.assertEqual(limit, speed[lane])
+        self.assertTrue(lane.startswith(":C_"), lane)
+        self.assertAlmostEqual(s0, turn["s_start"], delta=0.1)  # the junction's first internal lane starts there
+        self.assertAlmostEqual(s1, turn["s_end"], delta=0.1)
+        self.assertEqual(data["limits"][0][2], speed["in_S_1"])
+        # the speed stays under the limit where the front is
+        for r in timeline:
+            if r["lane"] in speed:
+                self.assertLessEqual(float(r["speed"]), speed[r["lane"]] + 0.05, r)
+
+
+class Dilemma(unittest.TestCase):
+    def test_only_a_light_where_yellow_or_red_was_met(self):
+        from plotting.dilemma import dilemma_data
+        _, timeline, _, summary, metrics, _ = load("lane_change_then_left")
+        self.assertTrue(any(r["tl_id"] == "C" for r in timeline))
+        self.assertTrue(all(r["tl_state"] in ("g", "G", "") for r in timeline))
+        self.assertIsNone(dilemma_data(timeline, summary, metrics))
+        self.assertNotIn("dilemma.png", pictures("lane_change_then_left"))
+        _, timeline, _, summary, metrics, _ = load("tl_yellow_pass")
+        data = dilemma_data(timeline, summary, metrics)
+        (panel,) = data["panels"]
+        self.assertEqual(panel["light"], "C")
+        d, v, state, _, t = panel["points"][panel["first_stop_state"]]
+        first_yellow = next(r for r in timeline if r["tl_state"] in ("y", "Y"))
+        self.assertEqual(state, first_yellow["tl_state"])
+        self.assertAlmostEqual(t, float(first_yellow["time"]), places=3)
+        self.assertAlmostEqual(d, float(first_yellow["stop_distance"]), places=3)
+        lo, hi = panel["d_range"]
+        self.assertLess(lo, 0)
+        self.assertGreater(hi, d)
+        self.assertGreaterEqual(hi, max(data["curve"]["yellow"]))
+        self.assertIn("y", panel["met"])
+        self.assertIn("dilemma.png", pictures("tl_yellow_pass"))
+
+
+class HeatMap(unittest.TestCase):
+    def test_centred_on_zero_with_failed_and_errored_cells(self):
+        from plotting.sweep_plots import heatmap_data
+        out = RUNS["sweep"]
+        csv_path = os.path.join(out, "results.csv")
+        data = heatmap_data(csv_path, "turn1.lead_distance", "turn_signal_search_time", "ego.max_speed")
+        self.assertEqual(data["name"], "turn1.lead_distance_by_max_speed_turn_signal_search_time.png")
+        self.assertTrue(os.path.isfile(os.path.join(out, "plots", data["name"])), os.listdir(os.path.join(out, "plots")))
+        norm = data["norm"]
+        self.assertEqual(data["cmap"], "RdBu")
+        self.assertAlmostEqual(norm.vmin, -norm.vmax)
+        self.assertAlmostEqual(float(norm(0.0)), 0.5)
+        with open(csv_path, newline="") as f:
+            rows = list(csv.DictReader(f))
+        leads = [float(r["turn1.lead_distance"]) for r in rows if r["turn1.lead_distance"]]
+        self.assertAlmostEqual(norm.vmax, max(abs(v) for v in leads), places=6)
+        self.assertIn("[m]", data["colorbar_label"])
+        self.assertEqual(data["averaged"], ["sumo_args"])
+        self.assertIn("mean over sumo_args", data["title"])
+        # marked cells: exactly those with a failed or errored run in results.csv
+        want = {}
+        for r in rows:
+            key = (data["ys"].index(r["ego.max_speed"]), data["xs"].index(r["turn_signal_search_time"]))
+            failed, errors = want.get(key, (0, 0))
+            want[key] = (failed + (r["status"] == "failed"), errors + (r["status"] == "error"))
+        want = {k: v for k, v in want.items() if v != (0, 0)}
+        self.assertEqual({(i, j): (f, e) for _, i, j, f, e in data["marked"]}, want)
+        self.assertEqual(sum(f for _, _, _, f, _ in data["marked"]), 2)  # search time 0.5 s: lead < 30 m, both speeds
+        self.assertEqual(sum(e for _, _, _, _, e in data["marked"]), 4)
+        # the errored runs give no value: each cell's mean is its one finished run's
+        (panel,) = data["panels"]
+        for r in rows:
+            if r["status"] != "error":
+                i, j = data["ys"].index(r["ego.max_speed"]), data["xs"].index(r["turn_signal_search_time"])
+                self.assertAlmostEqual(panel["grid"][i, j], float(r["turn1.lead_distance"]), places=6)
+                self.assertEqual(panel["counts"][i, j], 1)
+
+    def test_boolean_share_and_sequential_map(self):
+        from plotting.sweep_plots import file_name, heatmap_data
+        data = heatmap_data(os.path.join(RUNS["sweep"], "results.csv"), "turn1.missed", "turn_signal_search_time",
+                            "ego.max_speed")
+        self.assertTrue(data["boolean"])
+        self.assertEqual((data["norm"].vmin, data["norm"].vmax), (0.0, 1.0))
+        self.assertIn("share of runs", data["colorbar_label"])
+        self.assertLessEqual(len(file_name("red_light_violations", "stop_release_confirmation_time",
+                                           "perception.misclassification_probability")), 64 + 4)
+
+
+if __name__ == "__main__":
+    if BIN is None:
+        print(__doc__)
+        sys.exit(2)
+    unittest.main(argv=[sys.argv[0], "-v"] + sys.argv[3:])
