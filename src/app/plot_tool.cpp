@@ -1,3 +1,4 @@
+// tools/plot: where it is ($SIGNALSIM_PLOT_TOOL or the data directory) and running it; see plot_tool.hpp.
 #include "app/plot_tool.hpp"
 
 #include <cstdio>
@@ -5,12 +6,13 @@
 #include <filesystem>
 
 #include "batch/process_pool.hpp"
+#include "scenario/data_dir.hpp"
 
 namespace signalsim::app {
 
 std::string plot_tool_path() {
   if (const char* env = std::getenv("SIGNALSIM_PLOT_TOOL"); env && *env) return env;
-  return SIGNALSIM_PLOT_TOOL;
+  return (std::filesystem::path(data_dir()) / "tools" / "plot").string();
 }
 
 int run_plot_tool(const std::vector<std::string>& args) {

@@ -6,7 +6,7 @@
 
 namespace signalsim::app {
 
-/// $SIGNALSIM_PLOT_TOOL, else the source tree's tools/plot (compiled in).
+/// $SIGNALSIM_PLOT_TOOL, else the data directory's tools/plot (scenario/data_dir.hpp).
 std::string plot_tool_path();
 
 /// Runs `tools/plot ARGS...` in the foreground. Returns its exit code (127: could not start).

@@ -1,9 +1,11 @@
+// Country presets: the files of config/countries/ (listed, checked, read); see countries.hpp.
 #include "scenario/countries.hpp"
 
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 
+#include "scenario/data_dir.hpp"
 #include "scenario/input_error.hpp"
 #include "scenario/yaml_fields.hpp"
 
@@ -41,7 +43,7 @@ Country read_country(const fs::path& path) {
 
 std::string config_dir() {
   if (const char* env = std::getenv("SIGNALSIM_CONFIG_DIR"); env && *env) return env;
-  return SIGNALSIM_DEFAULT_CONFIG_DIR;
+  return (fs::path(data_dir()) / "config").string();
 }
 
 std::string unknown_country_reason(const std::string& code) {

@@ -16,7 +16,8 @@ struct Country {
   YAML::Node parameters;   ///< Autoware names -> values (applied like a parameter file)
 };
 
-/// config/ folder: $SIGNALSIM_CONFIG_DIR, else the source tree's config/ (compiled in).
+/// config/ folder: $SIGNALSIM_CONFIG_DIR, else the data directory's config/ (scenario/data_dir.hpp).
+/// Throws InputError when neither is there.
 std::string config_dir();
 
 /// Whether `code` names a preset: a file config/countries/<code>.yaml listed in that folder.

@@ -1,0 +1,29 @@
+# Installation and the data directory (docs/install.md): what `cmake --install build --prefix P`
+# puts where, and the marker that lets a binary of this build tree find this source tree's data.
+# The binary looks for its data relative to itself (src/scenario/data_dir.cpp); no path of the build
+# or source tree is compiled in. Included after every add_subdirectory (it names their targets).
+
+# Installed layout: P/bin/signalsim and P/share/signalsim/. The binary knows only the relative path.
+set(SIGNALSIM_INSTALL_BINDIR bin)
+set(SIGNALSIM_INSTALL_DATADIR share/signalsim)
+file(RELATIVE_PATH SIGNALSIM_INSTALL_DATA_FROM_BIN
+     /prefix/${SIGNALSIM_INSTALL_BINDIR} /prefix/${SIGNALSIM_INSTALL_DATADIR})
+set_source_files_properties(src/scenario/data_dir.cpp TARGET_DIRECTORY signalsim_scenario PROPERTIES
+  COMPILE_DEFINITIONS SIGNALSIM_INSTALL_DATA_FROM_BIN="${SIGNALSIM_INSTALL_DATA_FROM_BIN}")
+
+# Build tree: one line naming the source tree, found by walking up from the binary's folder. It is
+# not installed, so an installed binary never reads this tree.
+file(CONFIGURE OUTPUT ${PROJECT_BINARY_DIR}/signalsim-data-dir.txt CONTENT "${PROJECT_SOURCE_DIR}\n")
+
+# SUMO outside the system's library folders (a SUMO_HOME build) stays found by the installed binary.
+set_target_properties(signalsim PROPERTIES INSTALL_RPATH_USE_LINK_PATH TRUE)
+
+install(TARGETS signalsim RUNTIME DESTINATION ${SIGNALSIM_INSTALL_BINDIR})
+install(DIRECTORY config DESTINATION ${SIGNALSIM_INSTALL_DATADIR})
+# tools/plot (run --plot, sweep --plot, compare) and the python modules it imports.
+install(PROGRAMS tools/plot DESTINATION ${SIGNALSIM_INSTALL_DATADIR}/tools)
+install(DIRECTORY tools/plotting DESTINATION ${SIGNALSIM_INSTALL_DATADIR}/tools FILES_MATCHING PATTERN "*.py" PATTERN __pycache__ EXCLUDE)
+# The bundled suite and its nets (scenarios name ../config and ../sumo_nets). scenarios/sweeps is
+# left out: its sweep names the test data (tests/data), which is not installed.
+install(DIRECTORY scenarios DESTINATION ${SIGNALSIM_INSTALL_DATADIR} PATTERN sweeps EXCLUDE)
+install(DIRECTORY sumo_nets DESTINATION ${SIGNALSIM_INSTALL_DATADIR})
