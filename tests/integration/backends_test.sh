@@ -23,6 +23,17 @@ failures=0
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 
 free_port() { "$py" -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])'; }
+# wait_listening PORT: until a socket listens on PORT (read from /proc/net/tcp: a probe connection
+# would take one of the server's client places). signalsim's --connect tries once: a SUMO that has
+# not bound its port yet on a loaded machine is a refused connection.
+wait_listening() {
+  local hex; hex=$(printf ':%04X ' "$1")
+  for _ in $(seq 200); do
+    awk '$4 == "0A" {print $2 " "}' /proc/net/tcp /proc/net/tcp6 2>/dev/null | grep -q "$hex" && return 0
+    sleep 0.05
+  done
+  fail "no SUMO listening on port $1 after 10 s"
+}
 
 # Xvfb on a display it picks itself (-displayfd), local connections only.
 exec 3<> "$work/display"
@@ -39,10 +50,14 @@ sys.path.insert(0, "/usr/share/sumo/tools")
 import traci
 port, order, until = int(sys.argv[1]), int(sys.argv[2]), float(sys.argv[3])
 pause = float(sys.argv[4]) if len(sys.argv) > 4 else 0.0
+mark = float(sys.argv[5]) if len(sys.argv) > 5 else None  # print "mark" once this time is reached
 traci.init(port, host="127.0.0.1")
 traci.setOrder(order)
 while traci.simulation.getTime() < until:
     traci.simulationStep()
+    if mark is not None and traci.simulation.getTime() >= mark:
+        print("mark", flush=True)
+        mark = None
     time.sleep(pause)
 print("other client reached", traci.simulation.getTime())
 traci.close()
@@ -71,6 +86,7 @@ connect() {
   local port; port=$(free_port)
   sumo "$@" --remote-port "$port" --num-clients 2 >"$work/$name.server.log" 2>&1 &
   local server=$!; pids+=($server)
+  wait_listening "$port"
   "$py" "$work/other_client.py" "$port" 1 100 >"$work/$name.other.log" 2>&1 &
   local other=$!; pids+=($other)
   "$bin" run "$scenario" --out "$work/$name" --connect "127.0.0.1:$port" --client-order 2 --quiet \
@@ -121,6 +137,7 @@ port=$(free_port)
 sumo -n "$src/sumo_nets/cross/cross.net.xml" --remote-port "$port" --step-length 0.5 --no-step-log true \
   >"$work/mismatch.server.log" 2>&1 &
 server=$!; pids+=($server)
+wait_listening "$port"
 "$bin" run "$s1" --out "$work/mismatch" --connect "127.0.0.1:$port" >/dev/null 2>"$work/mismatch.err"
 code=$?
 [ $code -eq 2 ] || fail "step-length mismatch: exit code $code, want 2"
@@ -136,6 +153,7 @@ sumo -n "$src/sumo_nets/cross/cross.net.xml" -r "$src/tests/data/user_sumo/other
   -a "$src/tests/data/user_sumo/vtypes.add.xml" --remote-port "$port" --step-length 0.1 --no-step-log true \
   >"$work/other.server.log" 2>&1 &
 server=$!; pids+=($server)
+wait_listening "$port"
 "$bin" run "$s2" --out "$work/other" --connect "127.0.0.1:$port" >/dev/null 2>"$work/other.err"
 code=$?
 [ $code -eq 2 ] || fail "other route: exit code $code, want 2"
@@ -143,15 +161,17 @@ grep -q "vehicle 'veh42' drives \[in_S out_N\] in SUMO, not the route \[in_S out
   fail "other route: $(cat "$work/other.err")"
 wait "$server"
 
-# 5. The server dies mid-run (kill -9 after 1 s, while the other client paces the run): one line,
+# 5. The server dies mid-run (kill -9 once the run has reached 5 s, both clients stepping, while the
+# other client paces the run): one line,
 # exit 2, an error summary, and no timeline passed off as a finished run.
 port=$(free_port)
 sumo -n "$src/sumo_nets/cross/cross.net.xml" --remote-port "$port" --num-clients 2 --step-length 0.1 \
   --no-step-log true >"$work/lost.server.log" 2>&1 &
 server=$!; pids+=($server)
-"$py" "$work/other_client.py" "$port" 1 100 0.01 >"$work/lost.other.log" 2>&1 &
+wait_listening "$port"
+"$py" "$work/other_client.py" "$port" 1 100 0.01 5 >"$work/lost.other.log" 2>&1 &
 pids+=($!)
-(sleep 1; kill -9 "$server") &
+(for _ in $(seq 1200); do grep -q "^mark" "$work/lost.other.log" && break; sleep 0.05; done; kill -9 "$server") &
 "$bin" run "$s1" --out "$work/lost" --connect "127.0.0.1:$port" --client-order 2 >/dev/null 2>"$work/lost.err"
 code=$?
 [ $code -eq 2 ] || fail "lost connection: exit code $code, want 2"
