@@ -6,7 +6,6 @@ namespace signalsim {
 
 namespace {
 
-constexpr double kRestSpeed = 0.01;        // [m/s] below this the ego is at rest
 constexpr double kLeaderRange = 100.0;     // [m] how far ahead a leader explains a rest
 constexpr double kJunctionApproach = 10.0;  // [m] the front this close to a junction waits at it
 

@@ -20,6 +20,10 @@
 
 namespace signalsim {
 
+/// [m/s] below this the ego is at rest: the stuck rule (either direction), a stop at a light, and a
+/// commanded speed that holds the ego.
+inline constexpr double kRestSpeed = 0.01;
+
 /// A read-only query the step loop answers from the SUMO session: the vehicle ahead of the ego on
 /// its route within `range` metres and the gap from the ego's front to its rear (nothing if none).
 using LeaderQuery = std::function<std::optional<LeaderInfo>(double range)>;

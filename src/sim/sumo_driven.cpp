@@ -58,7 +58,12 @@ class LightWatch {
       const sumo::ApproachLight& light = lights_[nearest_];
       if (row.s_front >= route_.at(light.route_index).s_start && asks_to_stop(states_[nearest_])) {
         const double stop_s = light.s_stop_line - stop_margin_;
-        LightStop stop{light.tls_id, row.time, stop_s, row.s_front, row.s_front - stop_s};
+        LightStop stop;
+        stop.tl_id = light.tls_id;
+        stop.time = row.time;
+        stop.stop_s = stop_s;
+        stop.rest_s = row.s_front;
+        stop.error = row.s_front - stop_s;
         stop.by_judge = false;
         record.stops.push_back(stop);
         resting_ = true;

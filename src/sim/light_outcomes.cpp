@@ -1,0 +1,58 @@
+// Stops and red-light crossings of a signalsim-driven run; see light_outcomes.hpp.
+#include "sim/light_outcomes.hpp"
+
+#include <algorithm>
+
+namespace signalsim {
+namespace {
+
+bool is_red(char state) { return state == 'r' || state == 'u'; }
+
+}  // namespace
+
+void LightOutcomes::observe(const TimelineRow& row, const std::vector<LightStep>& lights, const LightStep* stopping,
+                            const LeaderQuery& leader, const RouteMap& route, RunRecord& record) {
+  // A stop: the first step at rest while a stop is requested; a new one only after moving again.
+  // The error is measured against the stop line minus stop_margin, not the judge's stop point,
+  // which restart suppression moves to wherever the ego stands (spec TLJ §1.6).
+  const bool at_rest = row.speed < kRestSpeed;
+  if (at_rest && stopping && !resting_) {
+    const double stop_s = stopping->light->s_stop_line - stop_margin_;
+    LightStop stop;
+    stop.tl_id = stopping->light->tls_id;
+    stop.time = row.time;
+    stop.stop_s = stop_s;
+    stop.rest_s = row.s_front;
+    stop.error = row.s_front - stop_s;
+    stop.decision = stopping->result.decision;
+    stop.worst_level = worst_level_;
+    const double to_go = stop_s - row.s_front;
+    if (to_go > kQueueGap) {
+      if (const auto ahead = leader(to_go); ahead && ahead->gap < to_go) stop.queued_behind = ahead->id;
+      const std::size_t here = route.index_at(row.s_front);
+      if (stop.queued_behind.empty() && here != stopping->light->route_index)
+        for (std::size_t i = here; i < stopping->light->route_index; ++i)
+          if (route.at(i).is_internal) {  // the junction the ego is in, or the next one ahead
+            stop.waiting_at = route.at(i).junction_id;
+            break;
+          }
+    }
+    record.stops.push_back(stop);
+    resting_ = true;
+  }
+  if (!at_rest) resting_ = false;
+  if (row.stop_level) worst_level_ = std::max(worst_level_, *row.stop_level);
+  if (!stopping) worst_level_ = StopLevel::Normal;
+  // A red crossing: the front passes a stop line (beyond a 5 cm stopping tolerance) during a step
+  // that began with the ego's link red. Every light in the window is checked, not only the nearest.
+  for (const LightStep& light : lights) {
+    const double line = light.light->s_stop_line + kCrossingTolerance;
+    auto previous = previous_.find(light.light->route_index);
+    if (previous != previous_.end() && previous->second.front <= line && row.s_front > line &&
+        is_red(previous->second.state))
+      record.red_violations.push_back({light.light->tls_id, row.time, row.s_front});
+    previous_[light.light->route_index] = {row.s_front, light.own_state};
+  }
+}
+
+}  // namespace signalsim

@@ -1,0 +1,44 @@
+// What happened at the lights of a signalsim-driven run, as it happens (RunRecord::stops and
+// RunRecord::red_violations): each stop of the ego at a light it brakes for (its rest position
+// against the stop point, the worst stop level on the way, a queue or junction it waited behind
+// instead), and each crossing of a stop line on red, at every light in the judges' window.
+// sumo_driven.cpp keeps the same rules for a SUMO-driven run (LightWatch).
+#pragma once
+
+#include <cstddef>
+#include <map>
+#include <vector>
+
+#include "map/route_map.hpp"
+#include "report/timeline.hpp"
+#include "sim/light_stage.hpp"
+#include "sim/stuck_watch.hpp"
+
+namespace signalsim {
+
+class LightOutcomes {
+ public:
+  /// `stop_margin` [m]: the judge's (a stop's error is measured against stop line - stop_margin).
+  explicit LightOutcomes(double stop_margin) : stop_margin_(stop_margin) {}
+
+  /// One step's row. `lights`: every light in the window this step. `stopping`: the light whose
+  /// stop the ego is braking for this step, if any. `leader`: SUMO's vehicle ahead, to tell a rest
+  /// in the queue before a light from the ego's own stop. Appends to record.stops and
+  /// record.red_violations.
+  void observe(const TimelineRow& row, const std::vector<LightStep>& lights, const LightStep* stopping,
+               const LeaderQuery& leader, const RouteMap& route, RunRecord& record);
+
+ private:
+  struct Previous {
+    double front = 0.0;
+    char state = 0;
+  };
+  static constexpr double kCrossingTolerance = 0.05;  // [m]
+  static constexpr double kQueueGap = 0.5;            // [m] closer to its stop point, the ego stopped itself
+  double stop_margin_;
+  bool resting_ = false;
+  StopLevel worst_level_ = StopLevel::Normal;
+  std::map<std::size_t, Previous> previous_;  // by approach route index
+};
+
+}  // namespace signalsim
