@@ -5,6 +5,8 @@
 #include "app/batch_cli.hpp"
 #include "app/command.hpp"
 #include "app/strict_params_flag.hpp"
+#include "batch/run_list.hpp"
+#include "batch/scenario_files.hpp"
 #include "scenario/input_error.hpp"
 
 namespace signalsim::app {

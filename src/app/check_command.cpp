@@ -18,7 +18,11 @@
 #include "app/cli_numbers.hpp"
 #include "app/command.hpp"
 #include "batch/golden.hpp"
+#include "batch/junit_xml.hpp"
+#include "batch/run_list.hpp"
 #include "batch/run_outputs.hpp"
+#include "batch/scenario_files.hpp"
+#include "report/atomic_file.hpp"
 #include "scenario/input_error.hpp"
 
 namespace signalsim::app {

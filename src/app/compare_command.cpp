@@ -26,11 +26,12 @@
 #include "app/plot_tool.hpp"
 #include "batch/process_pool.hpp"
 #include "batch/run_outputs.hpp"
+#include "batch/scenario_files.hpp"
+#include "report/atomic_file.hpp"
 #include "report/expectations.hpp"
 #include "scenario/input_error.hpp"
 #include "scenario/scenario.hpp"
 #include "sim/session_setup.hpp"
-#include "batch/sweep.hpp"
 #include "sumo/net_index.hpp"
 
 namespace signalsim::app {

@@ -6,6 +6,9 @@
 #include "app/batch_cli.hpp"
 #include "app/command.hpp"
 #include "app/plot_tool.hpp"
+#include "batch/run_list.hpp"
+#include "batch/sweep_file.hpp"
+#include "batch/sweep_plot_check.hpp"
 #include "scenario/input_error.hpp"
 
 namespace signalsim::app {

@@ -17,7 +17,8 @@
 #include "batch/results_file.hpp"
 #include "batch/run_outputs.hpp"
 #include "scenario/input_error.hpp"
-#include "report/metrics.hpp"
+#include "report/atomic_file.hpp"
+#include "report/metric_columns.hpp"
 
 namespace signalsim {
 namespace fs = std::filesystem;

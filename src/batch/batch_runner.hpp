@@ -19,8 +19,9 @@
 #include <string>
 #include <vector>
 
+#include "batch/results_table.hpp"
+#include "batch/run_spec.hpp"
 #include "report/exit_codes.hpp"
-#include "batch/sweep.hpp"
 
 namespace signalsim {
 

@@ -7,9 +7,9 @@
 #include <limits>
 #include <map>
 
-#include "report/metrics.hpp"
+#include "batch/csv.hpp"
+#include "report/signal_sections.hpp"
 #include "report/outputs.hpp"
-#include "batch/sweep.hpp"
 
 namespace signalsim {
 namespace {

@@ -3,7 +3,7 @@
 // left in their directories (summary.json metrics, timeline.csv).
 //
 //   items    per scenario: the route's signal sections (turn, roundabout_entry, roundabout_exit;
-//            scenario/metrics signal_sections, numbered per kind from 1 like results.csv) and its
+//            report/signal_sections.hpp, numbered per kind from 1 like results.csv) and its
 //            lights (light1, ...), by route s (a light's stop line before a section starting there)
 //   rows     per item, one row per driver (signalsim, sumo): the run's metrics for that item, matched
 //            by kind and number (the route is the same, so both runs have the same sections)

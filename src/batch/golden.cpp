@@ -1,3 +1,5 @@
+// Comparing a run's events with a golden events.csv: the alignment and the diff a person reads
+// (see golden.hpp).
 #include "batch/golden.hpp"
 
 #include <algorithm>
@@ -23,23 +25,6 @@ std::string format(const char* fmt, auto... args) {
 std::string describe(const TimelineEvent& e) {
   return format("%9.3f s %9.3f m  %s %s -> %s (%s)", e.time, e.s_front, e.kind.c_str(), e.from.c_str(), e.to.c_str(),
                 e.source.c_str());
-}
-
-std::string xml_escape(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&apos;"; break;
-      default:
-        if (static_cast<unsigned char>(c) < 0x20 && c != '\n' && c != '\t' && c != '\r') out += ' ';
-        else out += c;
-    }
-  }
-  return out;
 }
 
 }  // namespace
@@ -117,40 +102,6 @@ std::string format_diff(const std::vector<EventDiff>& diff, const std::string& i
     }
   }
   if (diff.empty()) out += indent + "(no events on either side)\n";
-  return out;
-}
-
-std::string junit_xml(const std::string& suite, const std::vector<JUnitCase>& cases, double time) {
-  std::size_t failures = 0, errors = 0, skipped = 0;
-  for (const JUnitCase& c : cases) {
-    failures += c.result == JUnitCase::Result::Failed;
-    errors += c.result == JUnitCase::Result::Error;
-    skipped += c.result == JUnitCase::Result::Skipped;
-  }
-  std::string head = format(R"(tests="%zu" failures="%zu" errors="%zu" skipped="%zu" time="%.3f")", cases.size(),
-                            failures, errors, skipped, time);
-  std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
-  out += "<testsuites name=\"" + xml_escape(suite) + "\" " + head + ">\n";
-  out += "  <testsuite name=\"" + xml_escape(suite) + "\" " + head + ">\n";
-  for (const JUnitCase& c : cases) {
-    out += "    <testcase classname=\"" + xml_escape(suite) + "\" name=\"" + xml_escape(c.name) + "\" file=\"" +
-           xml_escape(c.file) + "\"" + format(" time=\"%.3f\"", c.time);
-    if (c.result == JUnitCase::Result::Passed && c.system_out.empty()) {
-      out += "/>\n";
-      continue;
-    }
-    out += ">\n";
-    if (c.result != JUnitCase::Result::Passed) {
-      const char* tag = c.result == JUnitCase::Result::Failed  ? "failure"
-                        : c.result == JUnitCase::Result::Error ? "error"
-                                                               : "skipped";
-      out += "      <" + std::string(tag) + " message=\"" + xml_escape(c.message) + "\"";
-      out += c.details.empty() ? "/>\n" : ">" + xml_escape(c.details) + "</" + tag + ">\n";
-    }
-    if (!c.system_out.empty()) out += "      <system-out>" + xml_escape(c.system_out) + "</system-out>\n";
-    out += "    </testcase>\n";
-  }
-  out += "  </testsuite>\n</testsuites>\n";
   return out;
 }
 

@@ -35,20 +35,4 @@ std::size_t count_differences(const std::vector<EventDiff>& diff);
 ///   "=" same, "~" moved (with the golden values and the deltas), "-" missing, "+" extra.
 std::string format_diff(const std::vector<EventDiff>& diff, const std::string& indent = "    ");
 
-/// A JUnit test case (one scenario).
-struct JUnitCase {
-  std::string name;       ///< the scenario
-  std::string file;       ///< its file
-  double time = 0.0;      ///< [s]
-  /// Skipped: nothing of the scenario's own was checked (it has no expectations; its events matched).
-  enum class Result { Passed, Failed, Error, Skipped } result = Result::Passed;
-  std::string message;    ///< one line
-  std::string details;    ///< the diff or the error text
-  std::string system_out; ///< the failed expectations, one per line (<system-out>), else empty
-};
-
-/// A JUnit XML document: one <testsuite name="suite"> with a <testcase> per case: <failure>, <error>
-/// or <skipped> with the message (and the details as its text), then <system-out> when there is any.
-std::string junit_xml(const std::string& suite, const std::vector<JUnitCase>& cases, double time);
-
 }  // namespace signalsim

@@ -7,10 +7,10 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "batch/csv.hpp"
 #include "sim/behavior_stage.hpp"
 #include "report/metrics.hpp"
 #include "sim/route_planning.hpp"
-#include "batch/sweep.hpp"
 #include "sumo/net_index.hpp"
 #include "sumo/route_builder.hpp"
 

@@ -6,8 +6,8 @@
 #include <functional>
 
 #include "batch/comparison.hpp"
+#include "batch/csv.hpp"
 #include "report/metrics.hpp"
-#include "batch/sweep.hpp"
 
 namespace signalsim {
 namespace {

@@ -3,6 +3,7 @@
 
 #include <functional>
 
+#include "report/metric_columns.hpp"
 #include "report/metrics.hpp"
 
 namespace signalsim {

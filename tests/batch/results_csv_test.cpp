@@ -1,8 +1,9 @@
 // results.csv: fixed columns around the metrics, a canonical metric order, quoting, reading back.
 #include <gtest/gtest.h>
 
-#include "report/metrics.hpp"
-#include "batch/sweep.hpp"
+#include "batch/results_table.hpp"
+#include "report/atomic_file.hpp"
+#include "report/metric_columns.hpp"
 #include "test_files.hpp"
 
 namespace signalsim {

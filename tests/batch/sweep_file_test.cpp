@@ -1,8 +1,9 @@
 // Sweep files: strict reading (errors with file:line), the grid x zip expansion and its order.
 #include <gtest/gtest.h>
 
+#include "batch/run_list.hpp"
+#include "batch/sweep_file.hpp"
 #include "scenario/input_error.hpp"
-#include "batch/sweep.hpp"
 #include "test_files.hpp"
 
 namespace signalsim {

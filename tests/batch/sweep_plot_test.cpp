@@ -4,9 +4,12 @@
 
 #include <string>
 
-#include "scenario/input_error.hpp"
+#include "batch/run_list.hpp"
+#include "batch/sweep_file.hpp"
+#include "batch/sweep_plot_check.hpp"
+#include "report/metric_columns.hpp"
 #include "report/metrics.hpp"
-#include "batch/sweep.hpp"
+#include "scenario/input_error.hpp"
 #include "test_files.hpp"
 
 namespace signalsim {

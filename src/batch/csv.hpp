@@ -1,0 +1,18 @@
+// CSV text (RFC 4180) as results.csv, timeline.csv, events.csv and compare's tables use it: quoting
+// one field, and splitting a whole text into records of fields. Nothing here knows any column.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace signalsim {
+
+/// `text` as one CSV field: as it is, or in double quotes (inner quotes doubled) when it holds a
+/// comma, a quote or a line break.
+std::string csv_field(const std::string& text);
+
+/// The records of a CSV text, each a list of fields (quotes removed). Lines end with \n or \r\n; a
+/// last line without a line break is a record too. Never throws.
+std::vector<std::vector<std::string>> parse_csv(const std::string& text);
+
+}  // namespace signalsim
