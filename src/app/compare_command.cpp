@@ -1,4 +1,4 @@
-// `signalsim compare PATH... --out DIR` (issue 11): every scenario twice on the same route and traffic,
+// `signalsim compare PATH... --out DIR` (docs/compare.md): every scenario twice on the same route and traffic,
 // driven by signalsim and by SUMO on its own (run --driver sumo), then OUT/comparison.csv, the
 // picture OUT/comparison.png (tools/plot) and a one-screen summary.
 //

@@ -22,7 +22,7 @@ Command add_sweep_command(CLI::App& app) {
   };
   auto o = std::make_shared<Options>();
   CLI::App* sub = app.add_subcommand("sweep", "Run a sweep file: scenarios x grid x zipped values; results.csv");
-  sub->add_option("file", o->file, "Sweep file (YAML, see README 'Batch runs and sweeps')")->required();
+  sub->add_option("file", o->file, "Sweep file (YAML, see docs/batch.md)")->required();
   add_batch_options(sub, o->batch, "the file's out:, else out/<sweep name>", true);
   sub->add_flag("--plot", o->plot, "Draw the file's plot: (a heat map of a metric over two swept keys) with tools/plot");
   sub->add_flag("--list", o->list, "Print the runs and exit without running them");

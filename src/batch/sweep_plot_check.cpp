@@ -30,7 +30,7 @@ std::string joined(const std::vector<std::string>& items, const std::string& sep
 }
 
 // --- what a plot: may show -------------------------------------------------------------------------
-// The results.csv columns that hold numbers (see results.csv in README and metric_columns.hpp's
+// The results.csv columns that hold numbers (see results.csv in docs/outputs.md and metric_columns.hpp's
 // flatten_metrics): the run-level metrics and the outcome counts; per section and per light the
 // numeric fields. The other fields hold text or true/false, which a heat map cannot show.
 const std::vector<std::string>& numeric_run_columns() {

@@ -22,7 +22,7 @@ std::string name_of(const Section& s) {
   return what + " " + (s.kind == SectionKind::LaneChange ? "on edge " : "at ") + s.id;
 }
 
-// Upper bound of the search distance of a turn or an entry (spec TSD §4.1, §5.1).
+// Upper bound of the search distance of a turn or an entry (docs/behaviour.md §T4.1, §T5.1).
 double search_upper(const Section& s, const SpeedProfile& speed, const RuleParameters& p) {
   if (s.search_override) return *s.search_override;
   const double reach = p.search_time * 40.0 + s.search_distance;  // beyond any speed the planner gives
@@ -34,7 +34,7 @@ struct Activation {
   std::string why;
 };
 
-// The front position from which the request of a turn or an entry is certainly stored (§4.4): the
+// The front position from which the request of a turn or an entry is certainly stored (§T4.4): the
 // lowest s such that start - s' < search(lower speed at s') for every s' in [s, start].
 Activation guaranteed_activation(const Section& s, const SpeedProfile& speed, const RuleParameters& p,
                                  double depart) {
@@ -49,16 +49,16 @@ Activation guaranteed_activation(const Section& s, const SpeedProfile& speed, co
   a.from = grid(k);
   if (grid(k + 1) < depart) {
     a.from = depart;
-    a.why = "within its search distance from the departure (the first step stores the desired start, spec TSD §4.4)";
+    a.why = "within its search distance from the departure (the first step stores the desired start, docs/behaviour.md §T4.4)";
     return a;
   }
   const double failing = grid(k + 1);
   if (s.search_override) {
-    a.why = "the lanelet's turn_signal_distance " + fixed(*s.search_override) + " m (spec TSD §4.3)";
+    a.why = "the lanelet's turn_signal_distance " + fixed(*s.search_override) + " m (docs/behaviour.md §T4.3)";
   } else {
     const double v = speed.lower(failing);
     a.why = "search " + fixed(p.search_time) + " s x " + fixed(v) + " m/s + " + fixed(s.search_distance) + " m = " +
-            fixed(search_at(failing)) + " m (spec TSD §4.1/§5.1) at the lowest speed the ego can have there (" +
+            fixed(search_at(failing)) + " m (docs/behaviour.md §T4.1/§T5.1) at the lowest speed the ego can have there (" +
             speed.lower_reason(failing) + ")";
   }
   return a;
@@ -87,8 +87,8 @@ Window initial_window(const Section& s, const SpeedProfile& speed, const RulePar
       w.from = std::max(s.exit_desired_start, depart);
       w.from_why = s.exit_desired_start < s.start - 1e-6
                        ? "from the start of the enable_exit_turn_signal chain at s " + fixed(s.exit_desired_start) +
-                             " (spec TSD §5.3; the exit-signal marking from the previous exit)"
-                       : "from the exit lanelet's start: exit signals have no search distance (spec TSD §5.3, §12.1.8)";
+                             " (docs/behaviour.md §T5.3; the exit-signal marking from the previous exit)"
+                       : "from the exit lanelet's start: exit signals have no search distance (docs/behaviour.md §T5.3, §T12.1.8)";
       break;
     case SectionKind::LaneChange: {
       const double v = speed.max_planned(s.lane_change_at - 150.0, s.lane_change_at) + kSpeedSlack;
@@ -98,9 +98,9 @@ Window initial_window(const Section& s, const SpeedProfile& speed, const RulePar
       return w;
     }
   }
-  w.possible_to = s.end + b2f;  // base_link leaves the section: its desired end (§4.3, §5.2, §5.3)
+  w.possible_to = s.end + b2f;  // base_link leaves the section: its desired end (§T4.3, §T5.2, §T5.3)
   w.to = w.possible_to;
-  w.to_why = "until base_link leaves it (its desired end, spec TSD §4.3/§5)";
+  w.to_why = "until base_link leaves it (its desired end, docs/behaviour.md §T4.3/§T5)";
   return w;
 }
 
@@ -122,7 +122,7 @@ void narrow(const Section& x, Window& wx, const Section& y, const Window& wy, co
     const double from = wy.possible_to + kMargin;
     if (from > wx.from) {
       wx.from = from;
-      wx.from_why = "after base_link leaves the " + name_of(y) + " (its request may win until then, spec TSD §6.2)";
+      wx.from_why = "after base_link leaves the " + name_of(y) + " (its request may win until then, docs/behaviour.md §T6.2)";
     }
     return;
   }
@@ -131,19 +131,19 @@ void narrow(const Section& x, Window& wx, const Section& y, const Window& wy, co
   if (y.kind == SectionKind::LaneChange) {
     to = x.start + b2f - kMargin;
     why = "until base_link reaches its start: the " + name_of(y) +
-          " follows and PRIOR_WINS keeps this request only to its required end (spec TSD §6.2, §7)";
+          " follows and PRIOR_WINS keeps this request only to its required end (docs/behaviour.md §T6.2, §T7)";
   } else if (module_of(y.kind) == module_of(x.kind)) {
     if (x.kind == SectionKind::RoundaboutExit && y.kind == SectionKind::RoundaboutEntry) {
       to = wy.possible_from - kMargin;
-      why = "until the " + name_of(y) + " may be queued: entries queue before exits (spec TSD §5.3, §12.1.7)";
+      why = "until the " + name_of(y) + " may be queued: entries queue before exits (docs/behaviour.md §T5.3, §T12.1.7)";
     } else {
       to = x.start + b2f - kMargin;
       why = "until base_link reaches its start: with the " + name_of(y) +
-            " queued, FIRST_ACTIVE drops it at its required end (spec TSD §4.3, §7)";
+            " queued, FIRST_ACTIVE drops it at its required end (docs/behaviour.md §T4.3, §T7)";
     }
   } else {
     to = y.start - kMargin;
-    why = "until the front reaches the " + name_of(y) + ": PRIOR_WINS keeps it only that far (spec TSD §6.2)";
+    why = "until the front reaches the " + name_of(y) + ": PRIOR_WINS keeps it only that far (docs/behaviour.md §T6.2)";
   }
   if (to < wx.to) {
     wx.to = to;
@@ -197,7 +197,7 @@ Derivation derive_expectations(const std::vector<Section>& sections, const Route
     e.blinker = to_string(s.side);
     // Through expectations start at least kMargin before the section: an exit whose request starts
     // at its own start (no marking) gets blinker_on from just after it, since the front exactly at
-    // the start has not reached it (spec TSD §5.3 "DIST - b2f >= 0"), and SUMO does hold the ego at
+    // the start has not reached it (docs/behaviour.md §T5.3 "DIST - b2f >= 0"), and SUMO does hold the ego at
     // a lane's very end for a step while the link ahead is not yet open.
     const bool whole = w.to >= s.end + b2f - 1e-9 && w.from <= s.start - kMargin;
     const bool named = !s.target.junction.empty() || !s.target.lanelet.empty();
@@ -238,11 +238,11 @@ Derivation derive_expectations(const std::vector<Section>& sections, const Route
     e.to_s = floor_tenth(q.second);
     e.why = "no request can be valid with the front in [" + fixed(e.from_s) + ", " + fixed(e.to_s) +
             "]: it is outside every turn's, roundabout's and lane change's possible stretch (search distance at "
-            "the upper speed, spec TSD §4.1, §5, §8.2)";
+            "the upper speed, docs/behaviour.md §T4.1, §T5, §T8.2)";
     stated.push_back(q);
     d.expectations.push_back(std::move(e));
   }
-  // No entry signal where the country gives none (spec TSD §5.2: on_entry None, no exit tag).
+  // No entry signal where the country gives none (docs/behaviour.md §T5.2: on_entry None, no exit tag).
   for (std::size_t i = 0; i < sections.size(); ++i) {
     const Section& s = sections[i];
     if (s.kind != SectionKind::RoundaboutEntry || s.side != Side::None) continue;
@@ -274,7 +274,7 @@ Derivation derive_expectations(const std::vector<Section>& sections, const Route
     e.kind = Kind::NoBlinker;
     e.from_s = ceil_tenth(best->first);
     e.to_s = floor_tenth(best->second);
-    e.why = name_of(s) + ": no entry signal (turn_signal_roundabout_on_entry None and no exit tag, spec TSD §5.2, §5.5)";
+    e.why = name_of(s) + ": no entry signal (turn_signal_roundabout_on_entry None and no exit tag, docs/behaviour.md §T5.2, §T5.5)";
     d.expectations.push_back(std::move(e));
   }
 
@@ -294,13 +294,13 @@ Derivation derive_expectations(const std::vector<Section>& sections, const Route
   GeneratedExpectation hazard;
   hazard.kind = Kind::BlinkerNever;
   hazard.blinker = "hazard";
-  hazard.why = "hazard lights only when a module drives backward (spec TSD §3.1): never here";
+  hazard.why = "hazard lights only when a module drives backward (docs/behaviour.md §T3.1): never here";
   d.expectations.push_back(std::move(hazard));
   if (!facts.lights.empty()) {
     GeneratedExpectation e;
     e.kind = Kind::NeverRunsRed;
     e.why = std::to_string(facts.lights.size()) + " light(s) on the route: the judge never lets the front cross a red "
-            "stop line (spec TLJ §1-§2)";
+            "stop line (docs/behaviour.md §L1-§L2)";
     d.expectations.push_back(std::move(e));
   }
   GeneratedExpectation arrives;

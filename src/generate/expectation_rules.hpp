@@ -1,29 +1,29 @@
-// The expectations a generated scenario states, derived from the rules alone (spec TSD §4-§6, §8.2;
-// spec TLJ) and the predicted speed (speed_profile.hpp), never from running signalsim. SUMO-free.
+// The expectations a generated scenario states, derived from the rules alone (docs/behaviour.md §T4-§T6, §T8.2;
+// docs/behaviour.md §L) and the predicted speed (speed_profile.hpp), never from running signalsim. SUMO-free.
 //
 // Per section X (sections.hpp) two stretches of the front bumper's route position:
 //   possible   P(X) = [early, desired end]: where X's request can be valid at all
 //                early  turn / entry: start - search at the upper speed (or the lanelet's
-//                       turn_signal_distance); exit: its desired start (§5.3); lane change: its
+//                       turn_signal_distance); exit: its desired start (§T5.3); lane change: its
 //                       earliest start - max(v_upper * search_time, minimum_search_distance)
 //                desired end: base_link leaves X (front at end + base_link_to_front; a lane change
 //                       ends before the front leaves its edge)
 //   guaranteed G(X) = [late, desired end], narrowed by every other section Y of another side (or a
 //              lane change) whose P(Y) overlaps it:
 //                late   turn / entry: the front position from which start - s < search at the lower
-//                       speed holds for every later s (so the stored desired start, §4.4, is passed
+//                       speed holds for every later s (so the stored desired start, §T4.4, is passed
 //                       there whatever the ego's speed); exit: its desired start; never before the
 //                       departure
 //                Y before X (it starts first): G starts after Y's desired end (Y may win until then)
-//                Y after X, by module (§6.1 RESOLVE takes one request per module):
+//                Y after X, by module (§T6.1 RESOLVE takes one request per module):
 //                  lane change        G ends before base_link reaches X's start: X's required end
-//                                     (§7) is not before it, and until then PRIOR_WINS keeps X (§6.2;
+//                                     (§T7) is not before it, and until then PRIOR_WINS keeps X (§T6.2;
 //                                     the lane change's required start moves with the ego)
-//                  same module        FIRST_ACTIVE pops X at its required end (§4.3), the same
+//                  same module        FIRST_ACTIVE pops X at its required end (§T4.3), the same
 //                                     bound; but an exit X is hidden by a later entry Y from Y's
-//                                     early activation on (entries queue first, §12.1.7)
+//                                     early activation on (entries queue first, §T12.1.7)
 //                  other module       PRIOR_WINS keeps X until the front reaches Y's required
-//                                     start (Y's start), whichever request is prior (§6.2)
+//                                     start (Y's start), whichever request is prior (§T6.2)
 // Emitted expectations (all numbers rounded inwards to 0.1 m after a kMargin):
 //   blinker_through_junction / _lanelet with lead = start - G start, when G covers X to its end and
 //   the section is one junction (or lanelet); else blinker_on over G (when at least 1 m); else none.

@@ -29,7 +29,7 @@ ParameterSet resolved_parameters(const std::string& country) {
     const Country c = load_country(country);
     params.apply(c.parameters, c.path);
   }
-  // spec TSD §5.2: with persistence the entry request lasts to the exit's end; the rules here do
+  // docs/behaviour.md §T5.2: with persistence the entry request lasts to the exit's end; the rules here do
   // not model that (no preset sets it).
   if (params.boolean("turn_signal_roundabout_entry_indicator_persistence"))
     throw GenerateError("--country " + country +
@@ -160,8 +160,8 @@ GenerateReport generate(const GenerateOptions& o) {
           std::string(kScenarioMarker + 2) + " (route " + std::to_string(number) + ", random walk " +
               std::to_string(report.walks) + " of seed " + std::to_string(o.seed) + "):",
           "  " + o.command_line,
-          "Net: " + o.net + " (net: below is relative to this file). The expectations come from the rules (spec TSD "
-          "§4-§6, §8.2; spec TLJ) and the route, never from a run; `signalsim run` on this file checks them."};
+          "Net: " + o.net + " (net: below is relative to this file). The expectations come from the rules (docs/behaviour.md "
+          "§T4-§T6, §T8.2; docs/behaviour.md §L) and the route, never from a run; `signalsim run` on this file checks them."};
       d.header.insert(d.header.begin(), header.begin(), header.end());
       if (!prepared) prepare_output_dir(o.out_dir);
       prepared = true;

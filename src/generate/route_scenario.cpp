@@ -46,7 +46,7 @@ Scenario planning_scenario(const std::string& path, const std::string& net_path,
 // (planning/stop, as the step loop starts it: -0.9 m/s^2 of the normal set's -1 m/s^2, jerk 1 m/s^3,
 // one step late, kLightRoom to spare) can shed before the first light's stop point. A light red at
 // the departure and closer than the judge's stopping distance is passed by the judge when the ego
-// can reach it within the yellow lamp period (spec TLJ §2.3), i.e. crossed on red.
+// can reach it within the yellow lamp period (docs/behaviour.md §L2.3), i.e. crossed on red.
 double depart_speed(const RouteMap& route, const std::vector<LightFact>& lights, double stop_margin,
                     const RouteScenarioOptions& o) {
   double v = std::min(o.max_speed, route.at(0).speed_limit);

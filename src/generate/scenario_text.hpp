@@ -1,5 +1,5 @@
 // The text of a generated scenario file: a comment block saying how it was generated and where every
-// expectation's number comes from, then the scenario (README "Scenario file") with an expect: list.
+// expectation's number comes from, then the scenario (docs/scenario.md) with an expect: list.
 // SUMO-free, pure; the same inputs give the same bytes.
 #pragma once
 

@@ -11,11 +11,11 @@ Side side_of(TurnDirection d) {
   return d == TurnDirection::Left ? Side::Left : d == TurnDirection::Right ? Side::Right : Side::None;
 }
 
-Side side_of_setting(const std::string& value) {  // "Left" / "Right" / anything else (spec TSD §1.4)
+Side side_of_setting(const std::string& value) {  // "Left" / "Right" / anything else (docs/behaviour.md §T1.4)
   return value == "Left" ? Side::Left : value == "Right" ? Side::Right : Side::None;
 }
 
-// spec TSD §5.2 tag format: brackets, commas and spaces all separate.
+// docs/behaviour.md §T5.2 tag format: brackets, commas and spaces all separate.
 bool tag_lists(const Lanelet& entry, const std::string& key, const std::vector<std::string>& names) {
   const auto it = entry.params.find(key);
   if (it == entry.params.end()) return false;
@@ -125,7 +125,7 @@ std::vector<Section> route_sections(const RouteMap& route, const SectionParamete
         Section s = section_of(route, spans, SectionKind::RoundaboutEntry, i, last);
         s.search_distance = params.roundabout_search_distance;
         s.side = side_of_setting(params.on_entry);
-        // The exit this route takes: the last lanelet of this roundabout after the entry (§5.2), named
+        // The exit this route takes: the last lanelet of this roundabout after the entry (§T5.2), named
         // by its connection's lanelets and the normal edge it leads onto (signalsim's SUMO names).
         std::optional<std::size_t> exit;
         for (std::size_t n = last + 1; n < route.size() && route.at(n).roundabout_role != RoundaboutRole::None &&
@@ -150,7 +150,7 @@ std::vector<Section> route_sections(const RouteMap& route, const SectionParamete
       } else {
         Section s = section_of(route, spans, SectionKind::RoundaboutExit, i, last);
         s.side = side_of_setting(params.on_exit);
-        // spec TSD §5.3: the earliest route predecessor of the chain tagged enable_exit_turn_signal.
+        // docs/behaviour.md §T5.3: the earliest route predecessor of the chain tagged enable_exit_turn_signal.
         std::size_t z = i;
         while (z > 0) {
           const auto& p = route.at(z - 1).params;
@@ -167,7 +167,7 @@ std::vector<Section> route_sections(const RouteMap& route, const SectionParamete
     if (l.roundabout_role != RoundaboutRole::None) continue;
     const Side side = side_of(l.turn_direction);
     if (side == Side::None) continue;
-    std::size_t last = i;  // spec TSD §4.2 grouping
+    std::size_t last = i;  // docs/behaviour.md §T4.2 grouping
     while (last + 1 < route.size() && route.at(last + 1).roundabout_role == RoundaboutRole::None &&
            route.at(last + 1).turn_direction == l.turn_direction)
       ++last;

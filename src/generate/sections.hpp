@@ -1,17 +1,17 @@
 // The stretches of a route that ask for a blinker, as the generator reads them from the rules
-// (spec TSD §4, §5, §8.2) and the route's lanelets (spec SUMO §3). SUMO-free and pure.
+// (docs/behaviour.md §T4, §T5, §T8.2) and the route's lanelets (docs/behaviour.md §S3). SUMO-free and pure.
 //
 //   turn              a group of consecutive turn lanelets (left/right) outside roundabouts, the
-//                     grouping of spec TSD §4.2; the intersection module's request (search distance
+//                     grouping of docs/behaviour.md §T4.2; the intersection module's request (search distance
 //                     turn_signal_intersection_search_distance, or the front lanelet's
 //                     turn_signal_distance)
 //   roundabout_entry  consecutive entry lanelets of one roundabout; the roundabout module's entry
-//                     request (§5.2): turn_signal_roundabout_on_entry, or left/right when the entry's
+//                     request (§T5.2): turn_signal_roundabout_on_entry, or left/right when the entry's
 //                     exit_turn_signal_left/right lists the exit the route takes; none: no request
 //   roundabout_exit   consecutive exit lanelets; turn_signal_roundabout_on_exit from the front
-//                     reaching the start of the enable_exit_turn_signal chain before it (§5.3; Japan's
+//                     reaching the start of the enable_exit_turn_signal chain before it (§T5.3; Japan's
 //                     previous-exit marking sets that chain, turn_signal/exit_signal_marking)
-//   lane_change       a lane change the route needs (behaviour module, §8.2): its blinker may be on
+//   lane_change       a lane change the route needs (behaviour module, §T8.2): its blinker may be on
 //                     (either side) from max(v * turn_signal_search_time,
 //                     turn_signal_minimum_search_distance) before its earliest start until the front
 //                     leaves its edge
@@ -31,7 +31,7 @@ const char* to_string(Side side);               ///< "none", "left", "right", "e
 enum class SectionKind { Turn, RoundaboutEntry, RoundaboutExit, LaneChange };
 const char* to_string(SectionKind kind);        ///< "turn", "roundabout_entry", ...
 
-/// The request module a section belongs to (spec TSD §3.2: I, Rb, B).
+/// The request module a section belongs to (docs/behaviour.md §T3.2: I, Rb, B).
 enum class Module { Intersection, Roundabout, Behavior };
 Module module_of(SectionKind kind);
 
@@ -50,7 +50,7 @@ struct Section {
   double end = 0.0;                   ///< route s of the last lanelet's end [m]
   SpanTarget target;
   /// Turn / entry: the search distance's constant part [m] and whether the lanelet overrides the
-  /// whole search distance (turn_signal_distance, spec TSD §4.3).
+  /// whole search distance (turn_signal_distance, docs/behaviour.md §T4.3).
   double search_distance = 30.0;
   std::optional<double> search_override;
   /// Exit: route s where its desired start lies (the enable_exit_turn_signal chain, else its start).

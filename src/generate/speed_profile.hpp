@@ -6,7 +6,7 @@
 //   upper     planned + kSpeedSlack: the ego is never faster (SUMO can only slow it).
 //   lower     what the ego has at least, when it may have to stop on the way:
 //               0 in every stop zone [p - braking distance, p] before a point p where it may stop
-//               (a light's stop line: the judge may stop it, spec TLJ; a link where SUMO makes it
+//               (a light's stop line: the judge may stop it, docs/behaviour.md §L; a link where SUMO makes it
 //               yield: minor, stop, all-way stop, zipper, blinking light), and after p at most the
 //               restart from rest sqrt(2 * kRestartShare * accel * (s - p));
 //             the lesser of that and planned - kSpeedSlack, never below 0.

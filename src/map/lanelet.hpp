@@ -11,12 +11,12 @@
 
 namespace signalsim {
 
-/// Autoware's lanelet attribute `turn_direction` (spec TSD §1.3; SUMO mapping spec SUMO §3).
+/// Autoware's lanelet attribute `turn_direction` (docs/behaviour.md §T1.3; SUMO mapping docs/behaviour.md §S3).
 enum class TurnDirection { None, Straight, Left, Right };
 
 std::string_view to_string(TurnDirection d);
 
-/// Role of a lanelet in a roundabout (spec TSD §5; taken from `<roundabout>`, spec SUMO §3).
+/// Role of a lanelet in a roundabout (docs/behaviour.md §T5; taken from `<roundabout>`, docs/behaviour.md §S3).
 enum class RoundaboutRole { None, Entry, Internal, Exit };
 
 std::string_view to_string(RoundaboutRole r);
@@ -43,13 +43,13 @@ struct Lanelet {
   std::string roundabout_id;           ///< which `<roundabout>` (its position in the net file), if any
   // For an internal ring -> ring lane (inside a ring junction): the junction has an exit off the ring.
   bool leaves_ring_at_end = false;  ///< a ring lanelet whose end has a connection off the ring (an exit branches there)
-  std::optional<double> turn_signal_distance;  ///< per-lanelet search distance (spec TSD §4.3)
-  std::map<std::string, std::string> params;   ///< lane params, merged with the approach lane's (spec SUMO §3)
+  std::optional<double> turn_signal_distance;  ///< per-lanelet search distance (docs/behaviour.md §T4.3)
+  std::map<std::string, std::string> params;   ///< lane params, merged with the approach lane's (docs/behaviour.md §S3)
   std::optional<TrafficLightLink> traffic_light;  ///< light of the connection leaving this lanelet
   double stop_offset = 0.0;            ///< `<stopOffset>` applying to this lane's end [m]
 
   double s_end() const { return s_start + length; }
-  /// Route s of the stop line at this lane's end: the end moved upstream by <stopOffset> (spec SUMO §2).
+  /// Route s of the stop line at this lane's end: the end moved upstream by <stopOffset> (docs/behaviour.md §S2).
   double stop_line_s() const { return s_end() - stop_offset; }
 };
 

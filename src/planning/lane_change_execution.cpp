@@ -27,7 +27,7 @@ double LaneChangeExecution::prepare_distance(double speed, double accel, double 
 }
 
 double LaneChangeExecution::candidate_start(const Step& step) const {
-  // The prepare segment on the original lane (spec TSD §8.2), driven in prepare_duration.
+  // The prepare segment on the original lane (docs/behaviour.md §T8.2), driven in prepare_duration.
   const double prepared =
       step.s_base + prepare_distance(step.speed, step.accel, step.max_speed, step.prepare_duration);
   const double start = std::min(std::max(timing_.earliest_start, prepared), timing_.latest_start);

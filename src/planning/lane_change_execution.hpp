@@ -1,5 +1,5 @@
 // When a lane change's lateral motion starts: the phases of Autoware's lane-change module
-// (spec TSD §8.2 "Lane change") executed on the route coordinate s.
+// (docs/behaviour.md §T8.2 "Lane change") executed on the route coordinate s.
 //
 //   Pending          the module is not running yet (its blinker is off); the ego keeps its lane.
 //   WaitingApproval  the module signals (waiting-for-approval request); the ego keeps its lane. It is
@@ -15,7 +15,7 @@
 //                    can no longer end on its edge and is given up (never executed half).
 //
 // prepare_duration is the module's calc_actual_prepare_duration: max(max_prepare_duration -
-// blinker-on time, min_prepare_duration) (spec TSD §8.2), so a blinker that has been on for a while
+// blinker-on time, min_prepare_duration) (docs/behaviour.md §T8.2), so a blinker that has been on for a while
 // shortens the prepare segment. At a constant speed the lateral motion therefore starts
 // max(max_prepare, blinker-on time at approval + min_prepare) seconds after the blinker came on.
 //

@@ -6,7 +6,7 @@
 // - s is base_link's route position [m]. A shift line says where base_link moves sideways.
 // - Offsets are lateral, left positive, metres from the centre line of the *reference lane* (the
 //   lane the maneuver is planned on: the original lane for a lane change or an avoidance, the
-//   driving lane for a pull out or pull over). This is the arc-coordinate convention of spec TSD §8.1.
+//   driving lane for a pull out or pull over). This is the arc-coordinate convention of docs/behaviour.md §T8.1.
 //
 // Profile: quintic minimum-jerk blend
 //   offset(s) = a + (b - a) * B(u),  u = (s - s_start) / (s_end - s_start),  B(u) = 10u^3 - 15u^4 + 6u^5

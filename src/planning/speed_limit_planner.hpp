@@ -20,7 +20,7 @@ struct SpeedLimits {
 /// Looks only as far ahead as the braking distance from max_speed: cost independent of the net.
 /// Lanelets starting at or beyond `limits_end` (route s) are not looked at: the step loop passes the
 /// stop line of a light the judge lets the ego pass on a stop signal (yellow, or red within reach),
-/// whose decision assumed the ego keeps its speed to the line (spec TLJ §2.3: d < v * yellow_lamp_period);
+/// whose decision assumed the ego keeps its speed to the line (docs/behaviour.md §L2.3: d < v * yellow_lamp_period);
 /// a lower limit beyond it (a turn) applies once the front has crossed the line.
 double plan_speed_under_limits(const RouteMap& route, double s_front, double speed, double dt,
                                const SpeedLimits& limits,

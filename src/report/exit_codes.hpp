@@ -1,4 +1,4 @@
-// The exit codes of every signalsim command, and how a batch reads its workers' (README "Exit codes").
+// The exit codes of every signalsim command, and how a batch reads its workers' (docs/batch.md).
 // 0 success, 1 an expectation (or regression) failed, 2 bad input; sweep --plot and compare: 3 the
 // picture failed; batch, sweep and check: 4 a run errored (no verdict); 130 interrupted, `run`: 143 on
 // SIGTERM.

@@ -272,7 +272,7 @@ void write_run_outputs(const std::string& dir, const Scenario& scenario, const s
   std::size_t emergency = 0;
   for (const TimelineEvent& e : record.events) emergency += e.kind == "light" && e.to == "emergency_stop";
   lights["emergency_stops"] = emergency;
-  if (record.v2i) {  // spec TLJ §1.7; only with V2I on, so every other summary stays as it was
+  if (record.v2i) {  // docs/behaviour.md §L1.7; only with V2I on, so every other summary stays as it was
     std::size_t stop_steps = 0;
     const TimelineRow* first = nullptr;
     for (const TimelineRow& row : record.rows)
@@ -292,7 +292,7 @@ void write_run_outputs(const std::string& dir, const Scenario& scenario, const s
     lights["v2i"] = {{"stop_steps", stop_steps}, {"first_stop", first_stop}};
   }
   summary["lights"] = lights;
-  // Each lane change as executed (spec TSD §8.2): blinker, approval, prepare, lateral motion.
+  // Each lane change as executed (docs/behaviour.md §T8.2): blinker, approval, prepare, lateral motion.
   nlohmann::ordered_json lane_changes = nlohmann::ordered_json::array();
   const auto rounded = [](const std::optional<double>& v) -> nlohmann::ordered_json {
     return v ? nlohmann::ordered_json(std::stod(fixed(*v, 3))) : nlohmann::ordered_json(nullptr);

@@ -51,7 +51,7 @@ SectionMetrics measure_section(const SignalSection& section, const RunRecord& re
   }
   // The front has reached the section once it is beyond its start: a front exactly at the start is
   // still on the lane before (SUMO holds a vehicle at a lane's end while a link is not yet open), and
-  // the reference's "front has reached it" test is strict too (spec TSD §5.3: DIST - b2f >= 0 is "not yet").
+  // the reference's "front has reached it" test is strict too (docs/behaviour.md §T5.3: DIST - b2f >= 0 is "not yet").
   const auto enter = std::find_if(rows.begin(), rows.end(),
                                   [&](const TimelineRow& r) { return r.s_front > section.s_start; });
   if (enter == rows.end()) return m;

@@ -11,8 +11,8 @@
 //   flickers         = blinker states shorter than 1 s (changes on both sides) that began between the
 //                      previous section's end and this one's end (front bumper, plus base_link_to_front)
 //
-// A lane change's lead_time is its blinker's lead over the lateral motion (the prepare time, spec
-// TSD §8.2). Values are rounded to 1 mm / 1 ms; what does not apply is empty (std::nullopt).
+// A lane change's lead_time is its blinker's lead over the lateral motion (the prepare time, docs/behaviour.md
+// §T8.2). Values are rounded to 1 mm / 1 ms; what does not apply is empty (std::nullopt).
 #pragma once
 
 #include <optional>

@@ -13,7 +13,7 @@ Blinker blinker_of_parameter(const std::string& value) {  // "None" / "Left" / "
 }
 
 // True when a lanelet param (e.g. exit_turn_signal_left="[a, b]") lists `lane_id`; brackets,
-// commas and spaces all separate (spec TSD §5.2).
+// commas and spaces all separate (docs/behaviour.md §T5.2).
 bool param_lists(const Lanelet& lanelet, const std::string& key, const std::string& lane_id) {
   const auto it = lanelet.params.find(key);
   if (it == lanelet.params.end()) return false;

@@ -6,7 +6,7 @@
 //                     blinker is the direction
 //   roundabout_entry  an entry lanelet; expected blinker turn_signal_roundabout_on_entry, or
 //                     left/right when the entry's exit_turn_signal_left/right lists the exit lanelet
-//                     the route takes (spec TSD §5.2)
+//                     the route takes (docs/behaviour.md §T5.2)
 //   roundabout_exit   an exit lanelet; expected blinker turn_signal_roundabout_on_exit
 //
 // A run adds its maneuvers' lateral motions (lane_change, avoidance, pull_out, pull_over) from

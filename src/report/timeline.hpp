@@ -16,7 +16,7 @@
 
 namespace signalsim {
 
-/// The TraCI signal bits that show a blinker in SUMO (spec SUMO §4).
+/// The TraCI signal bits that show a blinker in SUMO (docs/behaviour.md §S4).
 int signal_mask(Blinker blinker);
 
 struct TimelineRow {
@@ -39,11 +39,11 @@ struct TimelineRow {
   JudgeDecision tl_decision = JudgeDecision::None;
   JudgeZone zone = JudgeZone::None;
   std::optional<double> stop_distance;  ///< d: front bumper to the stop point [m] while judged
-  double judge_distance = 0.0;   ///< jerk-limited stopping distance [m] (spec TLJ §2.2) while judged
+  double judge_distance = 0.0;   ///< jerk-limited stopping distance [m] (docs/behaviour.md §L2.2) while judged
   double yellow_lamp_line = 0.0; ///< v * yellow_lamp_period [m] while judged
   std::optional<double> stop_s;  ///< route s of the stop point while a stop is requested
   std::optional<StopLevel> stop_level;  ///< constraint set used while braking for a stop
-  /// V2I (spec TLJ §1.7, only with v2i.use_remaining_time): the judge's V2I rule held this step,
+  /// V2I (docs/behaviour.md §L1.7, only with v2i.use_remaining_time): the judge's V2I rule held this step,
   /// and the predicted time to red of the ego's link in the predictions in force [s] (empty: none).
   bool v2i_stop = false;
   std::optional<double> v2i_time_to_red;
@@ -75,7 +75,7 @@ struct RedLightViolation {
   double s_front = 0.0;
 };
 
-/// One lane change as executed (spec TSD §8.2): its blinker, its approval and its lateral motion.
+/// One lane change as executed (docs/behaviour.md §T8.2): its blinker, its approval and its lateral motion.
 struct LaneChangeRecord {
   std::string edge;
   std::string phase;                       ///< the last phase reached (behavior_stage to_string)

@@ -119,8 +119,8 @@ void ParameterSet::check_consistency(const std::string& file) const {
                                   origin(high) + ")" + rule);
   };
   inverted("restart_suppression.min_behind_distance_to_stop", "restart_suppression.max_behind_distance_to_stop",
-           " (spec TLJ §1.6: the restart-suppression window)");
-  inverted("min_prepare_duration", "max_prepare_duration", " (spec TSD §8.2: the prepare duration lies in [min, max])");
+           " (docs/behaviour.md §L1.6: the restart-suppression window)");
+  inverted("min_prepare_duration", "max_prepare_duration", " (docs/behaviour.md §T8.2: the prepare duration lies in [min, max])");
 }
 
 void ParameterSet::apply_file(const std::string& path, bool strict) {
@@ -196,7 +196,7 @@ TrafficLightJudgeParameters traffic_light_parameters(const ParameterSet& set) {
   p.max_accel = set.number("max_accel");
   p.max_jerk = set.number("max_jerk");
   p.delay_response_time = set.number("delay_response_time");
-  p.v2i.use_remaining_time = set.boolean("v2i.use_remaining_time");  // spec TLJ §1.7
+  p.v2i.use_remaining_time = set.boolean("v2i.use_remaining_time");  // docs/behaviour.md §L1.7
   p.v2i.last_time_allowed_to_pass = set.number("v2i.last_time_allowed_to_pass");
   p.v2i.velocity_threshold = set.number("v2i.velocity_threshold");
   p.v2i.required_time_to_departure = set.number("v2i.required_time_to_departure");

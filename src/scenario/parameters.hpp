@@ -25,7 +25,7 @@ struct ParameterSpec {
   double max = 1e300;
   std::vector<std::string> choices;   ///< allowed values for strings (empty: any)
   std::string unit;                   ///< "m", "s", "deg", "m/s", ... or "-"
-  std::string spec_section;           ///< where the parameter is defined, e.g. "TSD §10"
+  std::string spec_section;           ///< where the parameter is defined, e.g. "docs/behaviour.md §T10"
   /// Where Autoware's shipped parameter file keeps it, module namespace included
   /// (`lane_change.trajectory.max_prepare_duration`); empty when that is `name` itself (a top-level
   /// key of its file, e.g. behavior_path_planner.param.yaml's) or signalsim's own parameter.
@@ -95,7 +95,7 @@ class ParameterSet {
 /// The judge's parameters from a resolved set.
 TrafficLightJudgeParameters traffic_light_parameters(const ParameterSet& set);
 
-/// The behaviour modules' parameters (spec TSD §8.2) from a resolved set: the decider's shared values
+/// The behaviour modules' parameters (docs/behaviour.md §T8.2) from a resolved set: the decider's shared values
 /// plus the module parameters of the schema and the ego's footprint.
 BehaviorSignalParameters behavior_parameters(const ParameterSet& set, const TurnSignalParameters& decider,
                                              double vehicle_length, double vehicle_width);

@@ -132,7 +132,7 @@ std::vector<PerceptionModelParameters::Blackout> parse_blackouts(YamlFields& f, 
   return out;
 }
 
-// `perception.v2i:` the V2I channel's faults (spec TLJ §1.7; used with v2i.use_remaining_time). The
+// `perception.v2i:` the V2I channel's faults (docs/behaviour.md §L1.7; used with v2i.use_remaining_time). The
 // camera's dropout, latency and blackouts apply to it too unless given here.
 V2iChannelParameters parse_v2i_channel(const YAML::Node& node, const std::string& file, V2iChannelParameters p) {
   YamlFields f(node, file, "perception.v2i");
@@ -355,7 +355,7 @@ Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrid
   s.ego.emergency_decel = ego.number("emergency_decel", 9.0, 1.0, 15.0);
   if (s.ego.depart_speed > s.ego.max_speed) ego.fail("depart_speed", "exceeds ego.max_speed");
   s.ego.depart_lane = ego.integer("depart_lane", -1, -1, 100);
-  // A taken-over vehicle departs as its route file says (spec: issue 10); the keys SUMO's definition
+  // A taken-over vehicle departs as its route file says (docs/sumo.md); the keys SUMO's definition
   // already fixes may only repeat it (checked against SUMO once it departed, scenario/take_over).
   if (!s.ego.id.empty())
     for (const char* key : {"depart_pos", "depart_speed", "depart_lane"})

@@ -56,7 +56,7 @@ struct EgoSpec {
 /// car has its rear axle 0.8 m ahead of the rear bumper on 4.5 m (3.7 m to the front).
 inline constexpr double kBaseLinkShare = 3.7 / 4.5;
 
-/// What SUMO is given beyond the net (issue 10): a user's .sumocfg, route files and SUMO options.
+/// What SUMO is given beyond the net (docs/sumo.md): a user's .sumocfg, route files and SUMO options.
 struct SumoInputs {
   std::string sumocfg;                        ///< the .sumocfg (resolved), empty when none
   std::vector<std::string> route_files;       ///< SUMO -r: the sumocfg's, then `routes:`
@@ -181,11 +181,11 @@ struct ExpectEmergencyStopAtLight {
   std::string light;
 };
 /// The judge was judging `light` and never classified a dilemma zone there nor ordered an
-/// emergency stop (spec TLJ §2.6).
+/// emergency stop (docs/behaviour.md §L2.6).
 struct ExpectNeverInDilemmaZone {
   std::string light;
 };
-/// The judge ordered a stop at `light` because V2I predicted red within the horizon (spec TLJ §1.7).
+/// The judge ordered a stop at `light` because V2I predicted red within the horizon (docs/behaviour.md §L1.7).
 struct ExpectV2iStopAtLight {
   std::string light;
 };
@@ -221,7 +221,7 @@ struct Scenario {
   std::string country;                  ///< preset code ("jp"), empty for none
   EgoSpec ego;
   PerceptionModelParameters perception;  ///< `perception:`; seeded with `seed`; all faults off by default
-  /// `perception.v2i:` the V2I channel's faults (spec TLJ §1.7); seeded with `seed`; none by default
+  /// `perception.v2i:` the V2I channel's faults (docs/behaviour.md §L1.7); seeded with `seed`; none by default
   V2iChannelParameters v2i_channel;
   std::map<std::string, double> light_offsets;  ///< `light_offsets: {tls: seconds}` program shifts
   ParameterSet params;                  ///< defaults, params.files, the country, params.set, overrides

@@ -1,4 +1,4 @@
-// The simulation keys of a scenario file and the user's SUMO files behind them (issue 10): `net:` or a
+// The simulation keys of a scenario file and the user's SUMO files behind them (docs/sumo.md): `net:` or a
 // `sumocfg:` (its net, route and additional files, step length, begin/end and seed; the scenario's own
 // keys win and are recorded), `routes:` (route files, SUMO -r), `additional:`, `step_length:`,
 // `seed:`, `duration:` and `sumo_args:` (SUMO options passed through; those signalsim sets are refused).

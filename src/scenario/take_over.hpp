@@ -1,4 +1,4 @@
-// A vehicle of the user's route files as the ego (`ego: {id: veh42}`, issue 10): before SUMO starts,
+// A vehicle of the user's route files as the ego (`ego: {id: veh42}`, docs/sumo.md): before SUMO starts,
 // its route comes from the route files (and no file may already use the id of an ego signalsim adds);
 // once it departed, its vType and departure are what SUMO says, and a scenario key that says
 // otherwise is an error naming both.

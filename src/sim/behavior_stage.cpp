@@ -70,7 +70,7 @@ BehaviorStage::Result BehaviorStage::step(const Observation& o, const TargetLane
       // The prepare segment is driven without braking (the ego does not brake for the lane change
       // once approved; braking for the hold point ends with the approval), and below
       // min_lane_changing_velocity at max_longitudinal_acc (the floor of the prepare time is the time
-      // to reach that speed, spec TSD §8.2).
+      // to reach that speed, docs/behaviour.md §T8.2).
       lc_step.accel = ego.speed < params_.min_lane_changing_velocity ? params_.max_longitudinal_acc
                                                                     : std::max(o.accel, 0.0);
       lc_step.max_speed = config_.max_speed;
@@ -131,7 +131,7 @@ BehaviorStage::Result BehaviorStage::step(const Observation& o, const TargetLane
 
   if (current_lc) {
     // The module's state after this step drives the phases: its blinker timestamp shortens the
-    // prepare segment (spec TSD §8.2 calc_actual_prepare_duration).
+    // prepare segment (docs/behaviour.md §T8.2 calc_actual_prepare_duration).
     lc_step.module_active = modules_.lane_change.active();
     lc_step.blinker_on_since = modules_.lane_change.blinker_on_since();
     lc_step.prepare_duration = modules_.lane_change.actual_prepare_duration(o.now, ego.speed, params_);

@@ -1,4 +1,4 @@
-// The behaviour stage of the step loop (spec TSD §8): every step it builds the inputs of the four
+// The behaviour stage of the step loop (docs/behaviour.md §T8): every step it builds the inputs of the four
 // behaviour modules from the scenario's lateral plan and the ego, runs them in Autoware's order
 // (merge_behavior_requests), and moves each lane change through its phases (pending, waiting for
 // approval, running, done; planning/lane_change_execution.hpp). It also says where the ego must be
@@ -88,7 +88,7 @@ class BehaviorStage {
 /// (`executed` matched by edge; none for a lane change recorded without one, i.e. never approved; the
 /// nominal line from the earliest start for a lane change `executed` does not list), and each
 /// shift line of an avoidance, pull out or pull over moving at least `min_shift` metres sideways
-/// (turn_signal_shift_length_threshold: smaller shifts never ask for a blinker, spec TSD §8.1).
+/// (turn_signal_shift_length_threshold: smaller shifts never ask for a blinker, docs/behaviour.md §T8.1).
 std::vector<ManeuverLine> maneuver_lines(const LateralPlan& plan, const std::vector<LaneChangeRecord>& executed,
                                          double min_shift);
 

@@ -14,7 +14,7 @@ void LightOutcomes::observe(const TimelineRow& row, const std::vector<LightStep>
                             const LeaderQuery& leader, const RouteMap& route, RunRecord& record) {
   // A stop: the first step at rest while a stop is requested; a new one only after moving again.
   // The error is measured against the stop line minus stop_margin, not the judge's stop point,
-  // which restart suppression moves to wherever the ego stands (spec TLJ §1.6).
+  // which restart suppression moves to wherever the ego stands (docs/behaviour.md §L1.6).
   const bool at_rest = row.speed < kRestSpeed;
   if (at_rest && stopping && !resting_) {
     const double stop_s = stopping->light->s_stop_line - stop_margin_;

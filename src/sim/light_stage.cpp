@@ -3,7 +3,7 @@
 namespace signalsim {
 namespace {
 
-constexpr double kDeadLine = -2.0;  // [m] spec TLJ §1.2 step 3.1: past this the light is behind
+constexpr double kDeadLine = -2.0;  // [m] docs/behaviour.md §L1.2 step 3.1: past this the light is behind
 
 // Each light's perception draws from its own seeded streams, so a capture of one light is never
 // delivered for another and adding a light does not change the draws of the others.
@@ -66,7 +66,7 @@ std::vector<LightStep> TrafficLightStage::step(double now, double s_front, doubl
     step.own_state = t.light.link_index >= 0 && static_cast<std::size_t>(t.light.link_index) < state.size()
                          ? state[static_cast<std::size_t>(t.light.link_index)]
                          : '?';
-    // spec SUMO §3: an 'o'/'O' link is not regulating: no judge, SUMO's right of way applies.
+    // docs/behaviour.md §S3: an 'o'/'O' link is not regulating: no judge, SUMO's right of way applies.
     if (const auto truth = sumo::signal_elements(state, t.light)) {
       const auto observation = t.perception.observe(*truth, front_to_line, now);
       if (observation) step.observed = sumo::describe_elements(observation->elements);
@@ -81,7 +81,7 @@ std::vector<LightStep> TrafficLightStage::step(double now, double s_front, doubl
       in.turn_direction = sumo::judge_turn_direction(t.light.direction);
       in.is_turn_lane = t.light.direction == TurnDirection::Left || t.light.direction == TurnDirection::Right;
       in.has_static_arrow = t.light.has_arrow;
-      if (t.v2i) {  // spec TLJ §1.7: the program once, the timing every step
+      if (t.v2i) {  // docs/behaviour.md §L1.7: the program once, the timing every step
         if (!t.programs) t.programs = v2i_.programs_of(t.light.tls_id);
         in.predictions = t.v2i->step(v2i_predictions(*t.programs, v2i_.timing_of(t.light.tls_id), t.light), now);
       }

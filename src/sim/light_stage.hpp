@@ -1,8 +1,8 @@
 // The traffic-light stage of the step loop. Every light on the route whose stop line lies within
 // the horizon ahead (down to 2 m behind the front) has its own judge and its own perception model
-// (spec TLJ §1.1: one scene module per light on the path); a light is dropped once the front is
-// more than 2 m past its stop line (the judge's GO_OUT dead line, spec TLJ §1.2), whatever its state.
-// With V2I on (spec TLJ §1.7) each light also has its own V2I channel: its programs are read once,
+// (docs/behaviour.md §L1.1: one scene module per light on the path); a light is dropped once the front is
+// more than 2 m past its stop line (the judge's GO_OUT dead line, docs/behaviour.md §L1.2), whatever its state.
+// With V2I on (docs/behaviour.md §L1.7) each light also has its own V2I channel: its programs are read once,
 // when the light is first judged, its timing every step, and the predicted phases, as signal elements
 // of the ego's approach, reach its judge through the channel's faults.
 #pragma once
@@ -37,7 +37,7 @@ struct V2iSource {
   std::function<sumo::LightTiming(const std::string&)> timing_of;                  ///< every step
 };
 
-/// The V2I predictions of one light as signal elements of this approach (spec TLJ §1.7, SUMO §3):
+/// The V2I predictions of one light as signal elements of this approach (docs/behaviour.md §L1.7, §S3):
 /// the program's predicted phases (signal_timing.hpp) from `timing`, each turned into what the ego's
 /// approach shows (phases where the ego's link is off are left out). Empty when the running program
 /// is not among `programs` or its phase is out of range (e.g. a state set by TraCI). Never throws.
@@ -75,7 +75,7 @@ class TrafficLightStage {
 
 /// Whether the next junction the ego enters is a light showing the ego's link red or yellow: the ego
 /// is on a normal lanelet that is the approach of a light in `lights` (no other junction lies
-/// between), and that link is r, u, y or Y. Then SUMO's right of way must not apply (spec SUMO §4:
+/// between), and that link is r, u, y or Y. Then SUMO's right of way must not apply (docs/behaviour.md §S4:
 /// it would hold a slow ego before the red line on its own); the judge decides.
 bool light_decides_next_junction(const RouteMap& route, double s_front, const std::vector<LightStep>& lights);
 

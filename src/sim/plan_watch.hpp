@@ -1,4 +1,4 @@
-// Where SUMO leaves signalsim's lane plan (issue 11, point 1). signalsim plans the ego's lanes and
+// Where SUMO leaves signalsim's lane plan (docs/run.md). signalsim plans the ego's lanes and
 // turns SUMO's lane changes off, but SUMO chooses the connection at a junction itself (see
 // sumo/sumo_lane_choice.hpp): when it takes another one than the plan's, the ego is on a lane of a
 // route edge (or an internal lane of a route junction) that is not the planned one, and the route

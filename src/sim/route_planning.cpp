@@ -177,7 +177,7 @@ std::vector<LateralSegment> plan_lane_changes(const Scenario& scenario, const su
     seg.lane_change.shift_start = offset;
     seg.lane_change.approval_delay = m.approval_delay;
     // Hold point margin: the prepare segment from rest, driven at max_longitudinal_acc for the
-    // module's shortest prepare time at standstill (spec TSD §8.2).
+    // module's shortest prepare time at standstill (docs/behaviour.md §T8.2).
     seg.lane_change.hold_margin = LaneChangeExecution::prepare_distance(
         0.0, module_params.max_longitudinal_acc, scenario.ego.max_speed,
         LaneChangeSignal::min_prepare_duration_at(0.0, module_params));

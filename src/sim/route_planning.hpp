@@ -1,5 +1,5 @@
 // The ego's route for a scenario: built from the net once, then prepared with the options that
-// change lanelet attributes (spec TSD §5.3 exit-signal marking, Japan).
+// change lanelet attributes (docs/behaviour.md §T5.3 exit-signal marking, Japan).
 #pragma once
 
 #include <cstdint>
@@ -20,7 +20,7 @@ namespace signalsim {
 /// `ego.route`) for a route the net cannot drive.
 sumo::RoutePlan plan_route(const Scenario& scenario, const sumo::NetIndex& net);
 
-/// The lateral plan of a scenario (issue 5, spec SUMO §4), one segment per maneuver, each driven on
+/// The lateral plan of a scenario (docs/maneuvers.md, docs/behaviour.md §S4), one segment per maneuver, each driven on
 /// one route edge: the lane change from ego.depart_lane onto the first edge's planned lane (the lane
 /// with the connection to the next edge), and the avoidance of declared obstacles. Shift lines are on
 /// base_link's route s; offsets are lateral, left positive, from the centre of the segment's

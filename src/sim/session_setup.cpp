@@ -94,7 +94,7 @@ sumo::SessionConfig session_config(const Scenario& scenario, const sumo::RoutePl
   config.emergency_decel = scenario.ego.emergency_decel;
   // SUMO never changes lanes on its own: signalsim drives every lane change (plan_lateral).
   config.keep_planned_lanes = true;
-  // signalsim drives lateral motion with sublane offsets re-commanded every step (spec SUMO §4):
+  // signalsim drives lateral motion with sublane offsets re-commanded every step (docs/behaviour.md §S4):
   // SUMO's sublane model, the user's own resolution if they run one.
   if (lateral.active()) config.lateral_resolution = kSublaneWidth;
   if (user_lateral_resolution) {

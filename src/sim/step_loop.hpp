@@ -1,4 +1,4 @@
-// The step loop (DESIGN.md; README "What happens each step"): observe -> maneuver -> decide ->
+// The step loop (docs/architecture.md, docs/run.md): observe -> maneuver -> decide ->
 // light -> plan -> apply -> record, every step.
 //
 //   start SUMO, insert the ego on the planned first lane, wait for its departure (session_setup)
@@ -8,12 +8,12 @@
 //     observe   ego lane/position/speed from SUMO; s_front from the RouteMap; s_base = s_front - b2f;
 //               whether SUMO left the lane plan (sim/plan_watch); the offset from the planned lane
 //     maneuver  the behaviour modules' request and the lane changes' phases (sim/behavior_stage)
-//     decide    window and blinker = TurnSignalDecider::decide(route, ego, behaviour)    (spec TSD §3)
-//     light     every light in the window: perception, then TrafficLightJudge::step    (spec TLJ §1-§2)
+//     decide    window and blinker = TurnSignalDecider::decide(route, ego, behaviour)    (docs/behaviour.md §T3)
+//     light     every light in the window: perception, then TrafficLightJudge::step    (docs/behaviour.md §L1-§L2)
 //     plan      speed under the lane limits ahead, lowered by a jerk-limited stop for each stop
 //               point (light, pull-over goal, hold point) only once a normal stop must begin
 //               (normal, limit, then emergency constraint set)   (planning/stop/stop_speed_planner)
-//     apply     SUMO's speed mode, blinker bits + speed (re-sent every step, spec SUMO §4), the
+//     apply     SUMO's speed mode, blinker bits + speed (re-sent every step, docs/behaviour.md §S4), the
 //               lateral offset, a back-up; SUMO advances one step
 //     record    the row: observation, decision, and the mask SUMO showed while executing it;
 //               events on change; stops and red crossings (sim/step_record, sim/light_outcomes)

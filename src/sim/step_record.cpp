@@ -90,7 +90,7 @@ void StepEvents::record(const TimelineRow& row, const std::vector<BehaviorStage:
                  row.tl_id);
     decision_ = row.tl_decision;
   }
-  // With V2I on: when its rule starts or stops holding for the light shown (spec TLJ §1.7).
+  // With V2I on: when its rule starts or stops holding for the light shown (docs/behaviour.md §L1.7).
   if (record.v2i && row.v2i_stop != v2i_stop_) {
     record_event(record, row, "v2i", v2i_stop_ ? "red_predicted" : "none", row.v2i_stop ? "red_predicted" : "none",
                  row.tl_id);

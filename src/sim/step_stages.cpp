@@ -20,7 +20,7 @@ Blinker blinker_of(const TurnSignalDecision& d) {
   return Blinker::None;
 }
 
-// The nearest stop line ahead of a light the judge passes on a stop signal (spec TLJ §2.3 "can pass
+// The nearest stop line ahead of a light the judge passes on a stop signal (docs/behaviour.md §L2.3 "can pass
 // through during yellow lamp"), or +infinity.
 double passed_on_stop_signal(const std::vector<LightStep>& lights) {
   double line = std::numeric_limits<double>::infinity();
@@ -49,7 +49,7 @@ BehaviorStageConfig behavior_config_for(const Scenario& scenario, const RouteMap
 }
 
 // The light stage on the route's lights, with arrow bulbs from every program SUMO loaded (additional
-// files may replace the net's program); V2I (spec TLJ §1.7): SUMO's programs and timing through the
+// files may replace the net's program); V2I (docs/behaviour.md §L1.7): SUMO's programs and timing through the
 // session, used only when it is on.
 TrafficLightStage light_stage_for(const StartedRun& run, const sumo::NetIndex& net,
                                   const TrafficLightJudgeParameters& judge) {
@@ -124,7 +124,7 @@ StepObservation StepLoop::observe() {
   return now;
 }
 
-// maneuver: the behaviour modules (spec TSD §8) and the lane changes' phases (sim/behavior_stage).
+// maneuver: the behaviour modules (docs/behaviour.md §T8) and the lane changes' phases (sim/behavior_stage).
 StepManeuver StepLoop::maneuver(const StepObservation& now) {
   StepManeuver m;
   m.behavior = behavior_.step({.now = now.sumo.time,
@@ -149,14 +149,14 @@ std::vector<OccupiedSpan> StepLoop::target_lane_traffic(const LateralSegment& se
 }
 
 // window and decide: the decider takes the window of route lanelets around base_link itself, since
-// its back length depends on the roundabouts (spec TSD §3.2), and resolves the intersection,
+// its back length depends on the roundabouts (docs/behaviour.md §T3.2), and resolves the intersection,
 // roundabout and behaviour requests.
 BlinkerChoice StepLoop::decide(const StepObservation& now, const StepManeuver& maneuver) {
   const TurnSignalDecision decision = decider_.decide(route_, now.ego, maneuver.behavior.behavior);
   return {blinker_of(decision), decision.source};
 }
 
-// light: every judge in the window (spec TLJ); the ego brakes for the nearest stop requested by any
+// light: every judge in the window (docs/behaviour.md §L); the ego brakes for the nearest stop requested by any
 // of them, and the timeline describes that light, else the nearest one.
 StepLights StepLoop::light(const StepObservation& now) {
   StepLights out;
@@ -167,7 +167,7 @@ StepLights StepLoop::light(const StepObservation& now) {
         (!out.stopping || *l.result.stop_point_distance < *out.stopping->result.stop_point_distance))
       out.stopping = &l;
   out.shown = out.stopping ? out.stopping : (out.steps.empty() ? nullptr : &out.steps.front());
-  // SUMO's right of way would hold the ego at a red line on its own (spec SUMO §4, measured): while
+  // SUMO's right of way would hold the ego at a red line on its own (docs/behaviour.md §S4, measured): while
   // the next junction is a light showing the ego red or yellow, the judge alone decides there.
   out.sumo_right_of_way = !light_decides_next_junction(route_, now.ego.s_front, out.steps);
   return out;
@@ -179,7 +179,7 @@ SpeedPlan StepLoop::plan_speed(const StepObservation& now, const StepManeuver& m
   // A light the judge passes on a stop signal (pass_through_yellow: it cannot stop, and reaches the
   // line within the yellow lamp period at its current speed) is crossed at that speed: the limits
   // beyond its stop line apply from the line on (slowing before it for a turn would reach the line
-  // on red, issue 11).
+  // on red).
   const double passed_line = passed_on_stop_signal(lights.steps);
   const double limits_speed =
       plan_speed_under_limits(route_, now.ego.s_front, now.sumo.speed, dt_, limits_, passed_line);
@@ -216,7 +216,7 @@ SpeedPlan StepLoop::plan_speed(const StepObservation& now, const StepManeuver& m
 }
 
 // apply: SUMO's modes (right of way, lane limits, emergency braking), the blinker bits and the speed
-// (re-sent every step, spec SUMO §4), the lateral plan's offset, the back-up; then SUMO advances one
+// (re-sent every step, docs/behaviour.md §S4), the lateral plan's offset, the back-up; then SUMO advances one
 // step. Returns false when the ego has arrived.
 bool StepLoop::apply(const StepObservation& now, const BlinkerChoice& blinker, const StepLights& lights,
                      const SpeedPlan& plan) {

@@ -1,4 +1,4 @@
-// The stuck rule (issue 11): a run ends early, as not arrived, once the ego has been at rest for
+// The stuck rule (docs/run.md): a run ends early, as not arrived, once the ego has been at rest for
 // `stuck_rest_time` seconds while signalsim itself does not hold it, i.e. while it commands a speed
 // above rest (no red light, lane-change hold point or pull-over goal keeps it there; SUMO does: a
 // leader, right of way at a junction). A run that reaches `duration` first records why too. The

@@ -15,7 +15,7 @@ namespace {
 
 constexpr double kRestSpeed = 0.01;          // [m/s] at rest, as drive() measures stops
 constexpr double kCrossingTolerance = 0.05;  // [m] a red crossing is 5 cm beyond the line, as drive()
-constexpr double kLeftBehind = 2.0;          // [m] past its stop line a light is left behind (spec TLJ §1.2)
+constexpr double kLeftBehind = 2.0;          // [m] past its stop line a light is left behind (docs/behaviour.md §L1.2)
 constexpr double kLightWindow = 300.0;       // [m] lights ahead whose states are followed
 
 bool is_red(char state) { return state == 'r' || state == 'u'; }

@@ -1,8 +1,8 @@
-// The SUMO-driven run (`signalsim run S --driver sumo`, issue 11): SUMO drives the ego on its own and
+// The SUMO-driven run (`signalsim run S --driver sumo`, docs/compare.md): SUMO drives the ego on its own and
 // signalsim only observes, into the same RunRecord drive() fills, so that metrics and expectations
 // measure both drivers with the same code. The ego is inserted exactly as for drive() (route, depart
 // lane/pos/speed, vType, seed, traffic, light offsets: RunContext::sumo_drives), then nothing is
-// commanded: no speed, signals, lane changes or speed mode (SUMO's defaults, spec SUMO §5).
+// commanded: no speed, signals, lane changes or speed mode (SUMO's defaults, docs/behaviour.md §S5).
 //
 //   loop until the ego arrives or `duration` simulated seconds have passed:
 //     observe  the ego's lane, lane position, speed and SUMO's signal mask, at the same moment
@@ -12,7 +12,7 @@
 //     lights   the nearest light not passed by more than 2 m: its id and the ego's link state
 //     stop     the first step at rest (< 0.01 m/s) with the front on that light's approach lanelet
 //              while its link shows r, u, y or Y: the rest position against the stop point the judge
-//              would use (stop line - stop_margin, spec TLJ §9.2); a new stop only after moving again
+//              would use (stop line - stop_margin, docs/behaviour.md §L9.2); a new stop only after moving again
 //     red      the front crosses a stop line (+5 cm) during a step that began with its link r or u
 //     step     SUMO advances one step
 //
@@ -35,7 +35,7 @@
 
 namespace signalsim {
 
-/// The decoded blinker of a TraCI signal mask (spec SUMO §4 bits).
+/// The decoded blinker of a TraCI signal mask (docs/behaviour.md §S4 bits).
 Blinker blinker_of_signals(int mask);
 
 /// Where the front is on the route (the locating rules of the file comment).

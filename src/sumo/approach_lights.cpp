@@ -108,7 +108,7 @@ std::optional<std::vector<SignalElement>> signal_elements(const std::string& sta
   for (const ApproachLink& link : light.links) {
     if (!arrow_source(link, light)) continue;
     const char link_state = state_at(state, link.link_index);
-    // 's' is red as a circle but a green arrow for its turn (spec SUMO §3).
+    // 's' is red as a circle but a green arrow for its turn (docs/behaviour.md §S3).
     const Lamp lamp = link_state == 's' ? Lamp::Green : lamp_of(link_state);
     if (lamp == circle || (lamp != Lamp::Green && lamp != Lamp::Amber)) continue;
     bool& done = link.direction == TurnDirection::Left ? left : right;

@@ -1,5 +1,5 @@
 // The signalised approaches on the ego's route and how SUMO's link states become the signal
-// elements the traffic-light judge reads (spec SUMO §3, spec TLJ §1.4, §9.1).
+// elements the traffic-light judge reads (docs/behaviour.md §S3, docs/behaviour.md §L1.4, §L9.1).
 #pragma once
 
 #include <cstddef>
@@ -29,13 +29,13 @@ struct ApproachLight {
   TurnDirection direction = TurnDirection::None;  ///< the ego's turn through the junction
   std::vector<ApproachLink> links;  ///< every signalised link leaving the approach edge
   double s_stop_line = 0.0;      ///< route s of the stop line (lane end minus <stopOffset>)
-  /// A static arrow bulb (spec TLJ §1.8 map fact): some phase of the net's programs for this light
+  /// A static arrow bulb (docs/behaviour.md §L1.8 map fact): some phase of the net's programs for this light
   /// shows a turn link of the approach green while its straight links are not.
   bool has_arrow = false;
 };
 
 /// Whether any of these phase states lights a turn link of the approach (green, or 's') while the
-/// circle is not green: the light has an arrow bulb (spec TLJ §1.8 map fact).
+/// circle is not green: the light has an arrow bulb (docs/behaviour.md §L1.8 map fact).
 bool shows_arrow(const std::vector<std::string>& phase_states, const ApproachLight& light);
 
 /// Every signalised approach on the route, in route order. Reads the net once; `has_arrow` from the
@@ -43,7 +43,7 @@ bool shows_arrow(const std::vector<std::string>& phase_states, const ApproachLig
 std::vector<ApproachLight> approach_lights(const NetIndex& net, const RouteMap& route);
 
 /// Link states of a light (one character per link index) -> the elements a perfect camera sees on
-/// this approach (spec SUMO §3):
+/// this approach (docs/behaviour.md §S3):
 ///  - the circle: the ego's own link when it is not green (a red or amber link must never show a
 ///    green circle); when it is green, the straight link of the ego's lane (a green turn link under
 ///    a red straight link is an arrow), or the own link when that lane has no straight link.
@@ -55,7 +55,7 @@ std::vector<ApproachLight> approach_lights(const NetIndex& net, const RouteMap& 
 ///  - nullopt when the ego's own link is off (o, O): the light is not regulating, the judge stays out.
 std::optional<std::vector<SignalElement>> signal_elements(const std::string& state, const ApproachLight& light);
 
-/// Autoware's turn_direction for the judge (spec TLJ §1.4).
+/// Autoware's turn_direction for the judge (docs/behaviour.md §L1.4).
 LaneTurnDirection judge_turn_direction(TurnDirection direction);
 
 /// Compact text of elements for the timeline, e.g. "red" or "red+green_left".

@@ -3,7 +3,7 @@
 // (scenario/route_planning, to time them). SUMO-free and pure.
 //
 // Room: the base_link travel over which the lateral motion may run with the front bumper still on
-// the edge (no lateral command on internal lanes, README "Lateral motion"): from where base_link
+// the edge (no lateral command on internal lanes, docs/maneuvers.md): from where base_link
 // may start (the edge's start; on the first edge its depart position) to the edge's end minus
 // base_link_to_front. A lane change the route needs is timed by default_lane_change within it.
 //

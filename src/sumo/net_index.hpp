@@ -1,6 +1,6 @@
 // NetIndex: everything signalsim needs from a SUMO .net.xml (plain or gzip), read once with pugixml.
 //
-// libsumo 1.15 has no API for roundabouts, junction types or <stopOffset> (spec SUMO §2), so the net
+// libsumo 1.15 has no API for roundabouts, junction types or <stopOffset> (docs/behaviour.md §S2), so the net
 // file is read directly. All lookups are hash-map based: O(1) in the size of the net.
 //
 // Loading rule: whatever SUMO 1.15 loads, NetIndex loads. Only a file that is not a net at all (not

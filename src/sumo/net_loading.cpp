@@ -1,4 +1,4 @@
-// NetIndex::load: reads a SUMO 1.15 .net.xml into a NetIndex (spec SUMO §2: roundabouts, junction
+// NetIndex::load: reads a SUMO 1.15 .net.xml into a NetIndex (docs/behaviour.md §S2: roundabouts, junction
 // types and <stopOffset> have no libsumo API, so the file is read directly).
 //
 // Elements read (children of <net>): <edge> with its <lane>s, <param>s and <stopOffset>s; <junction>;
@@ -105,7 +105,7 @@ std::map<std::string, std::string> NetLoader::params(pugi::xml_node parent, cons
     const auto key = param.required_text("key");
     if (!key) continue;
     out[*key] = param.text("value");
-    // The one param signalsim reads as a number (spec TSD §4.1: a lanelet's own search distance).
+    // The one param signalsim reads as a number (docs/behaviour.md §T4.1: a lanelet's own search distance).
     if (*key == "turn_signal_distance" && !parse_double(out[*key]))
       log_.add(owner, owner_what, "param 'turn_signal_distance' is not a number: '" + out[*key] + "'", p.offset_debug());
   }

@@ -1,5 +1,5 @@
 // Route edges -> RouteMap: the planned lane of every edge and, between two edges, the internal lanes of
-// the connection taken (spec SUMO §3: turn lanelets are the internal lanes of the route's connections).
+// the connection taken (docs/behaviour.md §S3: turn lanelets are the internal lanes of the route's connections).
 #include "sumo/route_builder.hpp"
 
 #include <algorithm>
@@ -20,7 +20,7 @@ constexpr int kMaxInternalChain = 16;
 std::string quoted(const std::string& id) { return "'" + id + "'"; }
 
 
-/// Turn directions of the connections leaving `lane_id` that have an internal lane (spec SUMO §3),
+/// Turn directions of the connections leaving `lane_id` that have an internal lane (docs/behaviour.md §S3),
 /// in file order, without repeats. For an internal lane, that is the next internal lane of its chain.
 std::vector<TurnDirection> successor_directions(const NetIndex& net, const std::string& lane_id) {
   std::vector<TurnDirection> out;
@@ -37,7 +37,7 @@ bool all_digits(std::string_view s) {
 }
 
 /// ":<junction>_<edge>_<lane>" -> "<junction>": strips the last two "_<int>" groups (junction ids may
-/// contain '_', spec SUMO §2) and the leading ':'. Empty when the id has another form.
+/// contain '_', docs/behaviour.md §S2) and the leading ':'. Empty when the id has another form.
 std::string junction_of_internal_lane(std::string_view id) {
   for (int group = 0; group < 2; ++group) {
     const std::size_t cut = id.rfind('_');
@@ -68,8 +68,8 @@ LaneParams lane_params(const NetEdge& edge, const NetLane& lane) {
   return out;
 }
 
-/// The roundabout role of the internal lanes between two route edges (spec SUMO §3): from the
-/// <roundabout> element, never from `dir` (spec SUMO §2).
+/// The roundabout role of the internal lanes between two route edges (docs/behaviour.md §S3): from the
+/// <roundabout> element, never from `dir` (docs/behaviour.md §S2).
 std::pair<RoundaboutRole, std::optional<std::size_t>> junction_role(const NetIndex& net, const std::string& from,
                                                                     const std::string& to) {
   const auto ring_from = net.roundabout_of_edge(from);
@@ -191,7 +191,7 @@ RoutePlan build_route(const NetIndex& net, const std::vector<std::string>& edges
                        ": the connection has no internal lane; the net has no internal lanes "
                        "(built with netconvert --no-internal-links)");
     }
-    // Internal lanes take the params of the approach lane, the one the connection starts from (spec SUMO §3).
+    // Internal lanes take the params of the approach lane, the one the connection starts from (docs/behaviour.md §S3).
     const NetLane& approach = edge.lanes[static_cast<std::size_t>(link->from_lane)];
     const LaneParams approach_params = lane_params(edge, approach);
     const auto [role, ring] = junction_role(net, edge.id, next_edge);

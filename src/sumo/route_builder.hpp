@@ -59,7 +59,7 @@ struct RoutePlan {
 /// `ego` sizes the room (lane_change_room.hpp). Between two edges
 /// the connection's via lane and any further internal lanes chained from it become lanelets.
 /// Turn directions, roundabout roles (with Lanelet::leaves_ring_at_end on ring lanelets), params,
-/// lights and stop offsets per spec SUMO §3.
+/// lights and stop offsets per docs/behaviour.md §S3.
 /// Throws RouteError; NetDefectError when the route uses an element with a NetDefect: a route
 /// edge, a lane it drives (entered, left or crossed), an internal lane (or edge) of a connection it
 /// takes, the junction that lane lies in, or the light of such a connection.

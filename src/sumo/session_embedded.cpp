@@ -1,5 +1,5 @@
-// The embedded back-end: SUMO inside this process through libsumo (one simulation per process, spec
-// SUMO §1). SUMO prints its errors to stderr and throws a bare "Process Error", so stderr is captured
+// The embedded back-end: SUMO inside this process through libsumo (one simulation per process, docs/behaviour.md
+// §S1). SUMO prints its errors to stderr and throws a bare "Process Error", so stderr is captured
 // while the session lives and the message we report is SUMO's own first error line.
 #include <fcntl.h>
 #include <unistd.h>

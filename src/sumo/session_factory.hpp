@@ -1,5 +1,5 @@
-// The back-ends' factories, one per translation unit (libsumo and libtraci cannot share one, spec
-// SUMO §1); open_session (session_factory.cpp) picks one. Private to src/sumo.
+// The back-ends' factories, one per translation unit (libsumo and libtraci cannot share one, docs/behaviour.md
+// §S1); open_session (session_factory.cpp) picks one. Private to src/sumo.
 #pragma once
 
 #include <memory>

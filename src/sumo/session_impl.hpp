@@ -1,7 +1,7 @@
 // SessionImpl<Api>: the per-step SUMO logic of SumoSession, written once for both client libraries.
 // `Api` names the library's domain classes (Api::Vehicle, Api::Simulation, ...): libsumo (in-process)
 // or libtraci (over a socket) have the same API in two namespaces whose headers cannot be included in
-// one translation unit (spec SUMO §1), so this header includes neither. session_embedded.cpp and
+// one translation unit (docs/behaviour.md §S1), so this header includes neither. session_embedded.cpp and
 // session_traci.cpp include their library, define Api and instantiate this template; they own only
 // how SUMO is started and closed. Include it after <libsumo/libsumo.h> or <libsumo/libtraci.h>
 // (it uses their shared types and constants, libsumo::TraCIResults, libsumo::VAR_*).
@@ -30,7 +30,7 @@
 
 namespace signalsim::sumo {
 
-// Speed-mode bits (spec SUMO §4): 0 safe speed, 1 max accel, 2 max decel, 3 right of way; bit 4
+// Speed-mode bits (docs/behaviour.md §S4): 0 safe speed, 1 max accel, 2 max decel, 3 right of way; bit 4
 // (hard braking for red lights) is never set: the traffic-light judge decides at lights.
 inline constexpr int kSpeedModeSafeSpeed = 1, kSpeedModeMaxAccel = 2, kSpeedModeMaxDecel = 4, kSpeedModeRightOfWay = 8;
 // SUMO's defaults, for a vehicle signalsim hands back (TraCI docs: speed mode 31, lane-change mode 1621).

@@ -54,13 +54,13 @@ void SessionImpl<Api>::add_ego() {
   Api::VehicleType::setAccel(type, config_.accel);
   Api::VehicleType::setDecel(type, config_.decel);
   Api::VehicleType::setEmergencyDecel(type, config_.emergency_decel);
-  // Deterministic driving (spec SUMO §4): no dawdling, and speed factor exactly 1, so that SUMO's
+  // Deterministic driving (docs/behaviour.md §S4): no dawdling, and speed factor exactly 1, so that SUMO's
   // per-vehicle speed draw never caps the ego below the speeds signalsim plans.
   Api::VehicleType::setImperfection(type, 0.0);
   Api::VehicleType::setSpeedFactor(type, 1.0);
   Api::VehicleType::setSpeedDeviation(type, 0.0);
   // Sublane model: lateral speed and acceleration high enough that one changeSublane per step
-  // lands exactly on the commanded offset (spec SUMO §4); the plan itself keeps them realistic.
+  // lands exactly on the commanded offset (docs/behaviour.md §S4); the plan itself keeps them realistic.
   if (config_.lateral_resolution > 0.0) Api::VehicleType::setMaxSpeedLat(type, 10.0);
   for (const StandingVehicle& v : config_.standing) {
     const std::string standing_route = "standing_route_" + v.id, standing_type = "standing_type_" + v.id;

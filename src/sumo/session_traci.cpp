@@ -1,4 +1,4 @@
-// The TraCI back-ends, through libtraci (the libsumo API over a socket, spec SUMO §1):
+// The TraCI back-ends, through libtraci (the libsumo API over a socket, docs/behaviour.md §S1):
 //   gui      signalsim starts sumo-gui on a free 127.0.0.1 port (--start --quit-on-end), connects,
 //            colours the ego and tracks it in the view, and stops the program by its PID at the end;
 //   connect  signalsim attaches to a SUMO someone else started with --remote-port and --num-clients,

@@ -1,4 +1,4 @@
-// SUMO's light programs as plain values, and what they let V2I predict (spec TLJ §1.7): from the
+// SUMO's light programs as plain values, and what they let V2I predict (docs/behaviour.md §L1.7): from the
 // program's phases, the current phase and SUMO's next switch (TrafficLight::getNextSwitch), the
 // phases to come with the times they come on. No libsumo here: the session (sumo_session.hpp) reads
 // the programs once per light and the timing every step; this file only computes.

@@ -9,7 +9,7 @@
 
 namespace signalsim::sumo {
 
-/// `binary` followed by SUMO's options for `config` (spec SUMO §1): the net, route and additional
+/// `binary` followed by SUMO's options for `config` (docs/behaviour.md §S1): the net, route and additional
 /// files, step length, begin, seed, collisions as warnings, no teleporting, SUMO's messages to
 /// config.log_file, the sublane model when asked for, then config.extra_args. The options signalsim
 /// sets by default and a user may replace (`time-to-teleport`, `no-step-log`, `duration-log.disable`)

@@ -102,7 +102,7 @@ constexpr Owned kOwned[] = {
     {"game", "it hands the lights to a person"},
     {"breakpoints", "it halts the simulation"},
     {"mesosim", "the decider and the judge need SUMO's microscopic model (lanes, positions, signals)"},
-    {"no-internal-links", "turn lanelets are the junctions' internal lanes (spec SUMO §3)"},
+    {"no-internal-links", "turn lanelets are the junctions' internal lanes (docs/behaviour.md §S3)"},
 };
 
 // FILE options of the output category: the files SUMO writes.

@@ -1,5 +1,5 @@
 // SumoSession: what the step loop sees of SUMO, whatever SUMO it runs on. One interface, three
-// back-ends chosen at run time (spec SUMO §1):
+// back-ends chosen at run time (docs/behaviour.md §S1):
 //   embedded  libsumo in this process (default; batch, sweep and check use it)
 //   gui       a sumo-gui this process starts and drives over TraCI (libtraci), the ego tracked
 //   connect   a sumo or sumo-gui someone else started, stepped in lock-step with its other clients
@@ -25,7 +25,7 @@ class SumoError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// TraCI signal bits (spec SUMO §4; the libsumo headers do not define them).
+/// TraCI signal bits (docs/behaviour.md §S4; the libsumo headers do not define them).
 inline constexpr int kBlinkerRight = 1;
 inline constexpr int kBlinkerLeft = 2;
 inline constexpr int kBlinkerEmergency = 4;
@@ -95,13 +95,13 @@ struct SessionConfig {
   bool keep_planned_lanes = true;  ///< switch SUMO's own lane changes off for the ego
   /// SUMO drives the ego (`run --driver sumo`): it is inserted as configured, with the same vType,
   /// but no speed mode, lane-change mode or depart offset is applied (SUMO's defaults: its own
-  /// lane changes, blinkers and stops at lights; spec SUMO §5). The caller only observes it, and
+  /// lane changes, blinkers and stops at lights; docs/behaviour.md §S5). The caller only observes it, and
   /// must not call command(), command_lateral_offset(), move_back() or the speed-mode setters.
   bool sumo_drives = false;
   /// Sublane width [m] for SUMO's sublane model (`--lateral-resolution`). 0 = SUMO's default lane
   /// model (lane changes jump, no lateral motion inside a lane). > 0 also makes the ego's lateral
   /// dynamics fast enough to follow command_lateral_offset() exactly: vehicle-type maxSpeedLat
-  /// 10 m/s and the vehicle parameter laneChangeModel.lcAccelLat 20 m/s^2 (spec SUMO §4).
+  /// 10 m/s and the vehicle parameter laneChangeModel.lcAccelLat 20 m/s^2 (docs/behaviour.md §S4).
   double lateral_resolution = 0.0;
   /// Inserted with the ego, each with a stop at its position that lasts for the whole run.
   std::vector<StandingVehicle> standing;
@@ -156,9 +156,9 @@ class SumoSession {
   virtual double time() const = 0;
 
   virtual EgoState ego() const = 0;
-  /// The signal mask SUMO shows for the ego now (spec SUMO §4 read-back).
+  /// The signal mask SUMO shows for the ego now (docs/behaviour.md §S4 read-back).
   virtual int ego_signals() const = 0;
-  /// Sets the ego's signals for the next step (must be re-sent every step, spec SUMO §4) and its
+  /// Sets the ego's signals for the next step (must be re-sent every step, docs/behaviour.md §S4) and its
   /// speed (held until changed).
   virtual void command(int signal_mask, double speed) = 0;
 
@@ -180,7 +180,7 @@ class SumoSession {
   /// step). It moves the ego across lane boundaries too (a lane change). The ego follows exactly as
   /// long as the plan stays within maxSpeedLat 10 m/s and lcAccelLat 20 m/s^2 (SessionConfig::
   /// lateral_resolution). When the calls stop, the ego kept its offset in our SUMO 1.15 runs (alone
-  /// on the road, even through a junction onto the next edge), while spec SUMO §4 reports a drift
+  /// on the road, even through a junction onto the next edge), while docs/behaviour.md §S4 reports a drift
   /// back to the lane centre: rely on neither, command the offset you want. Needs the sublane model
   /// (SessionConfig::lateral_resolution > 0) and the ego on the reference lane's edge; throws
   /// SumoError otherwise. The target is clamped to the road border: the ego's whole width stays on
@@ -204,14 +204,14 @@ class SumoSession {
   /// SUMO's order). Throws SumoError for an unknown lane.
   virtual std::vector<LaneVehicle> vehicles_on_lane(const std::string& lane_id) const = 0;
 
-  /// Live state of a light: one character per link index (spec SUMO §2).
+  /// Live state of a light: one character per link index (docs/behaviour.md §S2).
   virtual std::string light_state(const std::string& tls_id) const = 0;
 
   /// The phase states of every program SUMO loaded for a light (net and additional files).
   virtual std::vector<std::string> program_states(const std::string& tls_id) const = 0;
 
   /// Every program SUMO loaded for a light, with its kind and phases (TrafficLight::
-  /// getAllProgramLogics): for V2I predictions (spec TLJ §1.7), read once per light.
+  /// getAllProgramLogics): for V2I predictions (docs/behaviour.md §L1.7), read once per light.
   virtual std::vector<LightProgram> light_programs(const std::string& tls_id) const = 0;
 
   /// A light's running program, current phase and next switch (TrafficLight::getProgram, getPhase,
@@ -223,7 +223,7 @@ class SumoSession {
   virtual void shift_light_program(const std::string& tls_id, double offset) = 0;
 
   /// Emergency braking: lets the ego brake beyond its vehicle type's `decel` (speed-mode bit 2
-  /// cleared, spec SUMO §4) while on.
+  /// cleared, docs/behaviour.md §S4) while on.
   virtual void set_emergency_braking(bool on) = 0;
 
   /// Whether SUMO holds the ego to the lanes' speed limits itself (on by default). Off, its speed

@@ -1,4 +1,4 @@
-// SUMO connection `dir` -> Autoware turn_direction (spec SUMO §3).
+// SUMO connection `dir` -> Autoware turn_direction (docs/behaviour.md §S3).
 #pragma once
 
 #include "map/lanelet.hpp"

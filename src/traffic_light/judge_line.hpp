@@ -1,9 +1,9 @@
-// Stopping ("pass-judge line") distances used to classify a stop request (spec TLJ §2.2).
+// Stopping ("pass-judge line") distances used to classify a stop request (docs/behaviour.md §L2.2).
 #pragma once
 
 namespace signalsim {
 
-/// spec TLJ §2.2 `calcJudgeLineDistWithJerkLimit`, reproduced exactly, quirks included.
+/// docs/behaviour.md §L2.2 `calcJudgeLineDistWithJerkLimit`, reproduced exactly, quirks included.
 /// Model: dead time t_d at speed v, then a constant-jerk ramp (j_s) from a0 to a_s, then constant
 /// a_s to standstill. a_s and j_s are negative (Autoware's max_accel -2.8, max_jerk -5.0).
 ///   v <= 0                          -> 0
@@ -18,7 +18,7 @@ namespace signalsim {
 /// yields 0, as std::max(0.0, NaN) does in the reference. Never throws.
 double calc_judge_line_dist_with_jerk_limit(double v, double a0, double a_s, double j_s, double t_d);
 
-/// spec TLJ §2.2 `calcJudgeLineDistWithAccLimit`: v^2 / (2 (-a_s)) + t_d v.
+/// docs/behaviour.md §L2.2 `calcJudgeLineDistWithAccLimit`: v^2 / (2 (-a_s)) + t_d v.
 /// (Not used by the judge; tested upstream: v=10, a_s=-3, t_d=1 -> 26.67.) Never throws.
 double calc_judge_line_dist_with_acc_limit(double v, double a_s, double t_d);
 

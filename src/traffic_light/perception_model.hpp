@@ -1,6 +1,6 @@
-// Seeded perception model between SUMO's true light state and the judge (spec TLJ, Decisions:
+// Seeded perception model between SUMO's true light state and the judge (docs/behaviour.md §L0:
 // "Perception model"). SUMO knows the true state; a real vehicle does not. This is how "never
-// received" and "timed out" (spec TLJ §1.3 rows 1-2) happen in a simulation.
+// received" and "timed out" (docs/behaviour.md §L1.3 rows 1-2) happen in a simulation.
 //
 // Per call of observe(truth, distance_to_light, now):
 //   draw u_drop                                        (one draw per call, always)

@@ -125,16 +125,16 @@ bool has_green_circle(const std::vector<SignalElement>& elements) {
 }
 
 bool is_traffic_signal_stop(LaneTurnDirection turn_direction, const std::vector<SignalElement>& elements) {
-  // spec TLJ §1.4 step 1: a green circle lets every lane go.
+  // docs/behaviour.md §L1.4 step 1: a green circle lets every lane go.
   if (has_green_circle(elements)) return false;
-  // spec TLJ §1.4 step 2: a lane without turn_direction ignores arrows.
+  // docs/behaviour.md §L1.4 step 2: a lane without turn_direction ignores arrows.
   const std::optional<SignalShape> arrow = matching_arrow_shape(turn_direction);
   if (!arrow) return true;
-  // spec TLJ §1.4 steps 3-5, Decision: the arrow of the lane's direction must be GREEN.
+  // docs/behaviour.md §L1.4 steps 3-5, Decision: the arrow of the lane's direction must be GREEN.
   const bool green_arrow = std::any_of(elements.begin(), elements.end(), [&](const SignalElement& e) {
     return e.shape == *arrow && e.color == SignalColor::Green;
   });
-  // spec TLJ §1.4 step 6.
+  // docs/behaviour.md §L1.4 step 6.
   return !green_arrow;
 }
 
@@ -151,7 +151,7 @@ bool is_traffic_signal_red_stop(LaneTurnDirection turn_direction, const std::vec
 }
 
 bool is_yellow(const std::vector<SignalElement>& elements) {
-  // spec TLJ §1.8: AMBER with SOLID_ON or UNKNOWN status, any shape (as the module's fork).
+  // docs/behaviour.md §L1.8: AMBER with SOLID_ON or UNKNOWN status, any shape (as the module's fork).
   return std::any_of(elements.begin(), elements.end(), [](const SignalElement& e) {
     return e.color == SignalColor::Amber &&
            (e.status == SignalStatus::SolidOn || e.status == SignalStatus::Unknown);

@@ -12,12 +12,12 @@ namespace signalsim {
 
 namespace {
 
-// spec TLJ §1.2 / §4 hard-coded constants.
+// docs/behaviour.md §L1.2 / §L4 hard-coded constants.
 constexpr double kDeadLine = -2.0;          // APPROACH -> GO_OUT when d < -2.0 m
 constexpr double kRestartLength = 1.0;      // GO_OUT -> APPROACH when d > +1.0 m
 constexpr double kStopVelocityEps = 1e-3;   // isVehicleStopped(0.0)
 
-// Times are compared in integer nanoseconds, like rclcpp::Time (spec TLJ §1.5 choice). Saturated
+// Times are compared in integer nanoseconds, like rclcpp::Time (docs/behaviour.md §L1.5 choice). Saturated
 // at +-4e18 ns (about 127 years): llround of a larger finite time is unspecified, and the
 // difference of two saturated times (now - stamp, now - timer start) stays within int64 (fuzzing
 // found `now - stamp` overflowing for a stamp of 1e300 s).
@@ -87,7 +87,7 @@ void validate(const TrafficLightJudgeParameters& p) {
 }
 
 double distance_to_stop_point(double front_to_stop_line, double stop_margin) {
-  return front_to_stop_line - stop_margin;  // spec TLJ §9.2
+  return front_to_stop_line - stop_margin;  // docs/behaviour.md §L9.2
 }
 
 // Autoware compares the signed speed (`v >= stop_velocity` means moving): a reversing ego counts as
@@ -113,11 +113,11 @@ void TrafficLightJudge::reset() {
   yellow_state_ = YellowState::NotYellow;
 }
 
-// spec TLJ §1.3 decision table, with the arrow-aware override of §1.8 as row 3.
+// docs/behaviour.md §L1.3 decision table, with the arrow-aware override of §L1.8 as row 3.
 bool TrafficLightJudge::is_stop_signal(const TrafficLightJudgeInput& in, std::int64_t now_ns,
                                        SignalVerdict& verdict) {
   const std::vector<SignalElement> previous = looking_;
-  // updateTrafficSignal: the module looks up the node's latest observation (spec TLJ §1.3).
+  // updateTrafficSignal: the module looks up the node's latest observation (docs/behaviour.md §L1.3).
   if (received_) {
     stamp_ns_ = to_ns(received_->stamp);
     looking_ = highest_confidence_per_shape(received_->elements);  // Decision: highest reliability
@@ -135,7 +135,7 @@ bool TrafficLightJudge::is_stop_signal(const TrafficLightJudgeInput& in, std::in
     verdict = SignalVerdict::TimedOut;
     return true;
   }
-  // Row 3: arrow-aware yellow passing (spec TLJ §1.8). No tracking when disabled.
+  // Row 3: arrow-aware yellow passing (docs/behaviour.md §L1.8). No tracking when disabled.
   if (params_.enable_arrow_aware_yellow_passing) {
     if (is_yellow(looking_)) {
       if (yellow_state_ == YellowState::NotYellow && !previous.empty()) {
@@ -149,7 +149,7 @@ bool TrafficLightJudge::is_stop_signal(const TrafficLightJudgeInput& in, std::in
       yellow_state_ = YellowState::NotYellow;
     }
   }
-  // Row 4: color and arrow matching (spec TLJ §1.4).
+  // Row 4: color and arrow matching (docs/behaviour.md §L1.4).
   const bool stop = is_traffic_signal_stop(in.turn_direction, looking_);
   verdict = stop ? SignalVerdict::Stop : SignalVerdict::Go;
   return stop;
@@ -174,13 +174,13 @@ TrafficLightJudgeResult TrafficLightJudge::step(const TrafficLightJudgeInput& in
     return r;
   };
 
-  // spec TLJ §1.2 STEP 1.
+  // docs/behaviour.md §L1.2 STEP 1.
   if (!in.distance_to_stop_point) {
     r.reason = "none: the path does not cross the stop line";
     return finish();
   }
 
-  // spec TLJ §1.2 STEP 2; §2.2-§2.5 quantities reported every step with a stop point.
+  // docs/behaviour.md §L1.2 STEP 2; §L2.2-§L2.5 quantities reported every step with a stop point.
   const double d = *in.distance_to_stop_point;
   const double v = in.velocity;
   r.distance = d;
@@ -189,7 +189,7 @@ TrafficLightJudgeResult TrafficLightJudge::step(const TrafficLightJudgeInput& in
   r.yellow_lamp_line = v * params_.yellow_lamp_period;
 
   if (state_ == JudgeState::GoOut) {
-    // spec TLJ §1.2 STEP 4: never a stop in GO_OUT.
+    // docs/behaviour.md §L1.2 STEP 4: never a stop in GO_OUT.
     if (d > kRestartLength) {
       state_ = JudgeState::Approach;
       r.reason = strf("none: GO_OUT -> APPROACH (re-armed, d = %.2f m > %.1f m)", d, kRestartLength);
@@ -201,7 +201,7 @@ TrafficLightJudgeResult TrafficLightJudge::step(const TrafficLightJudgeInput& in
     return finish();
   }
 
-  // spec TLJ §1.2 3.1: dead line.
+  // docs/behaviour.md §L1.2 3.1: dead line.
   if (d < kDeadLine) {
     state_ = JudgeState::GoOut;
     stop_signal_start_ns_.reset();
@@ -210,13 +210,13 @@ TrafficLightJudgeResult TrafficLightJudge::step(const TrafficLightJudgeInput& in
     return finish();
   }
 
-  // spec TLJ §1.2 3.3.
+  // docs/behaviour.md §L1.2 3.3.
   SignalVerdict verdict = SignalVerdict::NotEvaluated;
   const bool is_stop = is_stop_signal(in, now_ns, verdict);
   r.verdict = verdict;
   r.is_stop_signal = is_stop;
 
-  // spec TLJ §1.2 3.4: the stop-signal timer; any non-stop cycle clears it (spec TLJ §1.5).
+  // docs/behaviour.md §L1.2 3.4: the stop-signal timer; any non-stop cycle clears it (docs/behaviour.md §L1.5).
   if (is_stop) {
     if (!stop_signal_start_ns_) stop_signal_start_ns_ = now_ns;
   } else {
@@ -225,10 +225,10 @@ TrafficLightJudgeResult TrafficLightJudge::step(const TrafficLightJudgeInput& in
   const std::int64_t elapsed_ns = stop_signal_start_ns_ ? std::max<std::int64_t>(0, now_ns - *stop_signal_start_ns_) : 0;
   r.stop_signal_elapsed = static_cast<double>(elapsed_ns) * 1e-9;
 
-  // spec TLJ §1.2 3.5 / §1.5: strictly greater, in integer nanoseconds.
+  // docs/behaviour.md §L1.2 3.5 / §L1.5: strictly greater, in integer nanoseconds.
   bool to_be_stopped = is_stop && (is_prev_state_stop_ || elapsed_ns > hysteresis_ns_);
 
-  // spec TLJ §1.2 3.6 / §1.7: V2I, OR-ed in without hysteresis.
+  // docs/behaviour.md §L1.2 3.6 / §L1.7: V2I, OR-ed in without hysteresis.
   std::string v2i_text;
   if (params_.v2i.use_remaining_time) {
     const V2iVerdict v2i = will_turn_red_before_reaching_stop_line(d, v, in.now, in.turn_direction, in.predictions,
@@ -291,7 +291,7 @@ TrafficLightJudgeResult TrafficLightJudge::step(const TrafficLightJudgeInput& in
       break;
   }
 
-  // spec TLJ §1.2 3.7 / §1.6: restart suppression (raw is_stop; latch not updated).
+  // docs/behaviour.md §L1.2 3.7 / §L1.6: restart suppression (raw is_stop; latch not updated).
   const auto& rs = params_.restart_suppression;
   if (in.is_vehicle_stopped && rs.min_behind_distance_to_stop < d && d < rs.max_behind_distance_to_stop && is_stop) {
     r.decision = JudgeDecision::Stop;
@@ -302,7 +302,7 @@ TrafficLightJudgeResult TrafficLightJudge::step(const TrafficLightJudgeInput& in
     return finish();
   }
 
-  // spec TLJ §1.2 3.8 / 3.9: RTC disabled, activated := safe := !to_be_stopped.
+  // docs/behaviour.md §L1.2 3.8 / 3.9: RTC disabled, activated := safe := !to_be_stopped.
   if (!to_be_stopped) {
     is_prev_state_stop_ = false;
     r.decision = JudgeDecision::Pass;
@@ -315,13 +315,13 @@ TrafficLightJudgeResult TrafficLightJudge::step(const TrafficLightJudgeInput& in
     return finish();
   }
 
-  // spec TLJ §1.2 3.10 / §2.3 `isPassthrough`: strict inequalities.
+  // docs/behaviour.md §L1.2 3.10 / §L2.3 `isPassthrough`: strict inequalities.
   const bool distance_stoppable = r.judge_dist < d;
   const bool slow_velocity = v < params_.yellow_light_stop_velocity;
   const bool stoppable = distance_stoppable || slow_velocity;
   const bool reachable = d < r.yellow_lamp_line;
 
-  // spec TLJ §2.6 zones.
+  // docs/behaviour.md §L2.6 zones.
   if (distance_stoppable) {
     r.zone = reachable ? JudgeZone::OptionalZone : JudgeZone::Stoppable;
   } else if (slow_velocity) {

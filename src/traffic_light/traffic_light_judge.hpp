@@ -1,22 +1,22 @@
 // The traffic-light judge: stop, pass or emergency stop for one light group and its stop line,
-// reproducing Autoware's behavior-velocity traffic-light module (spec TLJ §1-§2) on the route
+// reproducing Autoware's behavior-velocity traffic-light module (docs/behaviour.md §L1-§L2) on the route
 // coordinate. No SUMO types; the caller supplies distances, ego state and signal observations.
 //
 // One TrafficLightJudge is one Autoware scene module: one stop line and one light group. The caller
 // (scenario layer) creates it when the light enters the ego's horizon and drops it afterwards
-// (spec TLJ §1.1). All state lives in this object: the APPROACH/GO_OUT state, the stop-signal timer,
+// (docs/behaviour.md §L1.1). All state lives in this object: the APPROACH/GO_OUT state, the stop-signal timer,
 // the stop latch, the last received observation and the arrow-aware yellow tracker.
 //
 // ---------------------------------------------------------------------------------------------
-// Per-step algorithm of step(in)                            (spec TLJ §1.2; "d" = in.distance_to_stop_point)
+// Per-step algorithm of step(in)                            (docs/behaviour.md §L1.2; "d" = in.distance_to_stop_point)
 // ---------------------------------------------------------------------------------------------
-//   if in.observation:                      // a result was delivered this step (spec TLJ §1.3)
+//   if in.observation:                      // a result was delivered this step (docs/behaviour.md §L1.3)
 //       received := in.observation          // like the node's signal map: kept until replaced
 //   if d is empty:                          // STEP 1: the path does not cross the stop line
 //       return None                         //   no state change
 //   judge_dist := calc_judge_line_dist_with_jerk_limit(v, a0, max_accel, max_jerk,
-//                                                      delay_response_time)      (spec TLJ §2.2)
-//   yellow_lamp_line := v * yellow_lamp_period                                 (spec TLJ §2.3)
+//                                                      delay_response_time)      (docs/behaviour.md §L2.2)
+//   yellow_lamp_line := v * yellow_lamp_period                                 (docs/behaviour.md §L2.3)
 //   if state == APPROACH:                   // STEP 3
 //       if d < -2.0 m:                                                           (3.1)
 //           state := GO_OUT; clear timer; clear release clock; return None
@@ -24,9 +24,9 @@
 //       if is_stop: start timer at now unless running   else: clear timer        (3.4)
 //       elapsed := timer running ? max(0, now - start) : 0
 //       to_be_stopped := is_stop and (is_prev_state_stop or elapsed > stop_time_hysteresis)  (3.5)
-//       if v2i.use_remaining_time:                                               (3.6, §1.7)
+//       if v2i.use_remaining_time:                                               (3.6, §L1.7)
 //           to_be_stopped := to_be_stopped or WILL_TURN_RED(d, v, in.predictions)  (v2i_rule.hpp)
-//       if in.is_vehicle_stopped and min_behind < d < max_behind and is_stop:    (3.7, §1.6)
+//       if in.is_vehicle_stopped and min_behind < d < max_behind and is_stop:    (3.7, §L1.6)
 //           return Stop at the ego's own position (restart_suppressed; latch untouched)
 //       if is_stop or to_be_stopped: clear release clock                        (signalsim, below)
 //       else if is_prev_state_stop:         // a decided stop sees no stop signal
@@ -37,7 +37,7 @@
 //           else: clear release clock       // released below, as the reference does
 //       if not to_be_stopped:                                                    (3.8, 3.9)
 //           is_prev_state_stop := false; return Pass
-//       ZONE := classify(judge_dist < d, v < yellow_light_stop_velocity,        (3.10, §2.3, §2.6)
+//       ZONE := classify(judge_dist < d, v < yellow_light_stop_velocity,        (3.10, §L2.3, §L2.6)
 //                        d < yellow_lamp_line)
 //       if enable_pass_judge and not stoppable and not is_prev_state_stop and reachable:
 //           return Pass                                  // "can pass through during yellow lamp"
@@ -48,28 +48,28 @@
 //       if d > 1.0 m: state := APPROACH     // re-arm
 //       clear timer; clear release clock; return None
 //
-//   IS_STOP_SIGNAL():                                                       (spec TLJ §1.3, §1.8)
+//   IS_STOP_SIGNAL():                                                       (docs/behaviour.md §L1.3, §L1.8)
 //       previous := looking
 //       if received: stamp := received.stamp; looking := highest_confidence_per_shape(received)
 //       if stamp unset:               return not is_simulation     // row 1: never received
 //       if now - stamp > tl_state_timeout:  return true            // row 2: timed out
-//       if enable_arrow_aware_yellow_passing:                      // row 3 (spec TLJ §1.8)
+//       if enable_arrow_aware_yellow_passing:                      // row 3 (docs/behaviour.md §L1.8)
 //           if is_yellow(looking):
 //               if yellow_state == NotYellow and previous not empty:
 //                   yellow_state := has_green_circle(previous) ? FromGreen : FromNonGreen
 //               if yellow_state == FromGreen and is_turn_lane and has_static_arrow: return false
 //           else: yellow_state := NotYellow
-//       return is_traffic_signal_stop(turn_direction, looking)     // row 4 (spec TLJ §1.4)
+//       return is_traffic_signal_stop(turn_direction, looking)     // row 4 (docs/behaviour.md §L1.4)
 //
 // Choices where the reference leaves room (all documented at their members below):
 // - Time. Times are rounded to integer nanoseconds (as rclcpp::Time) before any comparison, so at a
 //   0.1 s step the second STOP cycle has elapsed exactly 0.1 s (not > 0.1: pass) and the third
-//   0.2 s (stop) however the caller's clock accumulated rounding error (spec TLJ §1.5). The same
+//   0.2 s (stop) however the caller's clock accumulated rounding error (docs/behaviour.md §L1.5). The same
 //   holds for the timeout: age 1.0 s is not timed out, 1.1 s is. Times beyond +-4e9 s (any
 //   finite stamp, `now` or parameter) saturate there, so every difference is defined.
 // - Observations. An absent observation means "nothing new was delivered": the last one stays in
 //   force and ages towards the timeout (the node keeps the last message). An observation with no
-//   elements means "delivered, nothing recognised" and is a stop signal (spec TLJ §1.3 notes).
+//   elements means "delivered, nothing recognised" and is a stop signal (docs/behaviour.md §L1.3 notes).
 // - Stop vs EmergencyStop is fixed when a stop is first inserted and held while the latch holds, so
 //   the last metres of a normal stop (where the judge line, with its 0.5 s dead time, exceeds d)
 //   are not relabelled as an emergency. A stop inserted while not stoppable is an EmergencyStop also
@@ -77,7 +77,7 @@
 // - Stop release confirmation (signalsim's own parameter, beyond the reference; 0 = the reference).
 //   The reference releases a decided stop at the first cycle without a stop signal (step 3.9), so
 //   one misread green cancels it and, near the line, the next red is judged afresh by the pass
-//   judge (spec TLJ §1.2 consequences, §2.6), which may pass through on red.
+//   judge (docs/behaviour.md §L1.2 consequences, §L2.6), which may pass through on red.
 //   "Decided" is the judge's latched stop: is_prev_state_stop, set where a Stop or EmergencyStop is
 //   returned at step 3.10 (a restart suppression, 3.7, neither sets nor needs it). While it holds, a
 //   cycle with no stop signal (IS_STOP_SIGNAL false and no V2I stop) keeps the stop, at the latched
@@ -90,9 +90,9 @@
 //   go verdict without a stamp and is timed by `now`; without is_simulation it is a stop signal. A
 //   stop not yet decided (hysteresis running) is not held: a go cycle passes at once. GO_OUT,
 //   the dead line and reset() clear the clock; with 0 every go cycle releases at once.
-// - V2I (spec TLJ §1.7): in.predictions are the predictions in force this step (the V2I channel's,
+// - V2I (docs/behaviour.md §L1.7): in.predictions are the predictions in force this step (the V2I channel's,
 //   scenario/light_stage); the rule is OR-ed in after the hysteresis, so a green light can give a
-//   stop, which the pass judge still classifies. RTC (spec TLJ §1.5; disabled path = activated :=
+//   stop, which the pass judge still classifies. RTC (docs/behaviour.md §L1.5; disabled path = activated :=
 //   safe) is not modelled.
 #pragma once
 
@@ -107,10 +107,10 @@
 
 namespace signalsim {
 
-/// Parameters, Autoware names and defaults (spec TLJ §4), overridden by the signalsim Decisions.
+/// Parameters, Autoware names and defaults (docs/behaviour.md §L4), overridden by the signalsim Decisions.
 struct TrafficLightJudgeParameters {
   /// Bounds of `d` within which a stopped ego keeps standing instead of creeping to the stop point
-  /// (spec TLJ §1.6). Both bounds are exclusive.
+  /// (docs/behaviour.md §L1.6). Both bounds are exclusive.
   struct RestartSuppression {
     double min_behind_distance_to_stop = 0.5;  ///< [m]
     double max_behind_distance_to_stop = 1.0;  ///< [m]
@@ -121,14 +121,14 @@ struct TrafficLightJudgeParameters {
   double stop_time_hysteresis = 0.1;      ///< [s] a stop signal must persist strictly longer than this
   double yellow_lamp_period = 2.75;       ///< [s] assumed yellow duration for the yellow lamp line
   double yellow_light_stop_velocity = 2.0;  ///< [m/s] below: always stoppable (Decision; newest ref 1.0)
-  bool enable_pass_judge = true;          ///< false: a stop request always stops (spec TLJ §2.3)
+  bool enable_pass_judge = true;          ///< false: a stop request always stops (docs/behaviour.md §L2.3)
   bool is_simulation = true;              ///< never received -> pass (true) / stop (false) (Decision)
-  RestartSuppression restart_suppression;  ///< spec TLJ §1.6
-  bool enable_arrow_aware_yellow_passing = false;  ///< spec TLJ §1.8 (corrected: autoware_launch ships false)
+  RestartSuppression restart_suppression;  ///< docs/behaviour.md §L1.6
+  bool enable_arrow_aware_yellow_passing = false;  ///< docs/behaviour.md §L1.8 (corrected: autoware_launch ships false)
   double max_accel = -2.8;            ///< [m/s^2] a_s of the judge line, negative (common param)
   double max_jerk = -5.0;             ///< [m/s^3] j_s of the judge line, negative (common param)
   double delay_response_time = 0.5;   ///< [s] t_d of the judge line (common param)
-  V2iParameters v2i;                  ///< spec TLJ §1.7 (off by default)
+  V2iParameters v2i;                  ///< docs/behaviour.md §L1.7 (off by default)
   /// [s] >= 0, signalsim's own (beyond the reference): a latched stop is released only after no stop
   /// signal for this long without a break (see "Stop release confirmation" above); 0: the reference.
   double stop_release_confirmation_time = 0.0;
@@ -137,19 +137,19 @@ struct TrafficLightJudgeParameters {
 /// Throws std::invalid_argument naming the first bad member: a non-finite value, a negative
 /// time (tl_state_timeout, stop_time_hysteresis, yellow_lamp_period, delay_response_time,
 /// stop_release_confirmation_time),
-/// max_accel == 0 or max_jerk == 0 (divisors of §2.2), or min_behind > max_behind.
+/// max_accel == 0 or max_jerk == 0 (divisors of §L2.2), or min_behind > max_behind.
 /// Signs of max_accel/max_jerk are not checked (upstream test fixtures use +1.0).
 void validate(const TrafficLightJudgeParameters& params);
 
-/// spec TLJ §9.2: d = (s_line - stop_margin) - s_front, i.e. the front-referenced distance to the
+/// docs/behaviour.md §L9.2: d = (s_line - stop_margin) - s_front, i.e. the front-referenced distance to the
 /// stop line minus the margin. Equals Autoware's base_link-referenced distance to the stop point.
 double distance_to_stop_point(double front_to_stop_line, double stop_margin);
 
 /// Autoware's PlannerData::isVehicleStopped(0.0): only the newest speed sample, v < 1e-3 m/s, signed
-/// (spec TLJ §1.6; a reversing ego counts as stopped, as in Autoware). Offered to the caller for TrafficLightJudgeInput::is_vehicle_stopped.
+/// (docs/behaviour.md §L1.6; a reversing ego counts as stopped, as in Autoware). Offered to the caller for TrafficLightJudgeInput::is_vehicle_stopped.
 bool is_vehicle_stopped(double velocity);
 
-/// Module state (spec TLJ §1.2). There is no STOPPED or PASSED state.
+/// Module state (docs/behaviour.md §L1.2). There is no STOPPED or PASSED state.
 enum class JudgeState : std::uint8_t { Approach, GoOut };
 
 /// What the judge asks of the velocity planner this step.
@@ -160,7 +160,7 @@ enum class JudgeDecision : std::uint8_t {
   EmergencyStop,  ///< stop at stop_point_distance relaxing the limits (dilemma zone, Decision)
 };
 
-/// Classification of a stop request by the pass judge (spec TLJ §2.3, §2.6). None when the pass
+/// Classification of a stop request by the pass judge (docs/behaviour.md §L2.3, §L2.6). None when the pass
 /// judge was not consulted this step (no stop requested).
 enum class JudgeZone : std::uint8_t {
   None,
@@ -171,17 +171,17 @@ enum class JudgeZone : std::uint8_t {
   Slow,               ///< judge_dist >= d but v < yellow_light_stop_velocity: always stoppable
 };
 
-/// How IS_STOP_SIGNAL reached its answer (spec TLJ §1.3 table).
+/// How IS_STOP_SIGNAL reached its answer (docs/behaviour.md §L1.3 table).
 enum class SignalVerdict : std::uint8_t {
   NotEvaluated,         ///< IS_STOP_SIGNAL did not run this step (no stop point, GO_OUT)
   NeverReceived,        ///< row 1: go with is_simulation, stop without
   TimedOut,             ///< row 2: stop
-  ArrowAwareYellowPass, ///< row 3: go (spec TLJ §1.8)
+  ArrowAwareYellowPass, ///< row 3: go (docs/behaviour.md §L1.8)
   Go,                   ///< row 4: green circle or matching green arrow
   Stop,                 ///< row 4: anything else
 };
 
-/// Arrow-aware yellow tracker (spec TLJ §1.8; the fork's kFromRedArrow is kFromNonGreen).
+/// Arrow-aware yellow tracker (docs/behaviour.md §L1.8; the fork's kFromRedArrow is kFromNonGreen).
 enum class YellowState : std::uint8_t { NotYellow, FromGreen, FromNonGreen };
 
 std::string_view to_string(JudgeState s);
@@ -194,18 +194,18 @@ std::string_view to_string(YellowState y);
 struct TrafficLightJudgeInput {
   double now = 0.0;  ///< [s] simulation time; should not decrease
   /// [m] signed distance base_link -> stop point (= distance_to_stop_point(front->line, margin));
-  /// > 0 ahead. Empty when the ego's path does not cross this stop line (spec TLJ §1.2 STEP 1).
+  /// > 0 ahead. Empty when the ego's path does not cross this stop line (docs/behaviour.md §L1.2 STEP 1).
   std::optional<double> distance_to_stop_point;
-  double velocity = 0.0;      ///< [m/s] v, signed, not clamped (spec TLJ §2.1)
-  double acceleration = 0.0;  ///< [m/s^2] a0, positive = speeding up (spec TLJ §2.1)
+  double velocity = 0.0;      ///< [m/s] v, signed, not clamped (docs/behaviour.md §L2.1)
+  double acceleration = 0.0;  ///< [m/s^2] a0, positive = speeding up (docs/behaviour.md §L2.1)
   /// The perception result delivered this step, if any. Absent: nothing new (the previous one stays
   /// in force and ages). Present with no elements: delivered but nothing recognised (stop).
   std::optional<SignalObservation> observation;
-  bool is_vehicle_stopped = false;  ///< see is_vehicle_stopped(v) (spec TLJ §1.6)
+  bool is_vehicle_stopped = false;  ///< see is_vehicle_stopped(v) (docs/behaviour.md §L1.6)
   LaneTurnDirection turn_direction = LaneTurnDirection::Else;  ///< of the lane owning the light
-  bool is_turn_lane = false;      ///< lane turn_direction is left/right (spec TLJ §1.8 map fact)
-  bool has_static_arrow = false;  ///< the light has an arrow bulb (spec TLJ §1.8 map fact)
-  /// The V2I predictions in force this step (spec TLJ §1.7); empty: V2I says nothing. Used only
+  bool is_turn_lane = false;      ///< lane turn_direction is left/right (docs/behaviour.md §L1.8 map fact)
+  bool has_static_arrow = false;  ///< the light has an arrow bulb (docs/behaviour.md §L1.8 map fact)
+  /// The V2I predictions in force this step (docs/behaviour.md §L1.7); empty: V2I says nothing. Used only
   /// with v2i.use_remaining_time.
   std::vector<SignalPrediction> predictions;
 };
@@ -219,16 +219,16 @@ struct TrafficLightJudgeResult {
   bool is_stop_signal = false;   ///< raw IS_STOP_SIGNAL (before hysteresis); false if not evaluated
   bool to_be_stopped = false;    ///< after hysteresis and latch (step 3.5)
   double stop_signal_elapsed = 0.0;  ///< [s] how long the stop signal has persisted (0 if none)
-  bool restart_suppressed = false;   ///< step 3.7 fired (spec TLJ §1.6)
+  bool restart_suppressed = false;   ///< step 3.7 fired (docs/behaviour.md §L1.6)
   bool is_prev_state_stop = false;   ///< the stop latch after this step
   YellowState yellow_state = YellowState::NotYellow;  ///< tracker after this step
   double distance = 0.0;          ///< [m] d this step (0 when there is no stop point)
-  double judge_dist = 0.0;        ///< [m] jerk-limited judge line (spec TLJ §2.2); 0 without stop point
-  double yellow_lamp_line = 0.0;  ///< [m] v * yellow_lamp_period (spec TLJ §2.5)
+  double judge_dist = 0.0;        ///< [m] jerk-limited judge line (docs/behaviour.md §L2.2); 0 without stop point
+  double yellow_lamp_line = 0.0;  ///< [m] v * yellow_lamp_period (docs/behaviour.md §L2.5)
   /// [m] where the planner must bring base_link to rest, relative to base_link: d for Stop and
   /// EmergencyStop, 0 for a restart suppression (stay here); empty otherwise.
   std::optional<double> stop_point_distance;
-  /// spec TLJ §1.7, with v2i.use_remaining_time only: the V2I rule held this step (OR-ed into
+  /// docs/behaviour.md §L1.7, with v2i.use_remaining_time only: the V2I rule held this step (OR-ed into
   /// to_be_stopped), and the earliest red stop the predictions tell, minus now [s] (empty: none).
   bool v2i_stop = false;
   std::optional<double> v2i_time_to_red;

@@ -1,4 +1,4 @@
-// The V2I channel: SUMO's predictions of a light (spec TLJ §1.7 `predictions[]`) delivered to the
+// The V2I channel: SUMO's predictions of a light (docs/behaviour.md §L1.7 `predictions[]`) delivered to the
 // judge through a seeded fault model of the same kind as the camera's (perception_model.hpp), with
 // the faults a radio link has: per-step dropout, latency and scheduled blackouts.
 //

@@ -20,7 +20,7 @@ V2iVerdict will_turn_red_before_reaching_stop_line(double d, double v, double no
                                                    const std::vector<SignalPrediction>& predictions,
                                                    const V2iParameters& params) {
   V2iVerdict r;
-  // spec TLJ §1.7: the time to reach the stop point, or the time to get going when (nearly) at rest.
+  // docs/behaviour.md §L1.7: the time to reach the stop point, or the time to get going when (nearly) at rest.
   r.t_pass = v > params.velocity_threshold ? d / v : params.required_time_to_departure;
   r.horizon = r.t_pass + params.last_time_allowed_to_pass;
   for (const SignalPrediction& p : predictions) {

@@ -1,4 +1,4 @@
-// The V2I "remaining time to red" rule of the traffic-light judge (spec TLJ §1.7,
+// The V2I "remaining time to red" rule of the traffic-light judge (docs/behaviour.md §L1.7,
 // `willTrafficLightTurnRedBeforeReachingStopLine`), as a pure function of the step's values:
 //
 //   t_pass  := d / v                          if v > velocity_threshold
@@ -7,8 +7,8 @@
 //   turns_red := some prediction p with is_traffic_signal_red_stop(turn_direction, p.elements)
 //                and (p.stamp - now) < horizon                                  (strict)
 //
-// The judge OR-s `turns_red` into to_be_stopped, without hysteresis (spec TLJ §1.2 step 3.6); the
-// pass judge of §2 still applies afterwards. No SUMO types: predictions are signal elements with an
+// The judge OR-s `turns_red` into to_be_stopped, without hysteresis (docs/behaviour.md §L1.2 step 3.6); the
+// pass judge of §L2 still applies afterwards. No SUMO types: predictions are signal elements with an
 // absolute stamp (SignalPrediction), made by the caller (scenario/light_stage from SUMO's program).
 #pragma once
 
@@ -19,7 +19,7 @@
 
 namespace signalsim {
 
-/// Autoware's `v2i.*` parameters (spec TLJ §1.7, §4).
+/// Autoware's `v2i.*` parameters (docs/behaviour.md §L1.7, §L4).
 struct V2iParameters {
   bool use_remaining_time = false;         ///< the rule is applied only when true
   double last_time_allowed_to_pass = 2.0;  ///< [s] margin added to t_pass

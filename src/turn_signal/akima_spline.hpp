@@ -1,5 +1,5 @@
 // Akima spline interpolation of one scalar series, as Autoware's autoware::interpolation::splineByAkima
-// (the x/y interpolator behind motion_utils::resamplePoseVector's default call; spec TSD §7).
+// (the x/y interpolator behind motion_utils::resamplePoseVector's default call; docs/behaviour.md §T7).
 #pragma once
 
 #include <vector>

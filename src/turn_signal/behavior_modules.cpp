@@ -9,7 +9,7 @@
 namespace signalsim {
 namespace {
 
-constexpr double kLargeDeviation = 1.0;          // spec TSD §8.2 / §10: avoidance large-deviation guard [m]
+constexpr double kLargeDeviation = 1.0;          // docs/behaviour.md §T8.2 / §T10: avoidance large-deviation guard [m]
 constexpr double kFirstPathEndDistance = 1.0;    // [SP]/[GP] distance_threshold [m]
 
 bool is_enable(TurnIndicator command) {
@@ -23,7 +23,7 @@ TurnIndicator centerline_start_command(const std::string& value) {
 
 }  // namespace
 
-// ---- Avoidance (spec TSD §8.2) ------------------------------------------------------------------
+// ---- Avoidance (docs/behaviour.md §T8.2) ------------------------------------------------------------------
 
 std::optional<AvoidanceShiftLine> AvoidanceSignal::target_line(const std::vector<AvoidanceShiftLine>& lines,
                                                                const EgoOnRoute& ego,
@@ -35,7 +35,7 @@ std::optional<AvoidanceShiftLine> AvoidanceSignal::target_line(const std::vector
     const AvoidanceShiftLine& s2 = lines[i];
     const double r2 = s2.shift_start - s2.shift_end;
     if ((r1 > 0.0 && r2 > 0.0) || (r1 < 0.0 && r2 < 0.0)) continue;  // same side
-    // spec TSD §12.1.13: decided at the first opposite-side line, comparing against s1 only.
+    // docs/behaviour.md §T12.1.13: decided at the first opposite-side line, comparing against s1 only.
     if (s1.s_start - ego.s_base > 0.0) return s1;                      // near line still ahead
     if (s2.s_start - ego.s_base < ego.speed * params.max_prepare_time) return s2;  // far line close
     return s1;
@@ -69,7 +69,7 @@ TurnSignalInfo AvoidanceSignal::update(const TurnSignalInfo& previous, const Inp
   return overwrite_turn_signal(ego, previous, result.info);
 }
 
-// ---- Lane change (spec TSD §8.2) ----------------------------------------------------------------
+// ---- Lane change (docs/behaviour.md §T8.2) ----------------------------------------------------------------
 
 TurnSignalInfo LaneChangeSignal::lc_signal(TurnIndicator direction, double start, double end,
                                            std::optional<double> crossing, const BehaviorSignalParameters& params) {
@@ -108,7 +108,7 @@ TurnSignalInfo LaneChangeSignal::update(const TurnSignalInfo& previous, const In
                                         double now, const BehaviorSignalParameters& p) {
   if (!is_enable(in.direction)) return previous;  // direction NONE
 
-  // signalsim activation (issue 5): prep distance before the lateral motion, then latched.
+  // signalsim activation (docs/differences.md): prep distance before the lateral motion, then latched.
   if (!active_) {
     const double prepare_distance =
         std::max(ego.speed * p.turn_signal_search_time, p.turn_signal_minimum_search_distance);
@@ -145,7 +145,7 @@ TurnSignalInfo LaneChangeSignal::update(const TurnSignalInfo& previous, const In
   return lc_signal(in.direction, ego.s_base, in.lane_changing_end, in.boundary_crossing, p);
 }
 
-// ---- Start planner (spec TSD §8.2) --------------------------------------------------------------
+// ---- Start planner (docs/behaviour.md §T8.2) --------------------------------------------------------------
 
 bool PullOutSignal::override_stopped_check(bool has_departed, bool geometric_planner,
                                            double distance_to_first_path_end) {
@@ -190,7 +190,7 @@ TurnSignalInfo PullOutSignal::update(const TurnSignalInfo& previous, const Input
   return use_prior_turn_signal(ego, previous, result.info);
 }
 
-// ---- Goal planner (spec TSD §8.2) ---------------------------------------------------------------
+// ---- Goal planner (docs/behaviour.md §T8.2) ---------------------------------------------------------------
 
 bool PullOverSignal::override_stopped_check(bool shift_planner, double distance_to_first_path_end) {
   return !shift_planner && std::abs(distance_to_first_path_end) < kFirstPathEndDistance;
@@ -228,7 +228,7 @@ TurnSignalInfo PullOverSignal::update(const TurnSignalInfo& previous, const Inpu
   return overwrite_turn_signal(ego, previous, result.info);
 }
 
-// ---- Merge (spec TSD §8, §6.4) ------------------------------------------------------------------
+// ---- Merge (docs/behaviour.md §T8, §T6.4) ------------------------------------------------------------------
 
 TurnSignalInfo merge_behavior_requests(BehaviorModules& modules, const BehaviorRequests& requests,
                                        const EgoOnRoute& ego, const BehaviorSignalParameters& params) {

@@ -1,8 +1,8 @@
-// The behaviour modules' blinker requests (spec TSD §8.2) and their state (spec TSD §8.3).
+// The behaviour modules' blinker requests (docs/behaviour.md §T8.2) and their state (docs/behaviour.md §T8.3).
 //
 // Each module is a small object fed once per step with the previous module's request and its own
 // inputs; it returns the merged request the next module sees. merge_behavior_requests chains them
-// in Autoware's slot order and hands the decider one behaviour TurnSignalInfo (spec TSD §3.1, §8):
+// in Autoware's slot order and hands the decider one behaviour TurnSignalInfo (docs/behaviour.md §T3.1, §T8):
 //
 //   B := EMPTY
 //   B := PullOutSignal::update(B, ...)       slot 1 start_planner        -> USE_PRIOR_INFO
@@ -35,8 +35,8 @@ struct AvoidanceShiftLine {
   double shift_end = 0.0;    ///< lateral offset at s_end [m]
 };
 
-/// Static obstacle avoidance (spec TSD §8.2 "Avoidance", §12.1.13). State: the permanent set of
-/// ignored shift-line ids (spec TSD §8.3).
+/// Static obstacle avoidance (docs/behaviour.md §T8.2 "Avoidance", §T12.1.13). State: the permanent set of
+/// ignored shift-line ids (docs/behaviour.md §T8.3).
 class AvoidanceSignal {
  public:
   struct Input {
@@ -53,7 +53,7 @@ class AvoidanceSignal {
   TurnSignalInfo update(const TurnSignalInfo& previous, const Input& input, const EgoOnRoute& ego,
                         const BehaviorSignalParameters& params);
 
-  /// spec TSD §8.2 target line among `lines` (already filtered, ordered): the first line s1, unless
+  /// docs/behaviour.md §T8.2 target line among `lines` (already filtered, ordered): the first line s1, unless
   /// the first following line on the opposite side (sign of start - end differs; a zero counts as
   /// opposite) s2 exists, s1's start is not ahead of base_link and s2's start is within
   /// v * max_prepare_time of base_link (strict). nullopt for no lines.
@@ -68,16 +68,16 @@ class AvoidanceSignal {
   std::set<std::uint64_t> ignored_;
 };
 
-/// Lane change (spec TSD §8.2 "Lane change", §12.1.14). Does not use BEHAVIOR_SIGNAL.
+/// Lane change (docs/behaviour.md §T8.2 "Lane change", §T12.1.14). Does not use BEHAVIOR_SIGNAL.
 ///
 /// LC_SIGNAL(start, end) = {direction, desired_start = required_start = start, desired_end = end,
 /// required_end = boundary crossing (signalsim default, lane_change_required_end_at_boundary) or end}.
 ///
-/// signalsim activation (issue 5): the module signals from the step where the front is within
+/// signalsim activation (docs/differences.md): the module signals from the step where the front is within
 /// max(v * turn_signal_search_time, turn_signal_minimum_search_distance) of lane_changing_start
-/// (the §8.1 comparison: on when prep >= front_to_start), latched until reset(); before that it
+/// (the §T8.1 comparison: on when prep >= front_to_start), latched until reset(); before that it
 /// passes `previous` through (in Autoware the module is not running yet). Once active the variants
-/// of [LC] apply with the ego pose (s_base) as start, exactly as §8.2.
+/// of [LC] apply with the ego pose (s_base) as start, exactly as §T8.2.
 /// State: the activation latch and the blinker-on timestamp (set when the module's own command is
 /// output, cleared when the previous module's request wins the OVERWRITE, as [LC]).
 class LaneChangeSignal {
@@ -132,8 +132,8 @@ class LaneChangeSignal {
   std::optional<double> blinker_on_since_;
 };
 
-/// Start planner, pull out (spec TSD §8.2 "Start planner"). State: the latched ignore lanelet
-/// (spec TSD §8.3): set while BEHAVIOR_SIGNAL says ignore, cleared by the first step that does not.
+/// Start planner, pull out (docs/behaviour.md §T8.2 "Start planner"). State: the latched ignore lanelet
+/// (docs/behaviour.md §T8.3): set while BEHAVIOR_SIGNAL says ignore, cleared by the first step that does not.
 class PullOutSignal {
  public:
   struct Input {
@@ -144,7 +144,7 @@ class PullOutSignal {
     bool driving_forward = true;  ///< false on a backward segment -> hazard
     bool override_ego_stopped_check = false;  ///< see override_stopped_check()
     std::size_t closest_lanelet = 0;  ///< route index of the lanelet closest to the ego (ignore key)
-    // Centre-line start special case (spec TSD §8.2).
+    // Centre-line start special case (docs/behaviour.md §T8.2).
     bool enable_back = true;  ///< start_planner enable_back: backward driving allowed
     std::optional<double> time_since_first_engaged_forward;  ///< [s]; empty: not yet engaged
     /// Path span (the full pull-out path), lane bounds, current_shift_length, route_start, ...;
@@ -160,7 +160,7 @@ class PullOutSignal {
   /// [SP]: not yet departed, or (geometric planner and |ego to the first partial path's end| < 1 m).
   static bool override_stopped_check(bool has_departed, bool geometric_planner, double distance_to_first_path_end);
 
-  /// spec TSD §8.2 centre-line start condition.
+  /// docs/behaviour.md §T8.2 centre-line start condition.
   static bool is_centerline_start(const Input& input, const BehaviorSignalParameters& params);
 
   std::optional<std::size_t> ignored_lanelet() const { return ignore_; }
@@ -170,7 +170,7 @@ class PullOutSignal {
   std::optional<std::size_t> ignore_;
 };
 
-/// Goal planner, pull over (spec TSD §8.2 "Goal planner"). State: the latched ignore lanelet.
+/// Goal planner, pull over (docs/behaviour.md §T8.2 "Goal planner"). State: the latched ignore lanelet.
 class PullOverSignal {
  public:
   /// PR #11512: while decelerating before the pull-over path is decided.
@@ -238,7 +238,7 @@ struct BehaviorRequests {
 };
 
 /// Chains the modules in Autoware's order (see the file comment) starting from EMPTY and returns
-/// the merged behaviour request for the decider (spec TSD §3.1, §6.4, §8). Never throws.
+/// the merged behaviour request for the decider (docs/behaviour.md §T3.1, §T6.4, §T8). Never throws.
 TurnSignalInfo merge_behavior_requests(BehaviorModules& modules, const BehaviorRequests& requests,
                                        const EgoOnRoute& ego, const BehaviorSignalParameters& params);
 

@@ -6,9 +6,9 @@
 namespace signalsim {
 namespace {
 
-constexpr double kStoppedSpeed = 0.1;  // spec TSD §8.1 / §10: hard-coded stop speed [m/s]
+constexpr double kStoppedSpeed = 0.1;  // docs/behaviour.md §T8.1 / §T10: hard-coded stop speed [m/s]
 
-// spec TSD §1.2: TurnSignalInfo(path front, path back) with NO_COMMAND.
+// docs/behaviour.md §T1.2: TurnSignalInfo(path front, path back) with NO_COMMAND.
 TurnSignalInfo none_info(const BehaviorSignalInput& in) {
   TurnSignalInfo info;
   info.source = in.source;
@@ -54,7 +54,7 @@ BehaviorSignalParameters behavior_signal_parameters(const TurnSignalParameters& 
   return base;
 }
 
-// spec TSD §8.1 hatched-only test: the four shift classes of the reference (HPP isAvoidShift etc.).
+// docs/behaviour.md §T8.1 hatched-only test: the four shift classes of the reference (HPP isAvoidShift etc.).
 bool is_avoid_shift(double a, double b, double th) { return std::abs(a) < th && std::abs(b) > th; }
 bool is_return_shift(double a, double b, double th) { return std::abs(a) > th && std::abs(b) < th; }
 bool is_left_middle_shift(double a, double b, double th) { return a > th && b > th; }
@@ -79,7 +79,7 @@ bool straddles_lane_bound(const BehaviorSignalInput& in, const BehaviorSignalPar
   const BehaviorShiftLine& l = in.shift_line;
   const double step = p.bound_check_interval > 0.0 ? p.bound_check_interval : 1.0;
   const double half = 0.5 * p.vehicle_width;
-  // Path points start_idx .. end_idx-1 (spec TSD §8.1): samples s_start + k*step < s_end.
+  // Path points start_idx .. end_idx-1 (docs/behaviour.md §T8.1): samples s_start + k*step < s_end.
   for (int k = 0;; ++k) {
     const double s = l.s_start + k * step;
     if (!(s < l.s_end)) break;
@@ -111,7 +111,7 @@ double pull_out_distance_to_bound(const BehaviorSignalInput& in, const EgoOnRout
 
 BehaviorSignalResult behavior_signal(const BehaviorSignalInput& in, const EgoOnRoute& ego,
                                      const BehaviorSignalParameters& p) {
-  // spec TSD §8.1: backward driving (start planner's back path) -> hazard, not ignored.
+  // docs/behaviour.md §T8.1: backward driving (start planner's back path) -> hazard, not ignored.
   if (!in.is_driving_forward) {
     TurnSignalInfo info;
     info.hazard = HazardLights::Enable;
@@ -122,10 +122,10 @@ BehaviorSignalResult behavior_signal(const BehaviorSignalInput& in, const EgoOnR
   }
 
   const BehaviorShiftLine& line = in.shift_line;
-  // spec TSD §8.1: start/end index out of range of the path -> EMPTY, ignore.
+  // docs/behaviour.md §T8.1: start/end index out of range of the path -> EMPTY, ignore.
   if (line.s_start > in.path_back || line.s_end > in.path_back) return {TurnSignalInfo{}, true};
 
-  // spec TSD §8.1: lane-change style shifts are defined relative to the target lane.
+  // docs/behaviour.md §T8.1: lane-change style shifts are defined relative to the target lane.
   double a = line.shift_start;
   double b = line.shift_end;
   if (!in.egos_lane_is_shifted) {
@@ -143,7 +143,7 @@ BehaviorSignalResult behavior_signal(const BehaviorSignalInput& in, const EgoOnR
   const double front_to_start = line.s_start - ego.s_front;  // arclen(base_link -> start) - base_link2front
   if (prepare_distance < front_to_start) return none(in, false);  // too early, retry next cycle
 
-  // spec TSD §12.1.1: the flag disables every shift-based blinker (not ignored).
+  // docs/behaviour.md §T12.1.1: the flag disables every shift-based blinker (not ignored).
   if (!p.turn_signal_on_swerving) return none(in, false);
 
   if (!in.route_lanelet_found) return none(in, true);

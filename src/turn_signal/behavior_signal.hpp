@@ -1,4 +1,4 @@
-// The generic shift-based blinker request BEHAVIOR_SIGNAL (spec TSD §8.1) on the route coordinate s.
+// The generic shift-based blinker request BEHAVIOR_SIGNAL (docs/behaviour.md §T8.1) on the route coordinate s.
 //
 // Autoware's getBehaviorTurnSignalInfo, restated on s and lateral offsets. The steps, in order (the
 // first that applies returns; NONE = {NO_COMMAND, section = [path_front, path_back]}):
@@ -10,7 +10,7 @@
 //   |rel| < turn_signal_shift_length_threshold               -> NONE, ignore   (0.3 signals)
 //   |b - current_shift_length| < ..._remaining_shift_length_threshold -> NONE, ignore (0.1 signals)
 //   max(v * search_time, minimum_search_distance) < front_to_start -> NONE, keep (too early)
-//   !turn_signal_on_swerving                                 -> NONE, keep  (spec TSD §12.1.1)
+//   !turn_signal_on_swerving                                 -> NONE, keep  (docs/behaviour.md §T12.1.1)
 //   no route lanelet at the query point                      -> NONE, ignore
 //   avoidance only: hatched-road-marking-only side           -> NONE, ignore
 //   not pull out / pull over: footprint never meets a bound  -> NONE, ignore
@@ -19,7 +19,7 @@
 //   otherwise {rel > 0 ? LEFT : RIGHT, desired_start = front_to_start > 0 ? ego base_link : start,
 //              required_start = start, desired_end = required_end = end}, keep
 //
-// `ignore` tells the calling module to latch "no blinker" (spec TSD §8.3).
+// `ignore` tells the calling module to latch "no blinker" (docs/behaviour.md §T8.3).
 #pragma once
 
 #include <functional>
@@ -32,9 +32,9 @@
 namespace signalsim {
 
 /// Everything the behaviour modules read from the parameter set. Names are Autoware's; defaults are
-/// spec TSD §10 (and the Autoware module YAMLs where §10 has none).
+/// docs/behaviour.md §T10 (and the Autoware module YAMLs where §T10 has none).
 struct BehaviorSignalParameters {
-  // Shared with the decider (spec TSD §10).
+  // Shared with the decider (docs/behaviour.md §T10).
   double turn_signal_shift_length_threshold = 0.3;            ///< [m] smaller shifts never signal
   double turn_signal_remaining_shift_length_threshold = 0.1;  ///< [m] shift counted as done
   double turn_signal_search_time = 3.0;                       ///< [s] prep distance = max(v*this, min)
@@ -45,18 +45,18 @@ struct BehaviorSignalParameters {
   double base_link_to_front = 3.7;  ///< rear-axle centre to front bumper [m] (max_longitudinal_offset)
   double rear_overhang = 0.8;       ///< rear-axle centre to rear bumper [m] (not in the schema)
   double vehicle_width = 1.8;       ///< [m] (not in the schema)
-  // Lane change (spec TSD §8.2, lane_change.param.yaml).
+  // Lane change (docs/behaviour.md §T8.2, lane_change.param.yaml).
   double min_length_for_turn_signal_activation = 10.0;  ///< [m] terminal-variant buffer
   double max_prepare_duration = 4.0;        ///< [s] trajectory.max_prepare_duration (not in the schema)
   double min_prepare_duration = 2.0;        ///< [s] trajectory.min_prepare_duration (not in the schema)
   double min_lane_changing_velocity = 2.78; ///< [m/s] trajectory.min_lane_changing_velocity (not in the schema)
   double max_longitudinal_acc = 1.0;        ///< [m/s^2] trajectory.max_longitudinal_acc (not in the schema)
   /// signalsim: the lane change's required end is where the path crosses the adjacent lane's
-  /// boundary (design document, issue 5). false: the lane-changing end, as LC_SIGNAL in [LC].
+  /// boundary (a signalsim choice, docs/differences.md). false: the lane-changing end, as LC_SIGNAL in [LC].
   bool lane_change_required_end_at_boundary = true;
-  // Avoidance (spec TSD §8.2).
+  // Avoidance (docs/behaviour.md §T8.2).
   double max_prepare_time = 3.0;  ///< [s] the far opposite shift line is chosen within v*this
-  // Start planner (spec TSD §8.2).
+  // Start planner (docs/behaviour.md §T8.2).
   std::string turn_signal_on_centerline_start = "RIGHT";  ///< "LEFT" / "RIGHT"
   double minimum_shift_length = 0.5;                      ///< [m]
   double th_distance_to_middle_of_the_road = 0.5;         ///< [m]
@@ -83,7 +83,7 @@ struct LaneBounds {
 };
 
 /// The four numbers of a shift line as BEHAVIOR_SIGNAL sees it: the path points at the line's
-/// start and end and the path's raw lateral shift there (spec TSD §8.1 shift[start_idx], shift[end_idx]).
+/// start and end and the path's raw lateral shift there (docs/behaviour.md §T8.1 shift[start_idx], shift[end_idx]).
 struct BehaviorShiftLine {
   double s_start = 0.0;      ///< route s of the shift start (base_link) [m]
   double s_end = 0.0;        ///< route s of the shift end [m]
@@ -112,7 +112,7 @@ struct BehaviorSignalInput {
   LaneBounds lane;  ///< bounds of the current lanelets (lane-bound, stopped and pull-out tests)
   /// Optional lateral offset (and slope) of the module's path at s for the lane-bound test. Empty:
   /// the linear ramp from shift_start to shift_end, which is exactly what avoidance passes (its
-  /// linear shifted path, spec TSD §8.2). The slope defaults to a central difference of path_shift_at.
+  /// linear shifted path, docs/behaviour.md §T8.2). The slope defaults to a central difference of path_shift_at.
   std::function<double(double s)> path_shift_at;
   std::function<double(double s)> path_heading_at;
   double ego_relative_yaw = 0.0;  ///< ego yaw relative to the lane [rad] (pull-out corner)
@@ -127,12 +127,12 @@ struct BehaviorSignalResult {
   bool is_ignore = false;  ///< the module should latch "no blinker" for this line / lanelet
 };
 
-/// spec TSD §8.1 BEHAVIOR_SIGNAL. Distances follow spec TSD §2: front_to_start = s_start - s_front
+/// docs/behaviour.md §T8.1 BEHAVIOR_SIGNAL. Distances follow docs/behaviour.md §T2: front_to_start = s_start - s_front
 /// (arclen from base_link minus base_link_to_front), the ego pose is base_link (s_base). Never throws.
 BehaviorSignalResult behavior_signal(const BehaviorSignalInput& input, const EgoOnRoute& ego,
                                      const BehaviorSignalParameters& params);
 
-// --- the predicates, exposed for tests (spec TSD §8.1; all comparisons as in the reference) ---
+// --- the predicates, exposed for tests (docs/behaviour.md §T8.1; all comparisons as in the reference) ---
 
 /// |a| < th and |b| > th.
 bool is_avoid_shift(double a, double b, double th);

@@ -1,10 +1,10 @@
 // Exit-signal marking (signalsim option, not in the reference): derive `enable_exit_turn_signal` for
 // the ring lanelets before the ego's exit, which is how Japan's road traffic law times the exit signal.
 //
-// Why: real nets do not carry `enable_exit_turn_signal` (spec TSD §5, map requirement VM-03-19), and
-// SUMO's exit lanes are a few metres long, so the reference's exit blinker (spec TSD §5.3: from the
+// Why: real nets do not carry `enable_exit_turn_signal` (docs/behaviour.md §T5, map requirement VM-03-19), and
+// SUMO's exit lanes are a few metres long, so the reference's exit blinker (docs/behaviour.md §T5.3: from the
 // start of the exit lanelet) would last only metres. With the marking, the exit request's desired
-// start (§5.3, the start of the enable_exit_turn_signal chain) moves back to the previous exit.
+// start (§T5.3, the start of the enable_exit_turn_signal chain) moves back to the previous exit.
 #pragma once
 
 #include "map/route_map.hpp"
@@ -28,7 +28,7 @@ namespace signalsim {
 /// A lanelet that already has an `enable_exit_turn_signal` param (from the net) keeps its value, so a
 /// net's explicit "false" still breaks the chain. Everything else is copied unchanged. Pure; never throws.
 ///
-/// Result on the exit request (spec TSD §5.3, on_exit "Left" in Japan): the exit blinker comes on when
+/// Result on the exit request (docs/behaviour.md §T5.3, on_exit "Left" in Japan): the exit blinker comes on when
 /// the front leaves the junction of the previous exit (or the entry, for the first exit) and stays on to
 /// the end of the exit lanelet.
 RouteMap mark_exit_signal_lanes(RouteMap route);

@@ -1,4 +1,4 @@
-// spec TSD §4.3 FIRST_ACTIVE, shared by the intersection and roundabout queues.
+// docs/behaviour.md §T4.3 FIRST_ACTIVE, shared by the intersection and roundabout queues.
 #pragma once
 
 #include <deque>
@@ -8,7 +8,7 @@
 namespace signalsim {
 
 /// The head of the queue while its required end (base_link-referenced) is not passed; the last
-/// element is returned without an end check (spec TSD §12.1.6). EMPTY for an empty queue.
+/// element is returned without an end check (docs/behaviour.md §T12.1.6). EMPTY for an empty queue.
 TurnSignalInfo first_active(std::deque<TurnSignalInfo> queue, const EgoOnRoute& ego);
 
 }  // namespace signalsim

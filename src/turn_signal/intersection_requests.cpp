@@ -11,7 +11,7 @@
 namespace signalsim {
 namespace {
 
-constexpr double kStopSpeed = 0.1;  // spec TSD §10: hard-coded stop speed [m/s]
+constexpr double kStopSpeed = 0.1;  // docs/behaviour.md §T10: hard-coded stop speed [m/s]
 
 std::optional<TurnDirection> expected_direction(TurnIndicator behavior_command) {
   if (behavior_command == TurnIndicator::EnableLeft) return TurnDirection::Left;
@@ -24,10 +24,10 @@ bool is_turn(TurnDirection d) { return d == TurnDirection::Left || d == TurnDire
 TurnIndicator command_of(TurnDirection d) {
   if (d == TurnDirection::Left) return TurnIndicator::EnableLeft;
   if (d == TurnDirection::Right) return TurnIndicator::EnableRight;
-  return TurnIndicator::Disable;  // spec TSD §1.3: straight / none -> DISABLE
+  return TurnIndicator::Disable;  // docs/behaviour.md §T1.3: straight / none -> DISABLE
 }
 
-// spec TSD §4.1 "near": the next lanelet ahead with a map successor turning the expected way
+// docs/behaviour.md §T4.1 "near": the next lanelet ahead with a map successor turning the expected way
 // starts within turn_signal_minimum_search_distance.
 bool near_next_turn_lane(const RouteMap& route, RouteMap::Window window, const EgoOnRoute& ego,
                          std::optional<TurnDirection> expected, double minimum_search_distance) {
@@ -41,7 +41,7 @@ bool near_next_turn_lane(const RouteMap& route, RouteMap::Window window, const E
   return false;
 }
 
-// spec TSD §4.1 "inside": base_link inside a predecessor turn lanelet (same direction) of the closest
+// docs/behaviour.md §T4.1 "inside": base_link inside a predecessor turn lanelet (same direction) of the closest
 // lanelet. SUMO lanes abut without overlapping, so this holds only on the shared boundary.
 bool inside_predecessor_turn_lane(const RouteMap& route, const EgoOnRoute& ego,
                                   std::optional<TurnDirection> expected) {
@@ -97,7 +97,7 @@ TurnSignalInfo IntersectionRequests::update(const RouteMap& route, RouteMap::Win
                                             const EgoOnRoute& ego, TurnIndicator behavior_command,
                                             const TurnSignalParameters& params) {
   if (route.empty() || window.first >= window.last) return {};
-  // spec TSD §4.1: inputs computed once per cycle.
+  // docs/behaviour.md §T4.1: inputs computed once per cycle.
   const double base_search =
       params.turn_signal_search_time * ego.speed + params.turn_signal_intersection_search_distance;
   const auto expected = expected_direction(behavior_command);
@@ -106,22 +106,22 @@ TurnSignalInfo IntersectionRequests::update(const RouteMap& route, RouteMap::Win
   const bool inside = inside_predecessor_turn_lane(route, ego, expected);
   const auto needs = [&](TurnDirection attr) {
     if (is_turn(attr)) return true;
-    return (near || inside) && ego.speed < kStopSpeed;  // spec TSD §4.1 NEEDS
+    return (near || inside) && ego.speed < kStopSpeed;  // docs/behaviour.md §T4.1 NEEDS
   };
 
-  // spec TSD §4.2: group consecutive lanelets with the same direction.
+  // docs/behaviour.md §T4.2: group consecutive lanelets with the same direction.
   std::vector<TurnLaneGroup> groups;
   std::size_t next_unprocessed = window.first;
   for (std::size_t i = window.first; i < window.last; ++i) {
     if (i < next_unprocessed) continue;
     const Lanelet& lanelet = route.at(i);
-    if (lanelet.roundabout_role != RoundaboutRole::None) continue;  // handled by §5
+    if (lanelet.roundabout_role != RoundaboutRole::None) continue;  // handled by §T5
     if (!needs(lanelet.turn_direction)) continue;
     groups.push_back(group_from(route, i));
     next_unprocessed = groups.back().back_index + 1;
   }
 
-  // spec TSD §4.3: groups -> queue of requests.
+  // docs/behaviour.md §T4.3: groups -> queue of requests.
   std::deque<TurnSignalInfo> queue;
   for (const TurnLaneGroup& group : groups) {
     const Lanelet& front = route.at(group.front_index);
@@ -137,8 +137,8 @@ TurnSignalInfo IntersectionRequests::update(const RouteMap& route, RouteMap::Win
       desired_starts_.erase(group.front_index);  // lane already passed
       continue;
     }
-    if (search <= d_front) continue;  // strictly inside the search distance to activate (§4.4)
-    // spec TSD §4.4: the desired start is the ego pose when the lane first came within reach.
+    if (search <= d_front) continue;  // strictly inside the search distance to activate (§T4.4)
+    // docs/behaviour.md §T4.4: the desired start is the ego pose when the lane first came within reach.
     const double desired_start = desired_starts_.try_emplace(group.front_index, ego.s_base).first->second;
     TurnSignalInfo info;
     info.turn = command_of(group.direction);
@@ -150,7 +150,7 @@ TurnSignalInfo IntersectionRequests::update(const RouteMap& route, RouteMap::Win
     queue.push_back(info);
   }
 
-  return first_active(std::move(queue), ego);  // spec TSD §4.3
+  return first_active(std::move(queue), ego);  // docs/behaviour.md §T4.3
 }
 
 }  // namespace signalsim

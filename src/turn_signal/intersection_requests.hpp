@@ -1,4 +1,4 @@
-// Intersection turn-signal requests (spec TSD §4): groups of turn lanelets ahead of the ego.
+// Intersection turn-signal requests (docs/behaviour.md §T4): groups of turn lanelets ahead of the ego.
 #pragma once
 
 #include <cstddef>
@@ -11,7 +11,7 @@
 
 namespace signalsim {
 
-/// A group of consecutive route lanelets with the same turn direction (spec TSD §4.2).
+/// A group of consecutive route lanelets with the same turn direction (docs/behaviour.md §T4.2).
 struct TurnLaneGroup {
   std::size_t front_index = 0;  ///< route index of the first lanelet (the stored-start key)
   std::size_t back_index = 0;   ///< route index of the last lanelet
@@ -21,17 +21,17 @@ struct TurnLaneGroup {
 /// Geometry of a run of route lanelets [front_index, back_index] that depends on the map only.
 struct LaneSpanGeometry {
   bool has_centerline = false;  ///< the merged centerline has >= 2 points
-  double required_end_s = 0.0;  ///< route s of the required end (spec TSD §7)
+  double required_end_s = 0.0;  ///< route s of the required end (docs/behaviour.md §T7)
 };
 
-/// Owns the remembered desired starts (spec TSD §1.5, §4.4). Keys are route lanelet indices, not
+/// Owns the remembered desired starts (docs/behaviour.md §T1.5, §T4.4). Keys are route lanelet indices, not
 /// lane ids: on a looped route the second pass of a lane is a different key, so a stale start is
-/// never reused (the reference keys by lane id, spec TSD §12.1.5; documented in the README).
+/// never reused (the reference keys by lane id, docs/behaviour.md §T12.1.5; documented in docs/differences.md).
 class IntersectionRequests {
  public:
   /// One planning cycle. `window` is the path P (route indices around the ego); `behavior_command`
-  /// is the merged behaviour command (it decides which straight lanes count, §4.1).
-  /// Returns the first active request of the queue (§4.3 FIRST_ACTIVE) or EMPTY.
+  /// is the merged behaviour command (it decides which straight lanes count, §T4.1).
+  /// Returns the first active request of the queue (§T4.3 FIRST_ACTIVE) or EMPTY.
   TurnSignalInfo update(const RouteMap& route, RouteMap::Window window, const EgoOnRoute& ego,
                         TurnIndicator behavior_command, const TurnSignalParameters& params);
 
@@ -45,11 +45,11 @@ class IntersectionRequests {
   std::map<std::size_t, LaneSpanGeometry> geometry_cache_;  // group front index -> geometry
 };
 
-/// spec TSD §4.2: the group starting at `index`, walking route successors with the same direction
+/// docs/behaviour.md §T4.2: the group starting at `index`, walking route successors with the same direction
 /// (possibly beyond the window).
 TurnLaneGroup group_from(const RouteMap& route, std::size_t index);
 
-/// spec TSD §4.2 / [LL2U combine_lanelets_shape]: the chain's centerlines joined, skipping any
+/// docs/behaviour.md §T4.2 / [LL2U combine_lanelets_shape]: the chain's centerlines joined, skipping any
 /// point within 0.01 m of any point already taken.
 Polyline merged_centerline(const RouteMap& route, const TurnLaneGroup& group);
 

@@ -9,8 +9,8 @@
 namespace signalsim {
 namespace {
 
-constexpr double kResampleInterval = 1.0;        // hard-coded in the reference (spec TSD §10)
-constexpr double kTerminalMergeThreshold = 0.1;  // motion_utils overlap_threshold (spec TSD §7)
+constexpr double kResampleInterval = 1.0;        // hard-coded in the reference (docs/behaviour.md §T10)
+constexpr double kTerminalMergeThreshold = 0.1;  // motion_utils overlap_threshold (docs/behaviour.md §T7)
 constexpr double kOverlapPointEpsilon = 1e-8;    // motion_utils removeOverlapPoints, per axis
 constexpr double kDuplicatePointDistance = 1e-6; // motion_utils resample_utils close_s_threshold
 
@@ -117,7 +117,7 @@ double required_end_arc_length(const Polyline& centerline, double angle_threshol
   const std::vector<StationPose> poses =
       can_resample(distinct, stations) ? akima_resampled(distinct, stations) : raw_poses(raw);
 
-  // spec TSD §7 (code, not the design doc): scan from the END backward for the first pose whose
+  // docs/behaviour.md §T7 (code, not the design doc): scan from the END backward for the first pose whose
   // heading still differs from the final heading by at least the threshold.
   const double end_yaw = poses.back().yaw;
   const double threshold = deg_to_rad(angle_threshold_deg);

@@ -1,4 +1,4 @@
-// Required end point of a turn lane from its geometry (spec TSD §7, the code's backward scan).
+// Required end point of a turn lane from its geometry (docs/behaviour.md §T7, the code's backward scan).
 #pragma once
 
 #include "core/polyline.hpp"

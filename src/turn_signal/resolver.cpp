@@ -12,9 +12,9 @@ bool is_enable(TurnIndicator command) {
   return command == TurnIndicator::EnableLeft || command == TurnIndicator::EnableRight;
 }
 
-// Front-referenced distance to a start point (spec TSD §2: DIST(target) - base_link2front).
+// Front-referenced distance to a start point (docs/behaviour.md §T2: DIST(target) - base_link2front).
 double from_front(double s_target, const EgoOnRoute& ego) { return s_target - ego.s_front; }
-// Base_link-referenced distance to an end point (spec TSD §2: plain DIST(target)).
+// Base_link-referenced distance to an end point (docs/behaviour.md §T2: plain DIST(target)).
 double from_base(double s_target, const EgoOnRoute& ego) { return s_target - ego.s_base; }
 
 struct Candidate {
@@ -22,7 +22,7 @@ struct Candidate {
   SectionDistances distances;
 };
 
-// spec TSD §6.1: the blinker may be on from the front reaching the desired start (inclusive) until
+// docs/behaviour.md §T6.1: the blinker may be on from the front reaching the desired start (inclusive) until
 // base_link passes the desired end (still on exactly at it).
 bool is_valid(const TurnSignalInfo& info, const SectionDistances& d) {
   return is_enable(info.turn) && d.desired_start <= 0.0 && d.desired_end >= 0.0;
@@ -42,7 +42,7 @@ SectionDistances section_distances(const TurnSignalInfo& info, const EgoOnRoute&
 bool prior_wins(double ps, double pe, double ss, double se) {
   const bool before_prior = ps > 0.0;
   const bool before_subsequent = ss > 0.0;
-  // Strict on the start: with ps == 0 exactly ego is neither before nor inside (spec TSD §6.2 edge).
+  // Strict on the start: with ps == 0 exactly ego is neither before nor inside (docs/behaviour.md §T6.2 edge).
   const bool inside_prior = ps < 0.0 && pe >= 0.0;
 
   if (ps < ss) {                                       // prior's required section starts first
@@ -57,7 +57,7 @@ bool prior_wins(double ps, double pe, double ss, double se) {
 
 ResolvedTurnSignal resolve_turn_signal(const EgoOnRoute& ego, const TurnSignalInfo& intersection,
                                        const TurnSignalInfo& roundabout, const TurnSignalInfo& behavior) {
-  // Slot order is the tie rule (spec TSD §6.1, §12.1.9): intersection < roundabout < behaviour.
+  // Slot order is the tie rule (docs/behaviour.md §T6.1, §T12.1.9): intersection < roundabout < behaviour.
   const std::array<const TurnSignalInfo*, 3> slots{&intersection, &roundabout, &behavior};
 
   std::vector<Candidate> valid;
@@ -66,7 +66,7 @@ ResolvedTurnSignal resolve_turn_signal(const EgoOnRoute& ego, const TurnSignalIn
     const SectionDistances d = section_distances(*info, ego);
     if (is_valid(*info, d)) valid.push_back({info, d});
   }
-  if (valid.empty()) return {};  // DISABLE, not NO_COMMAND (spec TSD §12.1.2)
+  if (valid.empty()) return {};  // DISABLE, not NO_COMMAND (docs/behaviour.md §T12.1.2)
 
   // Earliest passed desired start first; the stable sort keeps slot order on exactly equal ds.
   std::stable_sort(valid.begin(), valid.end(), [](const Candidate& a, const Candidate& b) {
@@ -85,7 +85,7 @@ ResolvedTurnSignal resolve_turn_signal(const EgoOnRoute& ego, const TurnSignalIn
 TurnSignalInfo overwrite_turn_signal(const EgoOnRoute& ego, const TurnSignalInfo& original,
                                      const TurnSignalInfo& next) {
   if (!is_enable(original.turn)) return next;  // NO_COMMAND or DISABLE
-  // Both front-referenced in the reference (spec TSD §6.4), so the offset cancels.
+  // Both front-referenced in the reference (docs/behaviour.md §T6.4), so the offset cancels.
   const double to_next_desired_start = from_front(next.desired_start, ego);
   const double to_original_desired_end = from_front(original.desired_end, ego);
   if (to_next_desired_start > to_original_desired_end) return original;  // next starts after original ends
@@ -94,7 +94,7 @@ TurnSignalInfo overwrite_turn_signal(const EgoOnRoute& ego, const TurnSignalInfo
 
 TurnSignalInfo use_prior_turn_signal(const EgoOnRoute& ego, const TurnSignalInfo& original,
                                      const TurnSignalInfo& next) {
-  // spec TSD §6.4: the commands are never looked at.
+  // docs/behaviour.md §T6.4: the commands are never looked at.
   const SectionDistances o = section_distances(original, ego);
   const SectionDistances n = section_distances(next, ego);
 

@@ -15,7 +15,7 @@ std::vector<std::size_t> route_predecessors(std::size_t index) {
   return {index - 1};
 }
 
-// spec TSD §5.4 (calculateMaxDistanceToDesiredStartPoint): the largest candidate, 0 when none.
+// docs/behaviour.md §T5.4 (calculateMaxDistanceToDesiredStartPoint): the largest candidate, 0 when none.
 double max_distance_to_desired_start(const RouteMap& route, std::size_t start, const std::string& ring,
                                      int max_depth, const std::map<std::size_t, double>& desired_starts) {
   struct SearchNode {

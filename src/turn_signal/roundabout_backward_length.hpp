@@ -1,4 +1,4 @@
-// Backward length of the path P while the ego is in a roundabout (spec TSD §5.4).
+// Backward length of the path P while the ego is in a roundabout (docs/behaviour.md §T5.4).
 #pragma once
 
 #include <cstddef>
@@ -8,7 +8,7 @@
 
 namespace signalsim {
 
-/// spec TSD §5.4: the back length of P to use instead of `default_backward_length`, so that the entry
+/// docs/behaviour.md §T5.4: the back length of P to use instead of `default_backward_length`, so that the entry
 /// whose desired start is stored stays on P while the ego drives round the roundabout.
 ///
 /// If the ego's closest lanelet `current_index` (the one containing s_base) is an Internal or Exit

@@ -19,7 +19,7 @@ bool same_connection(const Lanelet& a, const Lanelet& b) {
   return a.roundabout_role == b.roundabout_role && a.roundabout_id == b.roundabout_id;
 }
 
-// A lanelet of the roundabout `roundabout_id` (any role): spec TSD §5 isRoundaboutLanelet.
+// A lanelet of the roundabout `roundabout_id` (any role): docs/behaviour.md §T5 isRoundaboutLanelet.
 bool in_roundabout(const Lanelet& l, const std::string& roundabout_id) {
   return l.roundabout_role != RoundaboutRole::None && l.roundabout_id == roundabout_id;
 }
@@ -46,7 +46,7 @@ std::vector<RoundaboutConnection> roundabout_connections(const RouteMap& route, 
   const std::size_t last = std::min(window.last, route.size());
   for (std::size_t i = window.first; i < last; ++i) {
     if (!is_entry_or_exit(route.at(i))) continue;
-    if (!out.empty() && i <= out.back().back_index) continue;  // each lanelet once (§5.1)
+    if (!out.empty() && i <= out.back().back_index) continue;  // each lanelet once (§T5.1)
     out.push_back(roundabout_connection_at(route, i));
   }
   return out;
@@ -128,7 +128,7 @@ const LaneSpanGeometry& RoundaboutRequests::geometry(const RouteMap& route, cons
 TurnSignalInfo RoundaboutRequests::update(const RouteMap& route, RouteMap::Window window, const EgoOnRoute& ego,
                                           const TurnSignalParameters& params) {
   if (route.empty() || window.first >= window.last) return {};
-  // spec TSD §5.1: collect ENTRIES and EXITS in path order.
+  // docs/behaviour.md §T5.1: collect ENTRIES and EXITS in path order.
   std::vector<RoundaboutConnection> entries;
   std::vector<RoundaboutConnection> exits;
   for (const RoundaboutConnection& c : roundabout_connections(route, window))
@@ -142,7 +142,7 @@ TurnSignalInfo RoundaboutRequests::update(const RouteMap& route, RouteMap::Windo
   const double threshold = params.turn_signal_roundabout_angle_threshold_deg;
   std::deque<TurnSignalInfo> queue;
 
-  // spec TSD §5.2: entry requests, queued first.
+  // docs/behaviour.md §T5.2: entry requests, queued first.
   for (const RoundaboutConnection& entry : entries) {
     const LaneSpanGeometry& shape = geometry(route, entry, threshold);
     if (!shape.has_centerline) continue;
@@ -180,7 +180,7 @@ TurnSignalInfo RoundaboutRequests::update(const RouteMap& route, RouteMap::Windo
     queue.push_back(info);
   }
 
-  // spec TSD §5.3: exit requests, queued after all entries. No search distance (§12.1.8).
+  // docs/behaviour.md §T5.3: exit requests, queued after all entries. No search distance (§T12.1.8).
   for (const RoundaboutConnection& exit : exits) {
     const LaneSpanGeometry& shape = geometry(route, exit, threshold);
     if (!shape.has_centerline) continue;
@@ -205,7 +205,7 @@ TurnSignalInfo RoundaboutRequests::update(const RouteMap& route, RouteMap::Windo
     queue.push_back(info);
   }
 
-  // spec TSD §12.1.7: the queue is "all entries, then all exits", not path order.
+  // docs/behaviour.md §T12.1.7: the queue is "all entries, then all exits", not path order.
   return first_active(std::move(queue), ego);
 }
 

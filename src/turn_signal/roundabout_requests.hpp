@@ -1,12 +1,12 @@
-// Roundabout turn-signal requests (spec TSD §5.1-§5.3): entries and exits of `<roundabout>`s on the
+// Roundabout turn-signal requests (docs/behaviour.md §T5.1-§T5.3): entries and exits of `<roundabout>`s on the
 // route window, on the route coordinate s.
 //
 // Per cycle, for the window P (route indices around the ego) and the ego at (s_front, s_base, v):
 //
-//   ENTRIES, EXITS := the entry / exit connections in P, in path order                       (§5.1)
+//   ENTRIES, EXITS := the entry / exit connections in P, in path order                       (§T5.1)
 //   if both are empty:  return EMPTY
 //   search := turn_signal_search_time * v + turn_signal_roundabout_search_distance
-//   for E in ENTRIES:                                                                         (§5.2)
+//   for E in ENTRIES:                                                                         (§T5.2)
 //     skip E while its start is not strictly within E.turn_signal_distance (or search) of the
 //       front, unless a desired start is already stored for E (then it is never re-filtered)
 //     desired start := stored s_base of the first cycle E came within reach
@@ -16,19 +16,19 @@
 //            a DISABLE entry (on_entry "None", no tag) forgets its start and is skipped
 //     desired end := end of E; with ..._entry_indicator_persistence the end of X instead
 //     desired end passed by base_link: forget the start, skip;  otherwise queue it
-//   for X in EXITS:                                                                           (§5.3)
+//   for X in EXITS:                                                                           (§T5.3)
 //     X's end passed by base_link: forget the start, skip
 //     Z := the earliest lanelet of the chain of route predecessors with
 //          enable_exit_turn_signal == "true" (none: X itself)
-//     skip until the front is strictly past the start of Z (no search distance, §12.1.8)
+//     skip until the front is strictly past the start of Z (no search distance, §T12.1.8)
 //     desired start := start of Z (stored once); cmd := turn_signal_roundabout_on_exit
-//   return FIRST_ACTIVE(entries then exits)                                            (§4.3, §12.1.7)
+//   return FIRST_ACTIVE(entries then exits)                                            (§T4.3, §T12.1.7)
 //
-// SUMO mapping (spec SUMO §3): a lanelet's roundabout is `roundabout_id`; "E's first roundabout" is
+// SUMO mapping (docs/behaviour.md §S3): a lanelet's roundabout is `roundabout_id`; "E's first roundabout" is
 // E's `roundabout_id`. An entry or exit is a *connection*: the run of consecutive route lanelets with
 // the same role (Entry / Exit) and roundabout, normally one internal lane. netconvert may split a
 // connection into two internal lanes (an internal junction); the run is then one entry or exit, as one
-// lanelet is in Autoware (its key is the run's first route index; centerlines joined as in §4.2).
+// lanelet is in Autoware (its key is the run's first route index; centerlines joined as in §T4.2).
 #pragma once
 
 #include <cstddef>
@@ -53,17 +53,17 @@ struct RoundaboutConnection {
   RoundaboutRole role = RoundaboutRole::None;
 };
 
-/// Owns the remembered roundabout desired starts (spec TSD §1.5 item 2), for entries and exits alike.
+/// Owns the remembered roundabout desired starts (docs/behaviour.md §T1.5 item 2), for entries and exits alike.
 /// Keys are route lanelet indices (the connection's first lanelet), not lane ids, as in
-/// IntersectionRequests (README: "Remembered desired starts are keyed by route position").
+/// IntersectionRequests (docs/differences.md: remembered desired starts are keyed by route position).
 class RoundaboutRequests {
  public:
-  /// One planning cycle (spec TSD §5.1-§5.3). `window` is the path P. Returns the first active
-  /// request of the queue "all entries, then all exits" (§4.3 FIRST_ACTIVE) or EMPTY. Never throws.
+  /// One planning cycle (docs/behaviour.md §T5.1-§T5.3). `window` is the path P. Returns the first active
+  /// request of the queue "all entries, then all exits" (§T4.3 FIRST_ACTIVE) or EMPTY. Never throws.
   TurnSignalInfo update(const RouteMap& route, RouteMap::Window window, const EgoOnRoute& ego,
                         const TurnSignalParameters& params);
 
-  /// Geometry of a connection (§7 with the roundabout angle threshold), computed once.
+  /// Geometry of a connection (§T7 with the roundabout angle threshold), computed once.
   const LaneSpanGeometry& geometry(const RouteMap& route, const RoundaboutConnection& connection,
                                    double angle_threshold_deg);
 
@@ -81,16 +81,16 @@ class RoundaboutRequests {
 /// window if need be.
 RoundaboutConnection roundabout_connection_at(const RouteMap& route, std::size_t index);
 
-/// spec TSD §5.1: the entries and exits in the window, each once, in path order.
+/// docs/behaviour.md §T5.1: the entries and exits in the window, each once, in path order.
 std::vector<RoundaboutConnection> roundabout_connections(const RouteMap& route, RouteMap::Window window);
 
-/// spec TSD §5.2 "the exit this route uses": from the entry's last lanelet, walk route successors
+/// docs/behaviour.md §T5.2 "the exit this route uses": from the entry's last lanelet, walk route successors
 /// while they belong to the entry's roundabout (same roundabout_id); the last one walked. nullopt when
 /// the entry has no roundabout or the next route lanelet already leaves it (or the route ends).
 /// Normally an Exit lanelet; an Internal one when the route ends on the ring.
 std::optional<std::size_t> roundabout_exit_used(const RouteMap& route, const RoundaboutConnection& entry);
 
-/// spec TSD §5.2 tag format: the items of a list such as "[301599, 301600]" (separators ',', ' ',
+/// docs/behaviour.md §T5.2 tag format: the items of a list such as "[301599, 301600]" (separators ',', ' ',
 /// '[' and ']'; empty items dropped).
 std::vector<std::string> split_exit_tag(std::string_view value);
 
@@ -105,12 +105,12 @@ std::vector<std::string> exit_names(const RouteMap& route, std::size_t exit);
 /// Whether the entry lanelet's param `tag_key` (exit_turn_signal_left / _right) lists one of `names`.
 bool exit_tag_lists(const Lanelet& entry, const std::string& tag_key, const std::vector<std::string>& names);
 
-/// spec TSD §5.3: the earliest lanelet of the contiguous chain of route predecessors of
+/// docs/behaviour.md §T5.3: the earliest lanelet of the contiguous chain of route predecessors of
 /// `exit_front_index` whose param enable_exit_turn_signal is exactly "true"; nullopt when the
 /// lanelet right before the exit does not carry it. Walks the route, not only the window.
 std::optional<std::size_t> exit_signal_chain_start(const RouteMap& route, std::size_t exit_front_index);
 
-/// spec TSD §1.4: "Left" -> ENABLE_LEFT, "Right" -> ENABLE_RIGHT, anything else (case-sensitive,
+/// docs/behaviour.md §T1.4: "Left" -> ENABLE_LEFT, "Right" -> ENABLE_RIGHT, anything else (case-sensitive,
 /// "None" included) -> DISABLE.
 TurnIndicator roundabout_command(std::string_view setting);
 

@@ -1,4 +1,4 @@
-// One blinker request (spec TSD §1.2) expressed on the route coordinate s.
+// One blinker request (docs/behaviour.md §T1.2) expressed on the route coordinate s.
 #pragma once
 
 #include <cstdint>
@@ -6,10 +6,10 @@
 
 namespace signalsim {
 
-/// Autoware TurnIndicatorsCommand values (spec TSD §1.1). Not SUMO's signal bits.
+/// Autoware TurnIndicatorsCommand values (docs/behaviour.md §T1.1). Not SUMO's signal bits.
 enum class TurnIndicator : std::uint8_t { NoCommand = 0, Disable = 1, EnableLeft = 2, EnableRight = 3 };
 
-/// Autoware HazardLightsCommand values (spec TSD §1.1).
+/// Autoware HazardLightsCommand values (docs/behaviour.md §T1.1).
 enum class HazardLights : std::uint8_t { NoCommand = 0, Disable = 1, Enable = 2 };
 
 /// Which request a blinker came from; printed in the timeline's `blinker_source` column.
@@ -22,7 +22,7 @@ enum class RequestSource : std::uint8_t {
   Avoidance,
   PullOut,
   PullOver,
-  Sumo,  ///< not a request: SUMO's own blinker logic, observed (`run --driver sumo`, spec SUMO §5)
+  Sumo,  ///< not a request: SUMO's own blinker logic, observed (`run --driver sumo`, docs/behaviour.md §S5)
 };
 
 std::string_view to_string(RequestSource source);
@@ -30,7 +30,7 @@ std::string_view to_string(TurnIndicator command);
 
 /// A request: a desired section (the blinker may be on) and a required section (used only to break
 /// conflicts). Every point is a route position s. Start points are compared with the vehicle front,
-/// end points with base_link (spec TSD §2). A default-constructed info is EMPTY (NO_COMMAND).
+/// end points with base_link (docs/behaviour.md §T2). A default-constructed info is EMPTY (NO_COMMAND).
 struct TurnSignalInfo {
   TurnIndicator turn = TurnIndicator::NoCommand;
   HazardLights hazard = HazardLights::NoCommand;

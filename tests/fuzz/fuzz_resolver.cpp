@@ -1,4 +1,4 @@
-// libFuzzer target: the conflict resolver (src/turn_signal/resolver, spec TSD §6) on random
+// libFuzzer target: the conflict resolver (src/turn_signal/resolver, docs/behaviour.md §T6) on random
 // requests and ego positions. Never throws (resolver.hpp), so any exception is a finding.
 // Invariants asserted:
 //   - resolve_turn_signal's result is DISABLE/None when no candidate is valid, else the command and

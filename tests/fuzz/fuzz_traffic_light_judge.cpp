@@ -1,5 +1,5 @@
-// libFuzzer target: the traffic-light judge (src/traffic_light/traffic_light_judge, spec TLJ
-// §1.2) on random parameters and observation sequences. Documented failures: std::invalid_argument
+// libFuzzer target: the traffic-light judge (src/traffic_light/traffic_light_judge, docs/behaviour.md
+// §L1.2) on random parameters and observation sequences. Documented failures: std::invalid_argument
 // from the constructor (validate) and from step() for a non-finite input (the state is then
 // unchanged). Anything else is a finding.
 //

@@ -52,7 +52,7 @@ assert keys == want, keys
 row = {(r["scenario"], r["section"], r["driver"]): r for r in rows}
 num = lambda r, c: float(r[c])
 
-# The left turn: the decider's search distance 3 v + 30 (71.67 m at 13.89 m/s, spec TSD §4.3) against
+# The left turn: the decider's search distance 3 v + 30 (71.67 m at 13.89 m/s, docs/behaviour.md §T4.3) against
 # SUMO's 7 s x 13.89 m/s = 97.23 m before the end of in_S_1 (the turn starts there), within a step.
 sig, sumo = row["intersection_left", "turn1", "signalsim"], row["intersection_left", "turn1", "sumo"]
 assert sig["s"] == "189.6" and sig["blinker"] == "left" and sig["id"] == "C", sig

@@ -1,5 +1,5 @@
 // Lateral maneuvers end to end on the real libsumo (issue 5): the bundled lane-change scenarios run
-// through run_scenario, and each step is checked against spec TSD §8.2 (lane change, signalsim
+// through run_scenario, and each step is checked against docs/behaviour.md §T8.2 (lane change, signalsim
 // activation: on once the front is within max(v * turn_signal_search_time,
 // turn_signal_minimum_search_distance) of the lane-changing start; off once base_link passes the
 // lane-changing end) and against the lateral plan (measured offset within 0.2 m of the plan).
@@ -83,7 +83,7 @@ ShiftLine executed_line(const ManeuverRun& r, std::size_t k = 0) {
   return {lc.start.value(), lc.end.value(), -lc.shift, 0.0};
 }
 
-// spec TSD §8.2 prepare segment: approved at `approval_time` with the module's blinker on since
+// docs/behaviour.md §T8.2 prepare segment: approved at `approval_time` with the module's blinker on since
 // `blinker_on_time`, the lateral motion starts max(4 s - blinker-on time, 2 s) of driving after
 // base_link's approval position (never before the maneuver's earliest start, never after its latest start), and
 // the planned offset holds the original lane until then.
@@ -266,7 +266,7 @@ TEST(ManeuverScenario, RequestedLaneChangeOnAnEdgeOffTheRouteIsRejected) {
   EXPECT_THROW(plan_route(s, net), InputError);
 }
 
-// ---- Approval and the prepare segment (spec TSD §8.2 calc_actual_prepare_duration) -------------
+// ---- Approval and the prepare segment (docs/behaviour.md §T8.2 calc_actual_prepare_duration) -------------
 
 TEST(ManeuverScenario, ImmediateApprovalPreparesFourSeconds) {
   const ManeuverRun r = run("lane_change_right");
@@ -529,7 +529,7 @@ TEST(ManeuverScenario, RoundaboutLaneChangeWinsOverTheExitSignalUntilItsPathEnds
   EXPECT_EQ(rows[i].edge, "out_N");
 }
 
-// ---- Avoidance (spec TSD §8.2 "Avoidance", §8.1) ----------------------------------------------
+// ---- Avoidance (docs/behaviour.md §T8.2 "Avoidance", §T8.1) ----------------------------------------------
 
 constexpr double kMaxPrepareTime = 3.0;  // avoidance max_prepare_time
 constexpr double kAvoidOffset = 0.9 + 1.0 + 0.9;  // half obstacle + clearance + half ego [m]
@@ -559,12 +559,12 @@ AvoidLines avoid_lines(const ManeuverRun& r, double side) {
   return lines;
 }
 
-// §8.1 on: the first step with the front within max(v * search_time, min distance) of `line`'s start.
+// §T8.1 on: the first step with the front within max(v * search_time, min distance) of `line`'s start.
 bool within_prep(const TimelineRow& row, const ShiftLine& line) {
   return line.s_start - row.s_front <= std::max(row.speed * kSearchTime, kMinSearchDistance);
 }
 
-// §8.2 target line: the return line once its start is within v * max_prepare_time of base_link
+// §T8.2 target line: the return line once its start is within v * max_prepare_time of base_link
 // (strict) and the shift out has started.
 bool return_is_target(const ManeuverRun& r, const TimelineRow& row, const AvoidLines& l) {
   return l.out.s_start <= s_base(r, row) && l.back.s_start - s_base(r, row) < row.speed * kMaxPrepareTime;
@@ -641,7 +641,7 @@ TEST(ManeuverScenario, AvoidanceAfterLeftTurnWaitsForTheTurnToEnd) {
   EXPECT_TRUE(return_is_target(r, rows[static_cast<std::size_t>(back)], l));
 }
 
-// ---- Pull out and pull over (spec TSD §8.2 start / goal planner) --------------------------------
+// ---- Pull out and pull over (docs/behaviour.md §T8.2 start / goal planner) --------------------------------
 
 constexpr double kRemainingShift = 0.1;  // turn_signal_remaining_shift_length_threshold
 constexpr double kBoundThreshold = 1.3;  // turn_signal_remaining_distance_to_bound_threshold
@@ -705,7 +705,7 @@ TEST(ManeuverScenario, PullOutBackingUpGivesHazardThenLeft) {
   const ManeuverRun r = run("pull_out_backward_hazard");
   ASSERT_TRUE(r.record.arrived);
   const auto& rows = r.record.rows;
-  // Backing up 3 m at 1 m/s (emulated): hazard (spec TSD §3.1, §8.1 not driving forward) every step
+  // Backing up 3 m at 1 m/s (emulated): hazard (docs/behaviour.md §T3.1, §T8.1 not driving forward) every step
   // with a negative speed, the front moving back 0.1 m per step, the road-side offset held.
   std::size_t i = 0;
   for (; i < rows.size() && rows[i].speed < 0.0; ++i) {

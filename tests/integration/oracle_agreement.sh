@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# signalsim's blinker at every step equals an independent Python restatement of spec TSD §4-§7
+# signalsim's blinker at every step equals an independent Python restatement of docs/behaviour.md §T4-§T7
 # (tools/oracle/roundabout_oracle.py) on every roundabout and intersection scenario without
-# `maneuvers:` (the oracle restates neither the behaviour modules of spec TSD §8 nor lane plans with
+# `maneuvers:` (the oracle restates neither the behaviour modules of docs/behaviour.md §T8 nor lane plans with
 # requested lane changes; those scenarios are checked by tests/integration/maneuver_scenarios_test.cpp).
 # usage: oracle_agreement.sh SIGNALSIM_BINARY SOURCE_DIR
 set -u

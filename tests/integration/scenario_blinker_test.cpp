@@ -1,5 +1,5 @@
 // For each bundled intersection scenario, run the real libsumo and check, step by step, where each
-// blinker turns on and off against spec TSD §4 / §6 and the route positions of the net (the numbers
+// blinker turns on and off against docs/behaviour.md §T4 / §T6 and the route positions of the net (the numbers
 // below were derived independently from the .net.xml files with a separate script).
 #include <gtest/gtest.h>
 
@@ -20,9 +20,9 @@ constexpr double kSearchTime = 3.0;       // turn_signal_search_time
 constexpr double kSearchDistance = 30.0;  // turn_signal_intersection_search_distance
 
 /// One stretch of blinker: it turns on at the first step where the turn lane start is within the
-/// search distance of the front (spec TSD §4.3, strict), and off (or over to the next stretch) at
+/// search distance of the front (docs/behaviour.md §T4.3, strict), and off (or over to the next stretch) at
 /// the first step where base_link passed `s_off` (desired end, or the required end when a later
-/// request takes over, spec TSD §4.3 FIRST_ACTIVE / §6).
+/// request takes over, docs/behaviour.md §T4.3 FIRST_ACTIVE / §T6).
 struct Stretch {
   Blinker blinker;
   double s_lane_start;    // route s of the turn lanelet group start
@@ -73,7 +73,7 @@ TEST_P(ScenarioBlinker, TurnsOnAndOffWhereTheSpecSays) {
       active = nullptr;
       expected = Blinker::None;
     }
-    if (!active && next < c.stretches.size()) {  // a queued request waits for the active one (§4.3)
+    if (!active && next < c.stretches.size()) {  // a queued request waits for the active one (§T4.3)
       const Stretch& st = c.stretches[next];
       const double search = st.fixed_search > 0 ? st.fixed_search : kSearchTime * row.speed + kSearchDistance;
       if (st.s_lane_start - row.s_front < search && s_base <= st.s_off) {
@@ -93,7 +93,7 @@ TEST_P(ScenarioBlinker, TurnsOnAndOffWhereTheSpecSays) {
   EXPECT_EQ(record.collisions, 0);
 }
 
-// Route positions from the nets (turn group start, desired end, required end per spec TSD §7).
+// Route positions from the nets (turn group start, desired end, required end per docs/behaviour.md §T7).
 INSTANTIATE_TEST_SUITE_P(
     Bundled, ScenarioBlinker,
     ::testing::Values(
@@ -101,9 +101,9 @@ INSTANTIATE_TEST_SUITE_P(
         Case{"intersection_right", {{Blinker::Right, 189.60, 0, 198.63}}},
         Case{"intersection_straight", {}},
         Case{"t_junction_left", {{Blinker::Left, 192.80, 0, 206.99}}},
-        // turn_signal_distance = 45 on in_S_0 reaches the turn lanelet (spec SUMO §3).
+        // turn_signal_distance = 45 on in_S_0 reaches the turn lanelet (docs/behaviour.md §S3).
         Case{"turn_signal_distance_override", {{Blinker::Left, 192.80, 45.0, 206.99}}},
-        // Pattern 1 (spec TSD §6.3): left until its required end 201.80, then right until B's end.
+        // Pattern 1 (docs/behaviour.md §T6.3): left until its required end 201.80, then right until B's end.
         Case{"close_turns", {{Blinker::Left, 192.80, 0, 201.80}, {Blinker::Right, 247.59, 0, 256.62}}}),
     [](const auto& info) { return info.param.scenario; });
 

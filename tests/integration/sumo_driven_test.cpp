@@ -1,6 +1,6 @@
 // The SUMO-driven mode (`run --driver sumo`, issue 11) on the real libsumo: the ego is inserted as
 // for signalsim but SUMO drives it, and the timeline records what SUMO did on its own. Each fact
-// checked here is SUMO's built-in behaviour as spec SUMO §5 describes it, measured: the blinker from
+// checked here is SUMO's built-in behaviour as docs/behaviour.md §S5 describes it, measured: the blinker from
 // 7 s x the lane speed (capped by the ego's maximum speed) before the end of the current lane, for
 // the next junction only, kept through it; none while circulating a roundabout past an exit; the
 // stop at a red light on its own; its own lane changes, located on the route's edge.
@@ -18,7 +18,7 @@
 namespace signalsim {
 namespace {
 
-constexpr double kBlinkerSeconds = 7.0;  // spec SUMO §5
+constexpr double kBlinkerSeconds = 7.0;  // docs/behaviour.md §S5
 
 struct Driven {
   Scenario scenario;

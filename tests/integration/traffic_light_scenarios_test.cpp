@@ -1,5 +1,5 @@
 // The traffic-light judge end to end on the real libsumo: each bundled light scenario shows the
-// decision the spec prescribes at the step it prescribes it (spec TLJ §1-§2), and the ego really
+// decision the spec prescribes at the step it prescribes it (docs/behaviour.md §L1-§L2), and the ego really
 // stops or goes. Plus a randomized run of 200 approaches.
 #include <gtest/gtest.h>
 
@@ -64,7 +64,7 @@ TEST(TrafficLightScenarios, YellowInTheOptionalZoneStops) {
   const RunRecord r = run(bundled("tl_yellow_optional_zone"));
   const TimelineRow* stop = first_stop(r);
   ASSERT_NE(stop, nullptr);
-  // spec TLJ §2.3/§2.6: stoppable (judge_dist < d) and reachable (d < v * T_y) -> optional zone -> stop.
+  // docs/behaviour.md §L2.3/§L2.6: stoppable (judge_dist < d) and reachable (d < v * T_y) -> optional zone -> stop.
   EXPECT_EQ(stop->zone, JudgeZone::OptionalZone);
   EXPECT_EQ(stop->tl_decision, JudgeDecision::Stop);
   EXPECT_LT(stop->judge_distance, *stop->stop_distance);
@@ -135,7 +135,7 @@ TEST(TrafficLightScenarios, BlackoutTimesOutIntoAStop) {
 
 TEST(TrafficLightScenarios, LightNeverDetectedIsPassed) {
   const RunRecord r = run(bundled("tl_light_out_of_range"));
-  EXPECT_EQ(first_stop(r), nullptr) << "never received -> pass with is_simulation (spec TLJ §1.3 row 1)";
+  EXPECT_EQ(first_stop(r), nullptr) << "never received -> pass with is_simulation (docs/behaviour.md §L1.3 row 1)";
   for (const TimelineRow& row : r.rows) EXPECT_TRUE(row.tl_observed.empty());
   EXPECT_EQ(r.red_violations.size(), 1u) << "the light was red: the run reports the crossing";
 }
@@ -145,10 +145,10 @@ TEST(TrafficLightScenarios, RedFlickerShorterThanTheHysteresisIsIgnored) {
   int red_observations = 0;
   for (const TimelineRow& row : r.rows) red_observations += row.tl_observed == "red";
   EXPECT_EQ(red_observations, 1) << "the judge saw the one-step red";
-  EXPECT_EQ(first_stop(r), nullptr) << "elapsed 0 s is not > stop_time_hysteresis (spec TLJ §1.5)";
+  EXPECT_EQ(first_stop(r), nullptr) << "elapsed 0 s is not > stop_time_hysteresis (docs/behaviour.md §L1.5)";
 }
 
-// spec TLJ §1.8 (corrected default): a left turn at a light whose program has a left-arrow phase;
+// docs/behaviour.md §L1.8 (corrected default): a left turn at a light whose program has a left-arrow phase;
 // the light turns yellow from green 53 m before the line, where the ego can stop.
 TEST(TrafficLightScenarios, ArrowProgramYellowStopsATurnByDefault) {
   const RunRecord r = run(std::string(SIGNALSIM_SOURCE_DIR) + "/tests/data/scenarios/arrow_program_left_yellow.yaml");
@@ -202,7 +202,7 @@ TEST(TrafficLightRandomized, TwoHundredApproaches) {
         ++emergency;
         EXPECT_EQ(row.zone, JudgeZone::DilemmaZone) << "emergency stop outside the dilemma zone at t=" << row.time;
       }
-      // A pass-judge episode starts when a stop signal is first classified (spec TLJ §2.6).
+      // A pass-judge episode starts when a stop signal is first classified (docs/behaviour.md §L2.6).
       if (row.zone != JudgeZone::None && previous_zone == JudgeZone::None)
         ++zone_counts[std::string(to_string(row.zone))];
       previous = row.tl_decision;

@@ -1,4 +1,4 @@
-// V2I (spec TLJ §1.7) end to end on the real libsumo: the bundled pair (the green that ends before
+// V2I (docs/behaviour.md §L1.7) end to end on the real libsumo: the bundled pair (the green that ends before
 // the ego can pass: a normal stop at the line with V2I, the dilemma zone without), and the V2I
 // channel's faults judged by what the ego does (a blackout or dropout takes the prediction away,
 // latency delays it).

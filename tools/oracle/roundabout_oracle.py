@@ -2,27 +2,27 @@
 """Independent expectation of roundabout (and intersection) blinkers on a signalsim scenario.
 
 Pure Python 3 standard library. It shares no code with signalsim: it reads the built .net.xml and the
-scenario/parameter files itself and restates, from ../shared/spec/turn_signal_decider.md (spec TSD) and
-sumo_mapping.md (spec SUMO), where each blinker turns on and off:
+scenario/parameter files itself and restates, from docs/behaviour.md §T and
+docs/behaviour.md §S, where each blinker turns on and off:
 
   route      the planned lane of every route edge followed by the via lane(s) of the connection taken
              (chained internal lanes included); s = 0 at the start of the first route edge, lengths
-             from the lanes' `length` attributes (spec SUMO §3)
+             from the lanes' `length` attributes (docs/behaviour.md §S3)
   roles      <roundabout edges=...>: ring lanes and internal lanes between ring edges are internal, an
              internal lane from a non-ring edge onto the ring is an entry, one from the ring to a
-             non-ring edge is an exit (spec SUMO §3); turn lanelets l/L left, r/R right, t left (right in
+             non-ring edge is an exit (docs/behaviour.md §S3); turn lanelets l/L left, r/R right, t left (right in
              left-hand nets), T right
-  required   spec TSD §7: 1 m resampling (last sample merged with the end when < 0.1 m away), Akima
+  required   docs/behaviour.md §T7: 1 m resampling (last sample merged with the end when < 0.1 m away), Akima
   end        spline in x and y (the reference's default; `--linear` for linear interpolation), yaw from
              consecutive samples, backward scan for |yaw - yaw_end| >= threshold; the arc length found
              is scaled by lane length / shape length (SUMO rounds lengths to 0.01 m)
-  decider    spec TSD §4 (intersection requests, remembered desired starts), §5 (roundabout entry and
-             exit requests, entries before exits, FIRST_ACTIVE), §6 (RESOLVE, PRIOR_WINS); start points
+  decider    docs/behaviour.md §T4 (intersection requests, remembered desired starts), §T5 (roundabout entry and
+             exit requests, entries before exits, FIRST_ACTIVE), §T6 (RESOLVE, PRIOR_WINS); start points
              against the front bumper, end points against base_link = front - base_link_to_front
   previous   turn_signal_roundabout_exit_signal_from_previous_exit (signalsim, Japan): the ring lanelets
   exit       after the last ring node, before the ego's exit, where another exit branches off (after the
              entry when there is none) are marked enable_exit_turn_signal, so the exit request's desired
-             start is the start of the first marked lanelet (spec TSD §5.3). "After the node" = the node's
+             start is the start of the first marked lanelet (docs/behaviour.md §T5.3). "After the node" = the node's
              own internal lane is not marked: the chain starts at the ring lane leaving that node
              (the law: on having passed beside the previous exit). `--mark-node-lane` marks it too.
   motion     the ego as signalsim drives it: each step the commanded speed is the highest from which every
@@ -343,7 +343,7 @@ def lanelet_at(route: list[Lanelet], s: float) -> int:
 
 
 # ----------------------------------------------------------------------------------------------
-# Required end (spec TSD §7)
+# Required end (docs/behaviour.md §T7)
 # ----------------------------------------------------------------------------------------------
 
 
@@ -468,7 +468,7 @@ def cmd_of(text) -> str:
 
 
 # ----------------------------------------------------------------------------------------------
-# Decider (spec TSD §4, §5, §6) on route s
+# Decider (docs/behaviour.md §T4, §T5, §T6) on route s
 # ----------------------------------------------------------------------------------------------
 
 
@@ -491,7 +491,7 @@ class Decider:
         self.rmap: dict[int, float] = {}
         thr_i = float(p.get("turn_signal_intersection_angle_threshold_deg", 15.0))
         thr_r = float(p.get("turn_signal_roundabout_angle_threshold_deg", 15.0))
-        # Intersection groups (spec TSD §4.2): consecutive non-roundabout left/right lanelets.
+        # Intersection groups (docs/behaviour.md §T4.2): consecutive non-roundabout left/right lanelets.
         self.groups = []
         i = 0
         while i < len(route):
@@ -510,7 +510,7 @@ class Decider:
         for l in route:
             if l.role in ("entry", "exit"):
                 l.req_end = required_end_s([l], thr_r, linear)
-        # Exit chains (spec TSD §5.3): enable_exit_turn_signal params, plus the previous-exit marking.
+        # Exit chains (docs/behaviour.md §T5.3): enable_exit_turn_signal params, plus the previous-exit marking.
         self.marked = [str(l.params.get("enable_exit_turn_signal", "")).lower() == "true" for l in route]
         self.prev_exit_mark_start: dict[int, int] = {}
         if p.get("turn_signal_roundabout_exit_signal_from_previous_exit") is True:
@@ -539,7 +539,7 @@ class Decider:
         return any(k.to not in self.net.ring_of_edge for k in self.net.conns_from_edge(c.frm)
                    if not k.to.startswith(":"))
 
-    # -- spec TSD §4.3 --------------------------------------------------------------------------------
+    # -- docs/behaviour.md §T4.3 --------------------------------------------------------------------------------
     def intersection(self, s_front: float, v: float, window) -> Optional[Req]:
         s_base = s_front - self.b2f
         search0 = float(self.p["turn_signal_search_time"]) * v + float(self.p["turn_signal_intersection_search_distance"])
@@ -560,7 +560,7 @@ class Decider:
                              self.r[g["first"]].id))
         return self.first_active(queue, s_base)
 
-    # -- spec TSD §5.2, §5.3 ----------------------------------------------------------------------------
+    # -- docs/behaviour.md §T5.2, §T5.3 ----------------------------------------------------------------------------
     def roundabout(self, s_front: float, v: float, window) -> Optional[Req]:
         s_base = s_front - self.b2f
         p = self.p
@@ -628,7 +628,7 @@ class Decider:
             queue.pop(0)
         return None
 
-    # -- spec TSD §6 -----------------------------------------------------------------------------------
+    # -- docs/behaviour.md §T6 -----------------------------------------------------------------------------------
     def resolve(self, s_front: float, cands: list[Optional[Req]]) -> tuple[str, str]:
         s_base = s_front - self.b2f
         valid = []
@@ -656,7 +656,7 @@ class Decider:
     def step(self, s_front: float, v: float):
         s_base = s_front - self.b2f
         back = float(self.p.get("turn_signal_path_backward_length", 100.0))
-        # spec TSD §5.4, simplified: inside a roundabout keep the remembered entry start on the path.
+        # docs/behaviour.md §T5.4, simplified: inside a roundabout keep the remembered entry start on the path.
         cur = self.r[lanelet_at(self.r, max(0.0, s_base))]
         if cur.role in ("internal", "exit") and cur.ring is not None:
             for e, s_reg in self.rmap.items():
@@ -941,7 +941,7 @@ def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("scenarios", nargs="+")
     ap.add_argument("--timeline", help="timeline.csv of a signalsim run of the (single) scenario")
-    ap.add_argument("--linear", action="store_true", help="linear instead of Akima resampling in §7")
+    ap.add_argument("--linear", action="store_true", help="linear instead of Akima resampling in §T7")
     ap.add_argument("--mark-node-lane", action="store_true",
                     help="previous-exit marking includes the previous exit's ring-node internal lane")
     ap.add_argument("--check", action="store_true", help="evaluate the scenario's expectations on the prediction")

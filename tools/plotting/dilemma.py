@@ -1,4 +1,4 @@
-"""dilemma.png: the dilemma-zone diagram (spec TLJ §2) of each light where the ego met a yellow or a red.
+"""dilemma.png: the dilemma-zone diagram (docs/behaviour.md §L2) of each light where the ego met a yellow or a red.
 
 Per light: the jerk-limited stopping distance and the yellow lamp line d = v · yellow_lamp_period over
 the speed, the zones between them, and the ego's approach (d, v) per step coloured by the light's state,
@@ -18,7 +18,7 @@ MAX_PANELS = 3
 
 
 def judge_distance(v, a0, a_s, j_s, t_d):
-    """spec TLJ §2.2 calcJudgeLineDistWithJerkLimit (as coded upstream)."""
+    """docs/behaviour.md §L2.2 calcJudgeLineDistWithJerkLimit (as coded upstream)."""
     if v <= 0:
         return 0.0
     x1 = v * t_d
@@ -177,7 +177,7 @@ def dilemma_plot(timeline, summary, metrics, path):
     ncol = 2 if cols == 1 else 4
     fig.legend(handles=handles, loc="lower center", fontsize=7.5, ncol=ncol, frameon=False)
     note = f"; no yellow or red met at {', '.join(data['skipped'])}" if data["skipped"] else ""
-    fig.suptitle(f"{summary.get('scenario', '?')}: dilemma-zone diagram (spec TLJ §2){note}", fontsize=11)
+    fig.suptitle(f"{summary.get('scenario', '?')}: dilemma-zone diagram (docs/behaviour.md §L2){note}", fontsize=11)
     legend_h = 0.2 * math.ceil(len(handles) / ncol) + 0.15
     fig.tight_layout(rect=(0, legend_h / height, 1, 1 - 0.2 / height))
     fig.savefig(path, dpi=110)

@@ -139,8 +139,8 @@ StopCommand plan_stop(const StopPlannerInput& in, const StopPlannerParameters& p
   StopCommand cmd;
 
   // Cruise at the lane limits' speed while a normal stop from where that step leads stays possible
-  // with the tracking margin: a stop far ahead never holds the speed down (spec TLJ §3, inserted
-  // profile 4; issue 11).
+  // with the tracking margin: a stop far ahead never holds the speed down (docs/behaviour.md §L3, inserted
+  // profile 4).
   if (in.cruise_velocity) {
     require_finite(*in.cruise_velocity, "cruise_velocity");
     const double vc = std::max(0.0, *in.cruise_velocity);

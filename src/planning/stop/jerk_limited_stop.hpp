@@ -1,4 +1,4 @@
-// Jerk-limited stop planner with relaxation levels (spec TLJ §2.7, Decisions "dilemma zone"):
+// Jerk-limited stop planner with relaxation levels (docs/behaviour.md §L2.7, §L0 "dilemma zone"):
 // bring the ego to rest at a stop point, with the first constraint set that can still do it:
 // normal (-1.0 m/s^2, -1.0 m/s^3), then limit (-2.5, -1.5) (Autoware common.param.yaml), then the
 // vehicle's emergency deceleration with unbounded jerk. Pure functions and value types only.
@@ -15,7 +15,7 @@
 //   level is feasible from (v, a), and after one step at v_c -- state (v_c, a_c = (v_c - v) / dt),
 //   max(v, v_c) dt further on -- S(v_c, a_c, r * normal.min_acc, J) <= distance - max(v, v_c) dt:
 //                            cruise: commanded v_c (braking = false); a far stop does not hold the
-//                            ego down (spec TLJ §3, inserted profile 4: before the stop point the
+//                            ego down (docs/behaviour.md §L3, inserted profile 4: before the stop point the
 //                            path keeps its speed limits, the smoother brakes when it must)
 //   if v <= 1e-3:            hold 0 (braking iff distance <= 0); level Normal, feasible
 //   level := first of (normal, limit, emergency) with S_min(level) <= distance + 1 cm
@@ -38,7 +38,7 @@
 
 namespace signalsim {
 
-/// Which constraint set a stop uses (the timeline records it; spec TLJ Decisions).
+/// Which constraint set a stop uses (the timeline records it; docs/behaviour.md §L0).
 enum class StopLevel : std::uint8_t { Normal, Limit, Emergency };
 
 std::string_view to_string(StopLevel level);

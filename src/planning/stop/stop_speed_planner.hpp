@@ -1,4 +1,4 @@
-// One step's speed command under the stops ahead (the step loop's plan stage, issue 11): the lane
+// One step's speed command under the stops ahead (the step loop's plan stage, docs/run.md): the lane
 // limits' speed, lowered by a jerk-limited stop (plan_stop) for every stop point this step (a red
 // light, a pull-over goal, a lane change's hold point), each planned with that speed as its cruise
 // speed, so a far stop never holds the ego down. It owns the one piece of state the stops share:

@@ -1,4 +1,4 @@
-// spec TSD §8.2 "Avoidance", §8.3, §12.1.13: target-line selection, deviation guard, ignore set,
+// docs/behaviour.md §T8.2 "Avoidance", §T8.3, §T12.1.13: target-line selection, deviation guard, ignore set,
 // OVERWRITE with the previous module's request.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// spec TSD §8.1 BEHAVIOR_SIGNAL: every branch, threshold and comparison strictness.
+// docs/behaviour.md §T8.1 BEHAVIOR_SIGNAL: every branch, threshold and comparison strictness.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -153,7 +153,7 @@ TEST(BehaviorSignal, FrontToStartUsesTheFrontBumper) {
             TurnIndicator::EnableLeft);
 }
 
-// ---- turn_signal_on_swerving (spec TSD §12.1.1) --------------------------------------------------
+// ---- turn_signal_on_swerving (docs/behaviour.md §T12.1.1) --------------------------------------------------
 
 TEST(BehaviorSignal, OnSwervingFalseDisablesEveryShiftBlinker) {
   BehaviorSignalParameters p;
@@ -398,7 +398,7 @@ TEST(BehaviorSignal, PullOutBoundDistanceComputedFromTheFrontCorner) {
   EXPECT_NEAR(pull_out_distance_to_bound(in, ego, p, true), 1.5 - (-2.0 + 3.7 * std::sin(0.2) + std::cos(0.2)), 1e-12);
 }
 
-// ---- egos_lane_is_shifted = false (lane-change style, spec TSD §12.1.12) ---------------------------
+// ---- egos_lane_is_shifted = false (lane-change style, docs/behaviour.md §T12.1.12) ---------------------------
 
 TEST(BehaviorSignal, EgosLaneNotShiftedSwapsAndNegates) {
   auto in = shift_input(0.0, 3.2);

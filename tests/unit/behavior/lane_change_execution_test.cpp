@@ -1,4 +1,4 @@
-// The lane change's phases and the prepare segment (spec TSD §8.2 "Lane change",
+// The lane change's phases and the prepare segment (docs/behaviour.md §T8.2 "Lane change",
 // calc_actual_prepare_duration): where the lateral motion starts, when it is approved, the
 // target-lane check and the hold point.
 #include <gtest/gtest.h>
@@ -57,7 +57,7 @@ TEST(LaneChangeExecution, NeverStartsBeforeEarliestStart) {
 }
 
 TEST(LaneChangeExecution, ApprovalDelayShortensThePrepareSegment) {
-  // The module's own shortening (spec TSD §8.2): prepare = max(4 - on_time, 2).
+  // The module's own shortening (docs/behaviour.md §T8.2): prepare = max(4 - on_time, 2).
   BehaviorSignalParameters p;
   LaneChangeSignal module;
   // Blinker on at t = 10 s (the module outputs its own command in the waiting phase).

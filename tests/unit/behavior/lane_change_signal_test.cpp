@@ -1,4 +1,4 @@
-// spec TSD §8.2 "Lane change", §8.3, §12.1.14: LC_SIGNAL, the activation distance, the waiting and
+// docs/behaviour.md §T8.2 "Lane change", §T8.3, §T12.1.14: LC_SIGNAL, the activation distance, the waiting and
 // running variants, the blinker-on timestamp and the prepare-time shortening.
 #include <gtest/gtest.h>
 

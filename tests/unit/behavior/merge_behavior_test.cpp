@@ -1,4 +1,4 @@
-// spec TSD §8, §6.4: the modules chained in Autoware's order into one behaviour request.
+// docs/behaviour.md §T8, §T6.4: the modules chained in Autoware's order into one behaviour request.
 #include <gtest/gtest.h>
 
 #include "behavior_test_helpers.hpp"

@@ -1,4 +1,4 @@
-// spec TSD §8.2 "Start planner" / "Goal planner", §8.3: pull out and pull over requests, the latched
+// docs/behaviour.md §T8.2 "Start planner" / "Goal planner", §T8.3: pull out and pull over requests, the latched
 // ignore by lanelet, the centre-line start case, hazard on backward driving, USE_PRIOR / OVERWRITE.
 #include <gtest/gtest.h>
 

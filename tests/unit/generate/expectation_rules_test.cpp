@@ -1,5 +1,5 @@
 // The expectation numbers of generate (expectation_rules.hpp) for hand-made routes, each worked out by
-// hand from the spec in the comments (TSD §4.1 search = 3 s x v + 30 m; base_link 3.7 m behind the
+// hand from the spec in the comments (docs/behaviour.md §T4.1 search = 3 s x v + 30 m; base_link 3.7 m behind the
 // front; kSpeedSlack 0.3 m/s; kMargin 0.5 m; numbers rounded inwards to 0.1 m; the activation scan's
 // 0.1 m grid may move a lead by one tenth).
 #include "generate/expectation_rules.hpp"
@@ -93,7 +93,7 @@ TEST(ExpectationRules, ALightBeforeTheTurnLeavesOnlyTheSearchDistanceAtRest) {
 }
 
 TEST(ExpectationRules, CloseOppositeTurnsSwitchAtTheFirstTurnsRequiredEnd) {
-  // Left at A [100, 114], 40 m of b, right at B [154, 163] (spec TSD §6.3 pattern 1, close_turns).
+  // Left at A [100, 114], 40 m of b, right at B [154, 163] (docs/behaviour.md §T6.3 pattern 1, close_turns).
   test::RouteFixture f;
   f.lane("a", 100.0);
   f.internal("A", 0, 14.0, TurnDirection::Left, 13.89);
@@ -137,7 +137,7 @@ TEST(ExpectationRules, ATurnAfterARoundaboutExitWaitsForTheExitsEnd) {
   kr.on_entry = "Left";
   kr.on_exit = "Right";
   const Derived r = derive(f, {}, {}, kr);
-  // The exit: from its start (no search distance, spec TSD §5.3) until base_link leaves it: 111.7;
+  // The exit: from its start (no search distance, docs/behaviour.md §T5.3) until base_link leaves it: 111.7;
   // PRIOR_WINS keeps it until the front reaches the turn (130) anyway. Stated from 100.5 to 111.2.
   const auto on = of_kind(r.d, Kind::BlinkerOn);
   ASSERT_EQ(on.size(), 1u);

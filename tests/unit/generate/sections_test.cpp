@@ -1,5 +1,5 @@
-// The sections generate reads from a route (sections.hpp): spec TSD §4.2 grouping, §5.2 entries with
-// exit tags, §5.3 exits with the enable_exit_turn_signal chain, the lane changes.
+// The sections generate reads from a route (sections.hpp): docs/behaviour.md §T4.2 grouping, §T5.2 entries with
+// exit tags, §T5.3 exits with the enable_exit_turn_signal chain, the lane changes.
 #include "generate/sections.hpp"
 
 #include <gtest/gtest.h>
@@ -93,7 +93,7 @@ TEST(Sections, RoundaboutEntryAndExitTakeTheCountrysSidesAndTheChainStart) {
   EXPECT_EQ(sections[1].kind, SectionKind::RoundaboutExit);
   EXPECT_EQ(sections[1].side, Side::Right);
   EXPECT_NEAR(sections[1].start, 100.0 + 8.0 + 17.7 + 13.1 + 17.7, 1e-9);
-  // spec TSD §5.3: the exit's desired start is the front of the enable_exit_turn_signal chain (ring_EN).
+  // docs/behaviour.md §T5.3: the exit's desired start is the front of the enable_exit_turn_signal chain (ring_EN).
   EXPECT_NEAR(sections[1].exit_desired_start, 100.0 + 8.0 + 17.7 + 13.1, 1e-9);
 
   SectionParameters de;
@@ -104,7 +104,7 @@ TEST(Sections, RoundaboutEntryAndExitTakeTheCountrysSidesAndTheChainStart) {
 TEST(Sections, AnExitTagOnTheEntryNamingTheExitTakenGivesTheEntryItsSide) {
   SectionParameters de;
   de.on_exit = "Right";
-  // The tag lists the normal edge the exit leads onto (signalsim's SUMO names, spec TSD §5.2).
+  // The tag lists the normal edge the exit leads onto (signalsim's SUMO names, docs/behaviour.md §T5.2).
   EXPECT_EQ(route_sections(roundabout(true), de, {})[0].side, Side::Right);
 }
 

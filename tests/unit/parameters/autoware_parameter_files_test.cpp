@@ -193,7 +193,7 @@ TEST(ParameterOrigins, ConsistencyIsCheckedOnTheFinalValues) {
   EXPECT_NO_THROW(set.check_consistency("s.yaml"));
   set.apply(YAML::Load("max_prepare_duration: 4.5"), ParameterOrigin{"--set", "--set"});
   EXPECT_EQ(error_of([&] { set.check_consistency("s.yaml"); }),
-            "s.yaml: min_prepare_duration 5 (set) is greater than max_prepare_duration 4.5 (--set) (spec TSD §8.2: "
+            "s.yaml: min_prepare_duration 5 (set) is greater than max_prepare_duration 4.5 (--set) (docs/behaviour.md §T8.2: "
             "the prepare duration lies in [min, max])");
 }
 

@@ -1,4 +1,4 @@
-// Backward length of P in roundabouts (spec TSD §5.4), alone and inside the decider.
+// Backward length of P in roundabouts (docs/behaviour.md §T5.4), alone and inside the decider.
 #include "turn_signal/roundabout_backward_length.hpp"
 
 #include <gtest/gtest.h>
@@ -93,7 +93,7 @@ TEST(RoundaboutBackwardLength, EntriesOfAnotherRoundaboutDoNotCount) {
 }
 
 TEST(RoundaboutBackwardLength, DeciderKeepsThePersistentEntryOnTheShortPath) {
-  // P reaches only 20 m behind base_link. Without §5.4 the entry leaves P on the ring and its
+  // P reaches only 20 m behind base_link. Without §T5.4 the entry leaves P on the ring and its
   // persistent blinker drops; with it P reaches back to the stored start and the blinker stays.
   auto r = roundabout_route(3);
   const RouteMap route = r.sketch.build();

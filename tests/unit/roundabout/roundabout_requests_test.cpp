@@ -1,4 +1,4 @@
-// Roundabout requests (spec TSD §5.1-§5.3) on synthetic routes: collection, entries, exits, the exit
+// Roundabout requests (docs/behaviour.md §T5.1-§T5.3) on synthetic routes: collection, entries, exits, the exit
 // used, tags, persistence, the enable_exit_turn_signal chain, erase rules and FIRST_ACTIVE.
 #include "turn_signal/roundabout_requests.hpp"
 
@@ -159,7 +159,7 @@ TEST(RoundaboutChain, EarliestContiguousEnableExitTurnSignalPredecessor) {
   EXPECT_EQ(exit_signal_chain_start(r.sketch.build(), r.ix.exit), std::nullopt);
 }
 
-// ---- §5.2 entries ----------------------------------------------------------------------------------
+// ---- §T5.2 entries ----------------------------------------------------------------------------------
 
 TEST(RoundaboutEntry, OnEntryNoneGivesNoRequestAndStoresNothing) {
   auto r = roundabout_route(2);
@@ -273,7 +273,7 @@ TEST(RoundaboutEntry, PersistenceKeepsTheEntryToTheEndOfTheExitLanelet) {
   EXPECT_EQ(info.turn, kLeft);
   EXPECT_EQ(info.source, RequestSource::RoundaboutEntry);
   EXPECT_DOUBLE_EQ(info.desired_end, exit.s_end());
-  // The only queued item is returned although its required end (in the entry) is passed (§12.1.6).
+  // The only queued item is returned although its required end (in the entry) is passed (§T12.1.6).
   EXPECT_LT(info.required_end, ego_base(on_ring).s_base);
 }
 
@@ -336,7 +336,7 @@ TEST(RoundaboutEntry, OnlyEntriesInTheWindowAreCollected) {
   EXPECT_EQ(requests.update(route, {r.ix.ring[0], route.size()}, on_ring, params).turn, TurnIndicator::NoCommand);
 }
 
-// ---- §5.3 exits ------------------------------------------------------------------------------------
+// ---- §T5.3 exits ------------------------------------------------------------------------------------
 
 TEST(RoundaboutExit, StartsExactlyWhenTheFrontPassesTheExitStart) {
   auto r = roundabout_route(2);

@@ -1,4 +1,4 @@
-// RESOLVE (spec TSD §6) with a roundabout entry or exit and an intersection turn on the same route,
+// RESOLVE (docs/behaviour.md §T6) with a roundabout entry or exit and an intersection turn on the same route,
 // through the whole decider: the command and the winning source at positions along s.
 #include <gtest/gtest.h>
 
@@ -87,7 +87,7 @@ TEST(RoundaboutResolver, RightTurnThenKoreanEntryLeft) {
 }
 
 TEST(RoundaboutResolver, EarlyTurnRequestLetsTheEntryAndExitSignalFirst) {
-  // Pattern 4 (spec TSD §6.3): a right turn 20 m after the first exit carries turn_signal_distance
+  // Pattern 4 (docs/behaviour.md §T6.3): a right turn 20 m after the first exit carries turn_signal_distance
   // 200 m, so its desired start is earlier than everything else, but the roundabout's required
   // sections start first: entry Left, then exit Right, take the blinker while the front has not
   // reached the turn.

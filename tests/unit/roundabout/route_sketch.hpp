@@ -95,7 +95,7 @@ struct RoundaboutIndices {
 /// "out<k>_0" (`out_length` m), for the k-th exit (1-based). With another junction prefix P the ids are
 /// ":P0_0_0", "Pr01_0", ..., "Pout<k>_0". An exit branches at every ring junction: ring lanes and ring
 /// internal lanes have leaves_ring_at_end, as sumo/route_builder sets it.
-/// The entry takes `approach_params` (the params of the approach lane, spec SUMO §3).
+/// The entry takes `approach_params` (the params of the approach lane, docs/behaviour.md §S3).
 inline RoundaboutIndices add_roundabout(RouteSketch& sketch, int exit_number, const std::string& ring_id = "0",
                                         const std::string& prefix = "N",
                                         const std::map<std::string, std::string>& approach_params = {},

@@ -1,4 +1,4 @@
-// SUMO link states -> the signal elements the judge reads (spec SUMO §3).
+// SUMO link states -> the signal elements the judge reads (docs/behaviour.md §S3).
 #include <gtest/gtest.h>
 
 #include "sumo/approach_lights.hpp"

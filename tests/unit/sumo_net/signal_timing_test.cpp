@@ -1,6 +1,6 @@
-// V2I predictions from SUMO's programs (spec TLJ §1.7), SUMO-free: phases + current phase + next
+// V2I predictions from SUMO's programs (docs/behaviour.md §L1.7), SUMO-free: phases + current phase + next
 // switch -> the phases to come -> the predicted red stamp of the ego's link (static programs: the
-// whole cycle; actuated ones: the next switch only), with arrows (spec SUMO §3).
+// whole cycle; actuated ones: the next switch only), with arrows (docs/behaviour.md §S3).
 #include <gtest/gtest.h>
 
 #include <optional>

@@ -1,4 +1,4 @@
-// spec TLJ §5.3: the upstream scene-level tests of arrow-aware yellow passing (§1.8), all rows,
+// docs/behaviour.md §L5.3: the upstream scene-level tests of arrow-aware yellow passing (§L1.8), all rows,
 // with the upstream fixture. The upstream test calls isStopSignal() once per step; here each step()
 // runs it once (APPROACH, stop point ahead) and reports is_stop_signal and yellow_state.
 #include <gtest/gtest.h>
@@ -10,7 +10,7 @@ namespace {
 
 using C = SignalColor;
 
-// spec TLJ §5.3 fixture.
+// docs/behaviour.md §L5.3 fixture.
 TrafficLightJudgeParameters fixture_parameters(bool feature = true) {
   TrafficLightJudgeParameters p;
   p.stop_margin = 0.0;
@@ -117,7 +117,7 @@ TEST_F(ArrowAwareYellow, FeatureDisabled) {
   EXPECT_TRUE(y.is_stop_signal);
 }
 
-// Consequences of §1.8 beyond the upstream rows.
+// Consequences of §L1.8 beyond the upstream rows.
 
 TEST_F(ArrowAwareYellow, PlainAmberOnALaneWithoutTurnDirectionStops) {
   make(true, {.is_turn_lane = false, .has_static_arrow = false});
@@ -161,7 +161,7 @@ TEST_F(ArrowAwareYellow, TimedOutSignalStopsAndDoesNotTrack) {
 }
 
 TEST_F(ArrowAwareYellow, DefaultParametersDisableTheFeature) {
-  // spec TLJ §1.8 (corrected): autoware_launch's shipped traffic_light.param.yaml has false.
+  // docs/behaviour.md §L1.8 (corrected): autoware_launch's shipped traffic_light.param.yaml has false.
   EXPECT_FALSE(TrafficLightJudgeParameters{}.enable_arrow_aware_yellow_passing);
 }
 

@@ -1,5 +1,5 @@
 // The jerk-limited stop planner (src/planning/stop): level choice and closed-loop stops of a point
-// mass driven by the commanded speeds (spec TLJ §2.7, Decisions "dilemma zone").
+// mass driven by the commanded speeds (docs/behaviour.md §L2.7, §L0 "dilemma zone").
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -1,5 +1,5 @@
-// The seeded perception model (spec TLJ, Decisions "Perception model"): pass-through, determinism
-// and each fault; plus how it produces "timed out" for the judge (spec TLJ §1.3 row 2).
+// The seeded perception model (docs/behaviour.md §L0 "Perception model"): pass-through, determinism
+// and each fault; plus how it produces "timed out" for the judge (docs/behaviour.md §L1.3 row 2).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -274,7 +274,7 @@ TEST(PerceptionModel, InvalidParametersAndInputsThrow) {
 
 TEST(PerceptionModelWithJudge, ABlackoutLongerThanTheTimeoutStopsTheEgo) {
   // Green light seen until t = 2.0, then a 3 s blackout: the last observation ages past
-  // tl_state_timeout and the judge stops (spec TLJ §1.3 row 2), then passes again once seen.
+  // tl_state_timeout and the judge stops (docs/behaviour.md §L1.3 row 2), then passes again once seen.
   PerceptionModelParameters pp;
   pp.blackouts = {{2.05, 5.0}};
   PerceptionModel perception(pp);

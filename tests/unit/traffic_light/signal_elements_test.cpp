@@ -1,4 +1,4 @@
-// spec TLJ §1.3 (highest confidence per shape, Decision), §1.4 (color and arrow matching), §1.8.
+// docs/behaviour.md §L1.3 (highest confidence per shape, Decision), §L1.4 (color and arrow matching), §L1.8.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -19,7 +19,7 @@ using S = SignalShape;
 using D = LaneTurnDirection;
 
 TEST(SignalElements, EnumValuesMatchAutowareMessage) {
-  // spec TLJ §1.4 enum values of autoware_perception_msgs/TrafficLightElement.
+  // docs/behaviour.md §L1.4 enum values of autoware_perception_msgs/TrafficLightElement.
   EXPECT_EQ(static_cast<int>(C::Unknown), 0);
   EXPECT_EQ(static_cast<int>(C::Red), 1);
   EXPECT_EQ(static_cast<int>(C::Amber), 2);
@@ -94,7 +94,7 @@ TEST(HighestConfidencePerShape, NanConfidenceCountsAsLowest) {
 }
 
 TEST(IsTrafficSignalStop, GreenCircleGoesForEveryDirection) {
-  // spec TLJ §1.4 step 1.
+  // docs/behaviour.md §L1.4 step 1.
   for (D d : {D::Else, D::Straight, D::Left, D::Right}) {
     EXPECT_FALSE(is_traffic_signal_stop(d, {el(C::Green)})) << to_string(d);
     EXPECT_FALSE(is_traffic_signal_stop(d, {el(C::Red, S::LeftArrow), el(C::Green)})) << to_string(d);
@@ -102,7 +102,7 @@ TEST(IsTrafficSignalStop, GreenCircleGoesForEveryDirection) {
 }
 
 TEST(IsTrafficSignalStop, EverythingElseStopsOnALaneWithoutTurnDirection) {
-  // spec TLJ §1.4 step 2: arrows ignored on "else".
+  // docs/behaviour.md §L1.4 step 2: arrows ignored on "else".
   EXPECT_TRUE(is_traffic_signal_stop(D::Else, {}));
   EXPECT_TRUE(is_traffic_signal_stop(D::Else, {el(C::Red)}));
   EXPECT_TRUE(is_traffic_signal_stop(D::Else, {el(C::Amber)}));
@@ -113,7 +113,7 @@ TEST(IsTrafficSignalStop, EverythingElseStopsOnALaneWithoutTurnDirection) {
 }
 
 TEST(IsTrafficSignalStop, GreenArrowMatchedToTurnDirection) {
-  // spec TLJ §1.4 steps 3-5: red circle plus a green arrow for the lane's turn (spec SUMO §3).
+  // docs/behaviour.md §L1.4 steps 3-5: red circle plus a green arrow for the lane's turn (docs/behaviour.md §S3).
   const std::vector<std::pair<D, S>> matches = {{D::Left, S::LeftArrow}, {D::Right, S::RightArrow},
                                                 {D::Straight, S::UpArrow}};
   const std::vector<S> arrows = {S::LeftArrow, S::RightArrow, S::UpArrow, S::UpLeftArrow, S::UpRightArrow};
@@ -129,7 +129,7 @@ TEST(IsTrafficSignalStop, GreenArrowMatchedToTurnDirection) {
 }
 
 TEST(IsTrafficSignalStop, ArrowMustBeGreen) {
-  // Decision (spec TLJ §1.4 details, §10): an amber or red arrow of the right shape does not count.
+  // Decision (docs/behaviour.md §L1.4 details, §L10): an amber or red arrow of the right shape does not count.
   EXPECT_TRUE(is_traffic_signal_stop(D::Left, {el(C::Red), el(C::Red, S::LeftArrow)}));
   EXPECT_TRUE(is_traffic_signal_stop(D::Left, {el(C::Red), el(C::Amber, S::LeftArrow)}));
   EXPECT_TRUE(is_traffic_signal_stop(D::Left, {el(C::Red), el(C::Unknown, S::LeftArrow)}));
@@ -145,7 +145,7 @@ TEST(IsTrafficSignalStop, StatusIsIgnored) {
 }
 
 TEST(IsYellow, AmberSolidOnOrUnknownStatusAnyShape) {
-  // spec TLJ §1.8 "yellow now".
+  // docs/behaviour.md §L1.8 "yellow now".
   EXPECT_TRUE(is_yellow({el(C::Amber)}));
   EXPECT_TRUE(is_yellow({el(C::Amber, S::Circle, 1.0, SignalStatus::Unknown)}));
   EXPECT_TRUE(is_yellow({el(C::Red), el(C::Amber, S::LeftArrow)}));

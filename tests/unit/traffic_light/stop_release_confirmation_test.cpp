@@ -1,7 +1,7 @@
 // stop_release_confirmation_time (signalsim's own parameter, beyond the reference): a latched stop
-// (spec TLJ §1.2 step 3.10, is_prev_state_stop) is released only once the judge has looked at no stop
+// (docs/behaviour.md §L1.2 step 3.10, is_prev_state_stop) is released only once the judge has looked at no stop
 // signal for that long without a break. With 0 (the default) one go cycle releases it (step 3.9), as
-// in the reference. Times are integer nanoseconds (spec TLJ §1.5 choice), steps of 0.1 s.
+// in the reference. Times are integer nanoseconds (docs/behaviour.md §L1.5 choice), steps of 0.1 s.
 #include <gtest/gtest.h>
 
 #include <stdexcept>
@@ -37,7 +37,7 @@ TrafficLightJudgeParameters confirmation(double seconds) {
 }
 
 // Red at t = 0.0, 0.1, 0.2 s, 60 m before the stop point at 10 m/s: the third cycle has held the
-// stop signal 0.2 s > stop_time_hysteresis 0.1 s and latches a normal stop (spec TLJ §1.5, §2.6).
+// stop signal 0.2 s > stop_time_hysteresis 0.1 s and latches a normal stop (docs/behaviour.md §L1.5, §L2.6).
 void latch_stop(TrafficLightJudge& judge) {
   judge.step(red(0.0));
   judge.step(red(0.1));
@@ -56,7 +56,7 @@ TEST(StopReleaseConfirmation, NegativeOrNonFiniteIsRejected) {
 }
 
 TEST(StopReleaseConfirmation, OneMisreadGreenReleasesTheStopWithZero) {
-  // spec TLJ §1.2 step 3.9: one go cycle clears is_prev_state_stop; the next red needs the
+  // docs/behaviour.md §L1.2 step 3.9: one go cycle clears is_prev_state_stop; the next red needs the
   // hysteresis again before the stop returns.
   TrafficLightJudge judge;
   latch_stop(judge);
@@ -88,7 +88,7 @@ TEST(StopReleaseConfirmation, OneMisreadGreenDoesNotReleaseTheStopWithHalfASecon
 TEST(StopReleaseConfirmation, MisreadNearTheLineCrossesOnRedOnlyWithoutTheFilter) {
   // The failure of the reference: latched far away, a misread green 10 m before the stop point at
   // 10 m/s releases the latch; when the red is judged again the pass judge runs as for a new stop
-  // (judge line about 23 m >= d, d < yellow lamp line 27.5 m: pass through, spec TLJ §2.6).
+  // (judge line about 23 m >= d, d < yellow lamp line 27.5 m: pass through, docs/behaviour.md §L2.6).
   for (const double t : {0.0, 0.5}) {
     SCOPED_TRACE(t);
     TrafficLightJudge judge(confirmation(t));
@@ -144,7 +144,7 @@ TEST(StopReleaseConfirmation, AStopSignalSeenAgainRestartsTheClock) {
 
 TEST(StopReleaseConfirmation, AStaleGreenDoesNotCountAndATimeoutIsAStopSignal) {
   // The clock runs on the stamps of the observations looked at: a green kept in force over dropouts
-  // (absent observations, spec TLJ §1.3) adds nothing, and once it is older than tl_state_timeout it
+  // (absent observations, docs/behaviour.md §L1.3) adds nothing, and once it is older than tl_state_timeout it
   // is a stop signal (row 2).
   TrafficLightJudge judge(confirmation(0.5));
   latch_stop(judge);
@@ -187,7 +187,7 @@ TEST(StopReleaseConfirmation, GoOutClearsTheClock) {
   judge.step(green(1.0, 1.0));
   judge.step(green(1.1, 1.0));
   EXPECT_EQ(judge.step(green(1.2, -2.5)).state, JudgeState::GoOut);
-  // Re-armed (d > 1 m); the latch survives GO_OUT (spec TLJ §1.2 consequences), the clock does not.
+  // Re-armed (d > 1 m); the latch survives GO_OUT (docs/behaviour.md §L1.2 consequences), the clock does not.
   judge.step(green(1.3, 5.0));
   const auto r = judge.step(green(1.4, 5.0));
   EXPECT_EQ(r.decision, JudgeDecision::Stop);

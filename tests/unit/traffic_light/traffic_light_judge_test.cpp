@@ -1,5 +1,5 @@
-// spec TLJ §1.2 state machine, §1.3 lookup rules, §1.5 hysteresis and latch, §1.6 restart
-// suppression, §2.3 predicates at their boundaries, §2.6 zones, and the signalsim Decisions.
+// docs/behaviour.md §L1.2 state machine, §L1.3 lookup rules, §L1.5 hysteresis and latch, §L1.6 restart
+// suppression, §L2.3 predicates at their boundaries, §L2.6 zones, and the signalsim Decisions.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -66,7 +66,7 @@ TEST(TrafficLightJudge, DefaultsFollowTheDecisions) {
 }
 
 TEST(TrafficLightJudge, NoStopPointMeansNoDecisionAndNoStateChange) {
-  // spec TLJ §1.2 STEP 1.
+  // docs/behaviour.md §L1.2 STEP 1.
   TrafficLightJudge judge;
   const auto r = judge.step(red_at(0.0, 0.0, 10.0));  // warm the timer... (d = 0)
   EXPECT_EQ(r.decision, JudgeDecision::Pass);
@@ -88,10 +88,10 @@ TEST(TrafficLightJudge, GreenPasses) {
   }
 }
 
-// ---- §1.5 hysteresis --------------------------------------------------------------------------
+// ---- §L1.5 hysteresis --------------------------------------------------------------------------
 
 TEST(Hysteresis, ThirdStopCycleStopsAtATenthOfASecondEvenWithAccumulatedClockError) {
-  // spec TLJ §1.5: elapsed 0 and 0.1 pass, 0.2 (> 0.1) stops. The clock below accumulates
+  // docs/behaviour.md §L1.5: elapsed 0 and 0.1 pass, 0.2 (> 0.1) stops. The clock below accumulates
   // `t += 0.1`, so raw double differences are sometimes 0.10000000000000003; the judge compares
   // integer nanoseconds and is immune.
   bool saw_raw_difference_above_threshold = false;
@@ -119,7 +119,7 @@ TEST(Hysteresis, ThirdStopCycleStopsAtATenthOfASecondEvenWithAccumulatedClockErr
 }
 
 TEST(Hysteresis, AnyGoCycleClearsTheTimer) {
-  // spec TLJ §1.5: no accumulation.
+  // docs/behaviour.md §L1.5: no accumulation.
   TrafficLightJudge judge;
   EXPECT_EQ(judge.step(red_at(0.0, 80.0, 10.0)).decision, JudgeDecision::Pass);
   EXPECT_EQ(judge.step(red_at(0.1, 79.0, 10.0)).decision, JudgeDecision::Pass);
@@ -130,13 +130,13 @@ TEST(Hysteresis, AnyGoCycleClearsTheTimer) {
 }
 
 TEST(Hysteresis, ZeroHysteresisStillPassesTheFirstStopCycle) {
-  // elapsed 0 is not > 0 (spec TLJ §1.2 3.5).
+  // elapsed 0 is not > 0 (docs/behaviour.md §L1.2 3.5).
   TrafficLightJudge judge(no_hysteresis());
   EXPECT_EQ(judge.step(red_at(0.0, 80.0, 10.0)).decision, JudgeDecision::Pass);
   EXPECT_EQ(judge.step(red_at(0.1, 79.0, 10.0)).decision, JudgeDecision::Stop);
 }
 
-// ---- §1.2 stop latch ---------------------------------------------------------------------------
+// ---- §L1.2 stop latch ---------------------------------------------------------------------------
 
 TEST(StopLatch, OnceStoppingItNeverSwitchesToPass) {
   TrafficLightJudge judge(no_hysteresis());
@@ -172,7 +172,7 @@ TEST(StopLatch, BypassesTheHysteresisAndIsClearedOnlyByAGoCycle) {
 }
 
 TEST(StopLatch, SurvivesGoOutAndReArm) {
-  // spec TLJ §1.2: is_prev_state_stop is not reset on the transition to GO_OUT.
+  // docs/behaviour.md §L1.2: is_prev_state_stop is not reset on the transition to GO_OUT.
   TrafficLightJudge judge(no_hysteresis());
   ASSERT_EQ(judged_red(judge, 10.0, 3.0).decision, JudgeDecision::Stop);
   EXPECT_EQ(judge.step(red_at(0.2, -2.5, 3.0)).state, JudgeState::GoOut);
@@ -184,7 +184,7 @@ TEST(StopLatch, SurvivesGoOutAndReArm) {
   EXPECT_EQ(r.decision, JudgeDecision::Stop);
 }
 
-// ---- §1.2 GO_OUT / re-arm ----------------------------------------------------------------------
+// ---- §L1.2 GO_OUT / re-arm ----------------------------------------------------------------------
 
 TEST(GoOut, EnteredStrictlyBelowMinusTwoMetres) {
   TrafficLightJudge judge;
@@ -224,7 +224,7 @@ TEST(GoOut, ClearsTheStopSignalTimer) {
   EXPECT_EQ(r.stop_signal_elapsed, 0.0);
 }
 
-// ---- §1.3 lookup: never received, timeout, empty, latest observation -----------------------------
+// ---- §L1.3 lookup: never received, timeout, empty, latest observation -----------------------------
 
 TEST(SignalLookup, NeverReceivedPassesInSimulation) {
   TrafficLightJudge judge;  // is_simulation = true
@@ -345,7 +345,7 @@ TEST(SignalLookup, ArrowsMatchedToTurnDirection) {
   EXPECT_EQ(judge.step(in).verdict, SignalVerdict::Stop);
 }
 
-// ---- §1.6 restart suppression ------------------------------------------------------------------
+// ---- §L1.6 restart suppression ------------------------------------------------------------------
 
 TEST(RestartSuppression, StoppedStrictlyInsideTheWindowStaysPut) {
   for (double d : {0.5, 0.75, 1.0, 0.4, 1.1}) {
@@ -389,7 +389,7 @@ TEST(RestartSuppression, VehicleStoppedHelper) {
   EXPECT_TRUE(is_vehicle_stopped(-0.001));
 }
 
-// ---- §2.3 predicates at their boundaries and §2.6 zones ------------------------------------------
+// ---- §L2.3 predicates at their boundaries and §L2.6 zones ------------------------------------------
 
 TEST(PassJudge, JudgeDistEqualToDIsNotStoppable) {
   TrafficLightJudgeParameters p = no_hysteresis();
@@ -478,7 +478,7 @@ TEST(PassJudge, ZonesAndDecisions) {
 }
 
 TEST(PassJudge, RedInReachIsPassedToo) {
-  // spec TLJ §2.5/§2.6: the pass judge does not look at the color.
+  // docs/behaviour.md §L2.5/§L2.6: the pass judge does not look at the color.
   TrafficLightJudge judge(no_hysteresis());
   const auto r = judged_red(judge, 20.0, 10.0);
   EXPECT_EQ(r.decision, JudgeDecision::Pass);

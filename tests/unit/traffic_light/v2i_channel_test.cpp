@@ -1,4 +1,4 @@
-// The V2I channel's faults (spec TLJ §1.7 predictions through a perception-like model): latency,
+// The V2I channel's faults (docs/behaviour.md §L1.7 predictions through a perception-like model): latency,
 // dropout, blackouts, the age limit, and its own seeded stream.
 #include <gtest/gtest.h>
 

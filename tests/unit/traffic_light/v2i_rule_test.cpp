@@ -1,6 +1,6 @@
-// V2I remaining time to red (spec TLJ §1.7): the rule (t_pass, horizon, red stops with arrows, the
+// V2I remaining time to red (docs/behaviour.md §L1.7): the rule (t_pass, horizon, red stops with arrows, the
 // velocity-threshold branch) and how the judge OR-s it into to_be_stopped (no hysteresis; the pass
-// judge of §2 still applies).
+// judge of §L2 still applies).
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,4 +1,4 @@
-// spec TSD §6.4: OVERWRITE and USE_PRIOR_INFO, the merge helpers used by the behaviour modules.
+// docs/behaviour.md §T6.4: OVERWRITE and USE_PRIOR_INFO, the merge helpers used by the behaviour modules.
 #include <gtest/gtest.h>
 
 #include "test_helpers.hpp"

@@ -1,4 +1,4 @@
-// Boundary cases of PRIOR_WINS derived from spec TSD §6.2 (strict vs non-strict comparisons).
+// Boundary cases of PRIOR_WINS derived from docs/behaviour.md §T6.2 (strict vs non-strict comparisons).
 #include "turn_signal/resolver.hpp"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// spec TSD §7: required end point = backward scan over the lane resampled every 1 m (Akima in x/y).
+// docs/behaviour.md §T7: required end point = backward scan over the lane resampled every 1 m (Akima in x/y).
 #include "turn_signal/required_end.hpp"
 
 #include <gtest/gtest.h>
@@ -44,7 +44,7 @@ std::vector<Vec2> concatenate(std::vector<Vec2> a, const std::vector<Vec2>& b) {
 
 const Polyline kDenseLeftArc{arc(900, 10.0, kPi / 2.0, +1.0)};  // 0.1 degree chords, length 15.708
 
-// spec §7 table, row 1: 90° left arc, R = 10 m, from (0,0) heading +x.
+// docs/behaviour.md §T7 table, row 1: 90° left arc, R = 10 m, from (0,0) heading +x.
 TEST(RequiredEnd, DenseLeftArcEndsAtTwelveMetres) {
   const double s = required_end_arc_length(kDenseLeftArc, kThresholdDeg);
   EXPECT_DOUBLE_EQ(s, 12.0);
@@ -60,14 +60,14 @@ TEST(RequiredEnd, RightTurnMirrorGivesTheSameArcLength) {
   EXPECT_NEAR(right_arc.point_at(s).y, -6.38, 0.005);
 }
 
-// spec §7 table, row 2: a straight lane is required to its end (the old forward scan gave 0).
+// docs/behaviour.md §T7 table, row 2: a straight lane is required to its end (the old forward scan gave 0).
 TEST(RequiredEnd, StraightLaneIsRequiredToItsEnd) {
   EXPECT_DOUBLE_EQ(required_end_arc_length(Polyline{straight({0, 0}, {20, 0}, 20)}, kThresholdDeg), 20.0);
   EXPECT_DOUBLE_EQ(required_end_arc_length(Polyline{{{0, 0}, {20, 0}}}, kThresholdDeg), 20.0);
   EXPECT_DOUBLE_EQ(required_end_arc_length(Polyline{straight({3, 4}, {-9, -12}, 7)}, kThresholdDeg), 20.0);
 }
 
-// spec §7 table, row 3: 10 m straight + the same arc + 10 m straight.
+// docs/behaviour.md §T7 table, row 3: 10 m straight + the same arc + 10 m straight.
 TEST(RequiredEnd, StraightArcStraightEndsTwelveMetresIntoTheArc) {
   const std::vector<Vec2> bend = arc(900, 10.0, kPi / 2.0, +1.0, {10.0, 0.0});
   const Vec2 bend_end = bend.back();

@@ -1,4 +1,4 @@
-// spec TSD §6.3: the five documented conflict patterns, as the blinker sequence seen while the ego
+// docs/behaviour.md §T6.3: the five documented conflict patterns, as the blinker sequence seen while the ego
 // drives along s. Blinker 1 (prior, earlier desired start) = intersection LEFT, blinker 2 = behaviour
 // RIGHT. base_link2front = 1 m. Samples sit at s_base = 0.05 + 0.5 k so that no sample lands exactly
 // on a section boundary (the exact ps == 0 instant is tested separately below).
@@ -90,7 +90,7 @@ TEST(ConflictPatterns, Pattern5HandsOverAtThePriorRequiredEnd) {
   expect_runs(sweep(b1, b2), {{kDisable, 0.05}, {kLeft, 9.05}, {kRight, 50.05}, {kDisable, 80.05}});
 }
 
-// Reference quirk (spec TSD §6.2 edge): in pattern 5, at the exact instant the front is on R1's start
+// Reference quirk (docs/behaviour.md §T6.2 edge): in pattern 5, at the exact instant the front is on R1's start
 // (ps == 0), ego is neither before nor inside R1, so blinker 2 shows for that single instant.
 TEST(ConflictPatterns, Pattern5ShowsBlinker2ExactlyOnThePriorRequiredStart) {
   const auto b1 = request(kLeft, 10, 60, 40, 50);

@@ -1,4 +1,4 @@
-// RESOLVE (spec TSD §6.1): validity, ordering and the fold, on hand-made requests.
+// RESOLVE (docs/behaviour.md §T6.1): validity, ordering and the fold, on hand-made requests.
 #include "turn_signal/resolver.hpp"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// spec TSD §9: the upstream test_turn_signal.cpp vectors (Condition1/2/3) for resolve_turn_signal.
+// docs/behaviour.md §T9: the upstream test_turn_signal.cpp vectors (Condition1/2/3) for resolve_turn_signal.
 // Path along x, so s == x. Ego x is a C++ float (48.1f == 48.0999985) converted to double;
 // base_link2front = 1.0, so s_base = x and s_front = x + 1.
 #include <gtest/gtest.h>

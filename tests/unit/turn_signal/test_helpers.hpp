@@ -5,7 +5,7 @@
 
 namespace signalsim::test {
 
-constexpr double kBaseLinkToFront = 1.0;  // spec TSD §9 setParameters(1.0, ...)
+constexpr double kBaseLinkToFront = 1.0;  // docs/behaviour.md §T9 setParameters(1.0, ...)
 
 inline EgoOnRoute ego_at_base(double s_base, double base_link_to_front = kBaseLinkToFront) {
   return EgoOnRoute{.s_front = s_base + base_link_to_front, .s_base = s_base, .speed = 0.0};
