@@ -13,6 +13,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "batch/sweep_keys.hpp"
 #include "sim/behavior_stage.hpp"
 #include "scenario/input_error.hpp"
 #include "sumo/file_paths.hpp"
@@ -214,7 +215,7 @@ std::vector<std::string> scenario_files(const std::vector<std::string>& paths, c
 Sweep load_sweep(const std::string& path) {
   YAML::Node root = load_yaml_file(path, "sweep file");
   if (!root || root.IsNull()) throw InputError(path, 0, "the sweep file is empty");
-  YamlFields top(root, path, "");
+  YamlFields top(root, path, "", sweep_keys());
   Sweep s;
   s.path = path;
   s.name = top.text_or("name", fs::path(path).stem().string());
@@ -289,7 +290,7 @@ Sweep load_sweep(const std::string& path) {
       s.set_lines.push_back(yaml_line(entry.first));
     }
   }
-  if (top.has("timeout")) s.timeout = top.required_number("timeout", 0.1, 86400.0);
+  if (top.has("timeout")) s.timeout = top.required_number("timeout");
   if (top.has("out")) s.out = sumo::resolve_beside(path, top.text("out"));
   if (top.has("plot")) {
     // One mapping, or a list of them (one picture each).
@@ -302,7 +303,7 @@ Sweep load_sweep(const std::string& path) {
       items.push_back(node);
     }
     for (const YAML::Node& item : items) {
-      YamlFields fields(item, path, "plot");
+      YamlFields fields(item, path, "plot", sweep_plot_keys());
       SweepPlot plot;
       plot.metric_line = fields.line_of("metric");  // the line of plot: when a key is not given
       plot.x_line = fields.line_of("x");
