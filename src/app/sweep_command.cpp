@@ -9,6 +9,7 @@
 #include "batch/run_list.hpp"
 #include "batch/sweep_file.hpp"
 #include "batch/sweep_plot_check.hpp"
+#include "batch/sweep_keys.hpp"
 #include "scenario/input_error.hpp"
 
 namespace signalsim::app {
@@ -33,7 +34,8 @@ Command add_sweep_command(CLI::App& app) {
               check_sweep_runs(sweep, runs);
               check_sweep_plot(sweep, runs);  // a plot: no run can give is refused before any run
               const std::string default_out = sweep.out.empty() ? "out/" + sweep.name : sweep.out;
-              BatchSettings settings = to_settings(o->batch, default_out, sweep.timeout.value_or(300.0));
+              const double timeout = sweep.timeout.value_or(*sweep_keys().at("timeout").default_number);
+              BatchSettings settings = to_settings(o->batch, default_out, timeout);
               settings.swept = swept_keys(sweep);
               if (o->list) {
                 for (const RunSpec& run : runs) {

@@ -1,5 +1,6 @@
 // Reading a sweep file into a Sweep, with every error at its file and line (see sweep_file.hpp).
 #include "batch/sweep_file.hpp"
+#include "batch/sweep_keys.hpp"
 
 #include <filesystem>
 #include <set>
@@ -142,7 +143,7 @@ std::vector<SweepPlot> read_plots(const YamlFields& top, const std::string& path
   }
   std::vector<SweepPlot> plots;
   for (const YAML::Node& item : items) {
-    YamlFields fields(item, path, "plot");
+    YamlFields fields(item, path, "plot", sweep_plot_keys());
     SweepPlot plot;
     plot.metric_line = fields.line_of("metric");  // the line of plot: when a key is not given
     plot.x_line = fields.line_of("x");
@@ -165,7 +166,7 @@ std::vector<SweepPlot> read_plots(const YamlFields& top, const std::string& path
 Sweep load_sweep(const std::string& path) {
   YAML::Node root = load_yaml_file(path, "sweep file");
   if (!root || root.IsNull()) throw InputError(path, 0, "the sweep file is empty");
-  YamlFields top(root, path, "");
+  YamlFields top(root, path, "", sweep_keys());
   Sweep s;
   s.path = path;
   s.name = top.text_or("name", fs::path(path).stem().string());
@@ -183,7 +184,7 @@ Sweep load_sweep(const std::string& path) {
     s.zips = read_zips(top, path, seen);
   }
   if (top.has("set")) read_set(top, path, seen, s);
-  if (top.has("timeout")) s.timeout = top.required_number("timeout", 0.1, 86400.0);
+  if (top.has("timeout")) s.timeout = top.required_number("timeout");
   if (top.has("out")) s.out = sumo::resolve_beside(path, top.text("out"));
   if (top.has("plot")) {
     s.plots = read_plots(top, path, s);

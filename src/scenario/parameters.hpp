@@ -75,7 +75,7 @@ class ParameterSet {
   bool boolean(const std::string& name) const;
   const std::string& text(const std::string& name) const;
 
-  /// name -> value, in schema order, for summaries.
+  /// name -> value, sorted by name (parameter_schema() has the schema's order), for summaries.
   const std::map<std::string, ParameterValue>& values() const { return values_; }
   /// Where the value of `name` came from: "default", "<file>:<line>", "country jp", "set", "--set".
   const std::string& origin(const std::string& name) const { return origins_.at(name); }

@@ -76,7 +76,7 @@ void read_simulation_keys(const YamlFields& top, const std::string& path, Scenar
   }
 
   // Step length, seed, begin and end.
-  s.step_length = top.number("step_length", cfg && cfg->step_length ? *cfg->step_length : 0.1, 0.001, 1.0);
+  s.step_length = cfg && cfg->step_length ? top.number("step_length", *cfg->step_length) : top.number("step_length");
   // SUMO counts time in whole milliseconds and rounds a step length to them, while the planner would
   // integrate the value as written: the two clocks drift apart (0.0015 s ran a red light). Refuse it.
   if (const double ms = s.step_length * 1000.0; std::abs(ms - std::round(ms)) > 1e-6) {
@@ -86,7 +86,7 @@ void read_simulation_keys(const YamlFields& top, const std::string& path, Scenar
     if (top.has("step_length")) top.fail("step_length", reason);
     throw InputError(s.sumo.sumocfg, 0, "step-length " + reason);
   }
-  s.seed = top.integer("seed", cfg && cfg->seed ? *cfg->seed : 1, 0, 2147483647);
+  s.seed = cfg && cfg->seed ? top.integer("seed", *cfg->seed) : top.integer("seed");
   if (cfg && cfg->step_length) {
     if (top.has("step_length")) overridden("step-length", sumo::short_number(*cfg->step_length), "step_length", sumo::short_number(s.step_length));
     else used("step-length " + sumo::short_number(s.step_length));
@@ -106,9 +106,8 @@ void read_simulation_keys(const YamlFields& top, const std::string& path, Scenar
     in.end = *cfg->end;
     used("end " + sumo::short_number(*in.end));
   }
-  // duration: the scenario's; else until the sumocfg's end; else 60 s.
-  const double default_duration = in.end ? *in.end - in.begin : 60.0;
-  s.duration = top.number("duration", default_duration, 0.001, 86400.0);
+  // duration: the scenario's; else until the sumocfg's end; else the table's default (60 s).
+  s.duration = in.end ? top.number("duration", *in.end - in.begin) : top.number("duration");
 
   // The sumocfg's other options go on to SUMO, but for those signalsim sets itself.
   if (cfg) {

@@ -5,6 +5,7 @@
 #include <fstream>
 #include <limits>
 #include <sstream>
+#include <stdexcept>
 
 #include "scenario/input_error.hpp"
 #include "scenario/utf8_text.hpp"
@@ -37,6 +38,24 @@ YamlFields::YamlFields(const YAML::Node& mapping, std::string file, std::string 
   reject_duplicate_keys(mapping_, file_, where_);
 }
 
+YamlFields::YamlFields(const YAML::Node& mapping, std::string file, std::string where, const KeyTable& keys)
+    : YamlFields(mapping, std::move(file), std::move(where)) {
+  keys_ = &keys;
+}
+
+const KeySpec* YamlFields::spec(const std::string& key, std::optional<KeyType> type) const {
+  if (!keys_) return nullptr;
+  const KeySpec& entry = keys_->at(key);
+  if (type && entry.type != *type)
+    throw std::logic_error("key table '" + keys_->where + "': key '" + key + "' is not read as its table says");
+  return &entry;
+}
+
+const KeySpec& YamlFields::listed(const std::string& key, KeyType type) const {
+  if (!keys_) throw std::logic_error("'" + qualified(key) + "': read through a key table, but there is none");
+  return *spec(key, type);
+}
+
 void reject_duplicate_keys(const YAML::Node& mapping, const std::string& file, const std::string& where) {
   // yaml-cpp keeps both entries of a repeated key and lookups see only one: reject it.
   std::set<std::string> seen;
@@ -60,14 +79,19 @@ void YamlFields::fail(const std::string& key, const std::string& reason) const {
   throw InputError(file_, line_of(key), "key '" + qualified(key) + "': " + reason);
 }
 
-bool YamlFields::has(const std::string& key) const { return static_cast<bool>(mapping_[key]); }
+bool YamlFields::has(const std::string& key) const {
+  (void)spec(key);
+  return static_cast<bool>(mapping_[key]);
+}
 
 YAML::Node YamlFields::node(const std::string& key) const {
+  (void)spec(key);
   read_.insert(key);
   return mapping_[key];
 }
 
 std::string YamlFields::text(const std::string& key) const {
+  (void)spec(key, KeyType::Text);
   const YAML::Node n = node(key);
   if (!n) throw InputError(file_, yaml_line(mapping_), "missing required key '" + qualified(key) + "'");
   if (!n.IsScalar()) fail(key, "expected a text value");
@@ -79,6 +103,7 @@ std::string YamlFields::text_or(const std::string& key, const std::string& fallb
 }
 
 double YamlFields::number(const std::string& key, double fallback, double min, double max) const {
+  (void)spec(key, KeyType::Number);
   if (!has(key)) {
     read_.insert(key);
     return fallback;
@@ -87,6 +112,7 @@ double YamlFields::number(const std::string& key, double fallback, double min, d
 }
 
 double YamlFields::required_number(const std::string& key, double min, double max) const {
+  (void)spec(key, KeyType::Number);
   const YAML::Node n = node(key);
   if (!n) throw InputError(file_, yaml_line(mapping_), "missing required key '" + qualified(key) + "'");
   double value = 0.0;
@@ -106,6 +132,7 @@ double YamlFields::required_number(const std::string& key, double min, double ma
 }
 
 int YamlFields::integer(const std::string& key, int fallback, int min, int max) const {
+  (void)spec(key, KeyType::Integer);
   if (!has(key)) {
     read_.insert(key);
     return fallback;
@@ -124,6 +151,7 @@ int YamlFields::integer(const std::string& key, int fallback, int min, int max) 
 }
 
 std::vector<std::string> YamlFields::text_list(const std::string& key) const {
+  (void)spec(key, KeyType::TextList);
   const YAML::Node n = node(key);
   std::vector<std::string> out;
   if (!n || n.IsNull()) return out;
@@ -138,9 +166,46 @@ std::vector<std::string> YamlFields::text_list(const std::string& key) const {
 void YamlFields::finish() const {
   for (const auto& entry : mapping_) {
     const std::string key = entry.first.Scalar();
-    if (!read_.count(key))
+    if (!read_.count(key) || (keys_ && !keys_->find(key)))
       throw InputError(file_, yaml_line(entry.first), "unknown key '" + qualified(key) + "'");
   }
+}
+
+std::string YamlFields::text_or(const std::string& key) const {
+  return text_or(key, listed(key, KeyType::Text).default_text.value());
+}
+
+std::string YamlFields::choice(const std::string& key) const {
+  const KeySpec& entry = listed(key, KeyType::Text);
+  const std::string value = entry.default_text ? text_or(key) : text(key);
+  for (const std::string& allowed : entry.choices)
+    if (value == allowed) return value;
+  std::string allowed;
+  for (const std::string& c : entry.choices) allowed += (allowed.empty() ? "" : ", ") + c;
+  fail(key, "'" + value + "' is not one of " + allowed);
+}
+
+double YamlFields::number(const std::string& key) const {
+  return number(key, listed(key, KeyType::Number).default_number.value());
+}
+
+double YamlFields::number(const std::string& key, double fallback) const {
+  const KeySpec& entry = listed(key, KeyType::Number);
+  return number(key, fallback, entry.min, entry.max);
+}
+
+double YamlFields::required_number(const std::string& key) const {
+  const KeySpec& entry = listed(key, KeyType::Number);
+  return required_number(key, entry.min, entry.max);
+}
+
+int YamlFields::integer(const std::string& key) const {
+  return integer(key, static_cast<int>(listed(key, KeyType::Integer).default_number.value()));
+}
+
+int YamlFields::integer(const std::string& key, int fallback) const {
+  const KeySpec& entry = listed(key, KeyType::Integer);
+  return integer(key, fallback, static_cast<int>(entry.min), static_cast<int>(entry.max));
 }
 
 }  // namespace signalsim

@@ -1,4 +1,6 @@
 // Strict reading of YAML mappings: every key must be known, every value of the right type and range.
+// A mapping read through its key table (scenario/key_table.hpp) takes the table's defaults, ranges
+// and choices, and a key the table does not list is unknown.
 #pragma once
 
 #include <optional>
@@ -8,6 +10,8 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "scenario/key_table.hpp"
+
 namespace signalsim {
 
 /// Reads the fields of one mapping; `finish()` rejects keys nobody asked for.
@@ -15,6 +19,10 @@ class YamlFields {
  public:
   /// `where` names the mapping in messages ("ego", "params", ...); empty for the top level.
   YamlFields(const YAML::Node& mapping, std::string file, std::string where);
+  /// Reads through `keys` (which must outlive this object): every key asked about must be in the
+  /// table and of the shape read (else std::logic_error: a loader bug, not bad input), and finish()
+  /// rejects a key the table does not list as well as one never read (a key read only with another).
+  YamlFields(const YAML::Node& mapping, std::string file, std::string where, const KeyTable& keys);
 
   bool has(const std::string& key) const;
   std::string text(const std::string& key) const;  ///< required
@@ -23,9 +31,21 @@ class YamlFields {
   double required_number(const std::string& key, double min, double max) const;
   int integer(const std::string& key, int fallback, int min, int max) const;
   std::vector<std::string> text_list(const std::string& key) const;  ///< missing -> empty
+
+  // Through the table: its default, range and choices.
+  std::string text_or(const std::string& key) const;           ///< the table's default_text
+  /// The text (required unless the table has a default), one of the table's choices: else
+  /// "'<value>' is not one of <choices>".
+  std::string choice(const std::string& key) const;
+  double number(const std::string& key) const;                  ///< the table's default and range
+  double number(const std::string& key, double fallback) const;  ///< a computed default, the table's range
+  double required_number(const std::string& key) const;         ///< the table's range
+  int integer(const std::string& key) const;                     ///< the table's default and range
+  int integer(const std::string& key, int fallback) const;       ///< a computed default, the table's range
   YAML::Node node(const std::string& key) const;                     ///< marks the key as known
 
-  /// Throws InputError for the first key that was never read.
+  /// Throws InputError ("unknown key") for the first key that was never read or, with a table, that
+  /// the table does not list.
   void finish() const;
 
   [[noreturn]] void fail(const std::string& key, const std::string& reason) const;
@@ -33,9 +53,14 @@ class YamlFields {
 
  private:
   std::string qualified(const std::string& key) const;
+  /// The table's entry for `key` when there is a table (checked: listed, and of shape `type`).
+  const KeySpec* spec(const std::string& key, std::optional<KeyType> type = std::nullopt) const;
+  /// The same, for the reads that need a table (std::logic_error without one).
+  const KeySpec& listed(const std::string& key, KeyType type) const;
   YAML::Node mapping_;
   std::string file_;
   std::string where_;
+  const KeyTable* keys_ = nullptr;
   mutable std::set<std::string> read_;
 };
 

@@ -1,0 +1,76 @@
+// Reading perception, the V2I channel and light offsets through their key tables.
+#include "scenario/signal_reading.hpp"
+
+#include <cmath>
+
+#include "scenario/input_error.hpp"
+#include "scenario/scenario_keys.hpp"
+
+namespace signalsim {
+namespace {
+
+std::vector<PerceptionModelParameters::Blackout> parse_blackouts(YamlFields& f, const YAML::Node& blackouts,
+                                                                 const std::string& file, const std::string& key) {
+  std::vector<PerceptionModelParameters::Blackout> out;
+  if (!blackouts || blackouts.IsNull()) return out;
+  if (!blackouts.IsSequence()) f.fail("blackouts", "expected a list of [start, end] pairs");
+  for (const auto& pair : blackouts) {
+    double a = 0.0, b = 0.0;
+    if (!pair.IsSequence() || pair.size() != 2 || !YAML::convert<double>::decode(pair[0], a) ||
+        !YAML::convert<double>::decode(pair[1], b) || !std::isfinite(a) || !std::isfinite(b) || !(a <= b))
+      throw InputError(file, yaml_line(pair), "key '" + key + "': each entry is [start, end] with start <= end");
+    out.push_back({a, b});
+  }
+  return out;
+}
+
+// `perception.v2i:` the V2I channel's faults (docs/behaviour.md §L1.7; used with v2i.use_remaining_time). The
+// camera's dropout, latency and blackouts apply to it too unless given here.
+V2iChannelParameters parse_v2i_channel(const YAML::Node& node, const std::string& file, V2iChannelParameters p) {
+  YamlFields f(node, file, "perception.v2i", v2i_channel_keys());
+  p.dropout_probability = f.number("dropout_probability", p.dropout_probability);
+  p.latency = f.number("latency", p.latency);
+  if (const YAML::Node blackouts = f.node("blackouts"))
+    p.blackouts = parse_blackouts(f, blackouts, file, "perception.v2i.blackouts");
+  f.finish();
+  return p;
+}
+
+PerceptionModelParameters parse_perception(const YAML::Node& node, const std::string& file, V2iChannelParameters& v2i) {
+  YamlFields f(node, file, "perception", perception_keys());
+  PerceptionModelParameters p;
+  p.detection_range = f.number("detection_range");
+  p.dropout_probability = f.number("dropout_probability");
+  p.latency = f.number("latency");
+  p.detections_per_light = f.integer("detections_per_light");
+  p.confidence_noise = f.number("confidence_noise");
+  p.misclassification_probability = f.number("misclassification_probability");
+  p.blackouts = parse_blackouts(f, f.node("blackouts"), file, "perception.blackouts");
+  v2i.dropout_probability = p.dropout_probability;
+  v2i.latency = p.latency;
+  v2i.blackouts = p.blackouts;
+  if (const YAML::Node channel = f.node("v2i"); channel && !channel.IsNull()) v2i = parse_v2i_channel(channel, file, v2i);
+  f.finish();
+  return p;
+}
+
+}  // namespace
+
+void read_signal_inputs(const YamlFields& top, const std::string& path, Scenario& s) {
+  if (top.has("perception")) s.perception = parse_perception(top.node("perception"), path, s.v2i_channel);
+  s.perception.seed = static_cast<std::uint64_t>(s.seed);
+  s.v2i_channel.seed = static_cast<std::uint64_t>(s.seed);
+  if (top.has("light_offsets")) {
+    YAML::Node offsets = top.node("light_offsets");
+    if (!offsets.IsMap()) top.fail("light_offsets", "expected a mapping of light id: seconds");
+    for (const auto& entry : offsets) {
+      double value = 0.0;
+      if (!entry.second.IsScalar() || !YAML::convert<double>::decode(entry.second, value) || !std::isfinite(value))
+        throw InputError(path, yaml_line(entry.second),
+                         "key 'light_offsets." + entry.first.Scalar() + "': expected a number of seconds");
+      s.light_offsets[entry.first.Scalar()] = value;
+    }
+  }
+}
+
+}  // namespace signalsim
