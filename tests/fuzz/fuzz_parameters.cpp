@@ -1,6 +1,7 @@
 // libFuzzer target: ParameterSet::apply_file on arbitrary bytes as an Autoware-style parameter
 // file, lenient (as `params.files`) and strict (--strict-params), then the parameter structs every
-// module is built from. Documented failures: InputError. Anything else is a finding.
+// module is built from (after check_consistency, as the scenario loader calls it). Documented
+// failures: InputError. Anything else is a finding.
 #include <cmath>
 #include <cstdint>
 
@@ -14,6 +15,9 @@ void check(const std::string& path, bool strict) {
   signalsim::ParameterSet set;
   try {
     set.apply_file(path, strict);
+    // The rules between parameters (restart-suppression window, prepare duration) are checked on
+    // the final values, after the last apply (parameters.hpp), as load_scenario does.
+    set.check_consistency(path);
   } catch (const signalsim::InputError&) {
     return;
   }

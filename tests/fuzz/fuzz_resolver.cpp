@@ -2,8 +2,11 @@
 // requests and ego positions. Never throws (resolver.hpp), so any exception is a finding.
 // Invariants asserted:
 //   - resolve_turn_signal's result is DISABLE/None when no candidate is valid, else the command and
-//     source of one valid candidate (ENABLE_LEFT/RIGHT, desired start reached, desired end not
-//     passed); with exactly one valid candidate, that one.
+//     source of one valid candidate; with exactly one valid candidate, that one. Valid (resolver.hpp,
+//     spec TSD §6.1), computed here from the route positions and not with the resolver's own
+//     section_distances: ENABLE_LEFT/RIGHT, the desired start reached by the front bumper
+//     (desired_start - s_front <= 0) and the desired end not passed by base_link
+//     (desired_end - s_base >= 0).
 //   - use_prior_turn_signal returns one of its two requests or EMPTY; overwrite_turn_signal returns
 //     one of its two requests.
 #include <fuzzer/FuzzedDataProvider.h>
@@ -21,12 +24,14 @@ using namespace signalsim;
 namespace {
 
 double position(FuzzedDataProvider& in) {
-  // Mostly route-sized values on a coarse grid (ties and boundaries), sometimes any double
-  // (NaN, infinities, huge values).
-  switch (in.ConsumeIntegralInRange<int>(0, 3)) {
+  // Mostly route-sized values on a coarse grid (ties and boundaries), sometimes any finite double
+  // (ConsumeFloatingPoint: huge values) or one of NaN, +-infinity, -0.0, denorm_min
+  // (special_double, fuzz_common.hpp).
+  switch (in.ConsumeIntegralInRange<int>(0, 4)) {
     case 0: return in.ConsumeIntegralInRange<int>(-40, 40) * 0.5;
     case 1: return in.ConsumeFloatingPointInRange<double>(-500.0, 500.0);
     case 2: return in.ConsumeFloatingPoint<double>();
+    case 3: return signalsim::fuzz::special_double(in);
     default: return 0.0;
   }
 }
@@ -53,9 +58,10 @@ bool same(const TurnSignalInfo& a, const TurnSignalInfo& b) {
 }
 
 bool is_valid(const TurnSignalInfo& info, const EgoOnRoute& ego) {
-  const SectionDistances d = section_distances(info, ego);
+  const double to_desired_start = info.desired_start - ego.s_front;  // front-referenced
+  const double to_desired_end = info.desired_end - ego.s_base;       // base_link-referenced
   return (info.turn == TurnIndicator::EnableLeft || info.turn == TurnIndicator::EnableRight) &&
-         d.desired_start <= 0.0 && d.desired_end >= 0.0;
+         to_desired_start <= 0.0 && to_desired_end >= 0.0;
 }
 
 }  // namespace

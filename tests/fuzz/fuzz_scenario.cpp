@@ -2,8 +2,9 @@
 // overrides. The bytes after a line "#%set" are the overrides, one "key=value" per line.
 // Documented failures: InputError (scenario/input_error.hpp). Anything else is a finding.
 //
-// The file is written to <tmp>/scenarios/fuzz.yaml beside links to the repository's config/,
-// sumo_nets/ and scenarios/lights/, so the bundled scenarios' relative paths (the corpus) resolve.
+// The file is written to work_dir()/scenarios/fuzz.yaml (fuzz_common.hpp) beside links to the
+// repository's config/, sumo_nets/ and scenarios/lights/, so the bundled scenarios' relative paths
+// (the corpus) resolve.
 #include <cstdint>
 #include <filesystem>
 #include <string>

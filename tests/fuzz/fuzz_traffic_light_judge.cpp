@@ -20,8 +20,17 @@
 //       EmergencyStop; Pass with a zone only as PassThroughYellow, with the pass judge on and the
 //       latch false before.
 //   I10 not to_be_stopped in APPROACH (no I5) -> Pass; elapsed >= 0; timer only with a stop signal.
+//   I11 the stop-signal timer, tracked here: cleared by a GO_OUT step, a dead-line step and an
+//       evaluated step without a stop signal, started at the first stop-signal step after that. A
+//       stop signal with the timer cleared has elapsed 0; for normal time ranges (|now|, the start
+//       and the hysteresis within 1e6 s) elapsed is max(0, now - start) in integer nanoseconds.
+//   I12 hysteresis: to_be_stopped without the latch before and without a V2I stop needs a stop
+//       signal held strictly longer than stop_time_hysteresis (integer nanoseconds, normal ranges).
+// Doubles: mostly in a step's range, sometimes any finite double (ConsumeFloatingPoint: huge
+// values) or one of NaN, +-infinity, -0.0, denorm_min (special_double, fuzz_common.hpp).
 #include <fuzzer/FuzzedDataProvider.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <optional>
@@ -35,12 +44,19 @@ using namespace signalsim;
 namespace {
 
 double any_double(FuzzedDataProvider& in, double lo, double hi) {
-  switch (in.ConsumeIntegralInRange<int>(0, 7)) {
-    case 0: return in.ConsumeFloatingPoint<double>();  // NaN, inf, huge
+  switch (in.ConsumeIntegralInRange<int>(0, 8)) {
+    case 0: return in.ConsumeFloatingPoint<double>();  // any finite double: huge, tiny
     case 1: return in.ConsumeIntegralInRange<int>(-4, 4) * 0.5;
+    case 2: return fuzz::special_double(in);  // NaN, +-inf, -0.0, denorm_min
     default: return in.ConsumeFloatingPointInRange<double>(lo, hi);
   }
 }
+
+// Times within which the judge's nanoseconds are plain llround(t * 1e9): no saturation at +-4e9 s
+// and exact through the double elapsed it reports.
+constexpr double kNormalTime = 1e6;  // [s]
+bool normal_time(double t) { return std::abs(t) <= kNormalTime; }
+std::int64_t ns(double seconds) { return std::llround(seconds * 1e9); }
 
 SignalElement element(FuzzedDataProvider& in) {
   SignalElement e;
@@ -98,6 +114,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   double v = in.ConsumeFloatingPointInRange<double>(0.0, 20.0);
   // Latched decision as the target tracks it (I8): set when a stop is first inserted.
   std::optional<JudgeDecision> latched;
+  // The stop-signal timer as the target tracks it (I11): cleared, or running since timer_start.
+  bool timer_cleared = true;
+  double timer_start = 0.0;
   for (int step = 0; step < 400 && in.remaining_bytes() > 0; ++step) {
     TrafficLightJudgeInput x;
     // Time: mostly forward by a step, sometimes a jump or any double (then step() may throw).
@@ -168,10 +187,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       FUZZ_ASSERT(r.decision == JudgeDecision::None);
       FUZZ_ASSERT((r.state == JudgeState::Approach) == (dd > 1.0));
       FUZZ_ASSERT(latch_after == latch_before);
+      timer_cleared = true;  // I11
       continue;
     }
     if (dd < -2.0) {  // I3
       FUZZ_ASSERT(r.decision == JudgeDecision::None && r.state == JudgeState::GoOut && latch_after == latch_before);
+      timer_cleared = true;  // I11
       continue;
     }
     // I4: APPROACH, d >= -2: stays APPROACH and decides.
@@ -180,6 +201,26 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     FUZZ_ASSERT(r.verdict != SignalVerdict::NotEvaluated);
     FUZZ_ASSERT(!r.is_stop_signal || r.stop_signal_elapsed >= 0.0);
     FUZZ_ASSERT(r.is_stop_signal || r.stop_signal_elapsed == 0.0);
+
+    // I11: the timer. An evaluated step clears it without a stop signal, starts it with one.
+    if (r.is_stop_signal) {
+      if (timer_cleared) {
+        FUZZ_ASSERT(r.stop_signal_elapsed == 0.0);
+        timer_start = x.now;
+        timer_cleared = false;
+      }
+      const bool normal = normal_time(x.now) && normal_time(timer_start) && normal_time(params.stop_time_hysteresis);
+      if (normal) {
+        const std::int64_t elapsed_ns = std::max<std::int64_t>(0, ns(x.now) - ns(timer_start));
+        FUZZ_ASSERT(r.stop_signal_elapsed == static_cast<double>(elapsed_ns) * 1e-9);
+        // I12: the hysteresis, strictly greater.
+        if (r.to_be_stopped && !latch_before && !r.v2i_stop) FUZZ_ASSERT(elapsed_ns > ns(params.stop_time_hysteresis));
+      }
+    } else {
+      timer_cleared = true;
+    }
+    // I12: without the latch and V2I only a stop signal can ask for a stop.
+    if (r.to_be_stopped && !latch_before && !r.v2i_stop) FUZZ_ASSERT(r.is_stop_signal);
 
     if (r.restart_suppressed) {  // I5
       FUZZ_ASSERT(r.decision == JudgeDecision::Stop && r.stop_point_distance && *r.stop_point_distance == 0.0);
@@ -198,9 +239,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     } else {  // I7
       FUZZ_ASSERT(is_stop_decision && latch_after && r.to_be_stopped);
       FUZZ_ASSERT(r.stop_point_distance && *r.stop_point_distance == dd);
-      if (latch_before && latched) {
-        FUZZ_ASSERT(r.decision == *latched);  // I8: the kind is held
-      } else if (!latch_before) {             // I9: newly inserted
+      if (latch_before) {
+        FUZZ_ASSERT(latched);                 // I8: the target saw the stop that set the latch
+        FUZZ_ASSERT(r.decision == *latched);  //     and the kind is held
+      } else {                                // I9: newly inserted
         const bool stoppable = r.zone == JudgeZone::Stoppable || r.zone == JudgeZone::OptionalZone ||
                                r.zone == JudgeZone::Slow;
         FUZZ_ASSERT(r.decision == (stoppable ? JudgeDecision::Stop : JudgeDecision::EmergencyStop));
