@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "batch/results_table.hpp"
+#include "batch/run_rows.hpp"
 #include "batch/run_spec.hpp"
 #include "report/exit_codes.hpp"
 
@@ -48,20 +49,12 @@ struct BatchResult {
   int exit_code() const;
 };
 
-/// True for the statuses of a run that finished (passed, failed, no_expectations): --resume keeps
-/// such rows; anything else ("error") is run again.
-bool is_finished_status(const std::string& status);
-
 /// Default number of worker processes: the number of cores.
 int default_jobs();
 
 /// Runs the batch; see the file comment. Throws InputError when --resume meets a results.csv of
 /// another batch, std::runtime_error when the output directory cannot be written.
 BatchResult run_batch(const std::vector<RunSpec>& runs, const BatchSettings& settings);
-
-/// A worker's stderr as one line: "signalsim: " prefixes dropped, lines joined with " / ", at most
-/// about 600 characters.
-std::string stderr_one_line(const std::string& text);
 
 /// OUT/results.csv
 std::string results_path(const std::string& out_dir);

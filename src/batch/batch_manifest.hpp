@@ -1,0 +1,32 @@
+// What ties an output directory to one batch: OUT/batch.manifest (every run's scenario, the hash of
+// its bytes and its --set items; --resume keeps earlier rows only when it is unchanged) and the lock
+// that keeps a second batch out of the same --out while one writes there.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "batch/run_spec.hpp"
+
+namespace signalsim {
+
+/// The manifest text: one line per run (index, scenario, the FNV-1a hash of the scenario file's
+/// bytes, every --set), after a "signalsim batch manifest 1" line.
+std::string batch_manifest(const std::vector<RunSpec>& runs);
+
+/// OUT/batch.manifest
+std::string manifest_path(const std::string& out_dir);
+
+/// flock on OUT/.lock for as long as it lives; throws InputError when another batch holds it.
+class OutputLock {
+ public:
+  explicit OutputLock(const std::string& out_dir);
+  ~OutputLock();
+  OutputLock(const OutputLock&) = delete;
+  OutputLock& operator=(const OutputLock&) = delete;
+
+ private:
+  int fd_ = -1;
+};
+
+}  // namespace signalsim

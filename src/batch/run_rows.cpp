@@ -1,0 +1,138 @@
+// A run's row of results.csv from its worker's end and its run directory (run_rows.hpp).
+#include "batch/run_rows.hpp"
+
+#include <cctype>
+#include <filesystem>
+
+#include "batch/run_outputs.hpp"
+#include "batch/text_format.hpp"
+#include "report/atomic_file.hpp"
+#include "report/metric_columns.hpp"
+
+namespace signalsim {
+namespace fs = std::filesystem;
+namespace {
+
+// Status, expectations and metrics from a finished worker's summary.json.
+void read_summary(ResultRow& row, const RunSpec& run, const std::string& dir) {
+  const auto summary = read_json_file((fs::path(dir) / "summary.json").string());
+  const std::string status = summary.value("status", "");
+  if (!is_finished_status(status)) {
+    row.cells["status"] = "error";
+    row.cells["error"] = summary.value("error", "summary.json status '" + status + "'");
+    return;
+  }
+  row.cells["status"] = status;
+  int passed = 0, total = 0;
+  std::string failed;
+  if (summary.contains("expectations"))
+    for (const auto& e : summary["expectations"]) {
+      ++total;
+      if (e.value("passed", false)) ++passed;
+      else failed += (failed.empty() ? "" : "; ") + e.value("expectation", std::string("?"));
+    }
+  row.cells["expectations_passed"] = std::to_string(passed);
+  row.cells["expectations_total"] = std::to_string(total);
+  if (!failed.empty()) row.cells["failed_expectations"] = failed;
+  nlohmann::ordered_json metrics;
+  if (summary.contains("metrics")) {
+    metrics = summary["metrics"];
+  } else {
+    // summary.json without "metrics" (written before outputs carried them): compute them here and
+    // leave them beside it as metrics.json, where tools/plot looks too.
+    try {
+      metrics = metrics_from_run_dir(dir, run.scenario, run.set);
+      write_file_atomically((fs::path(dir) / "metrics.json").string(), metrics.dump(2) + "\n");
+    } catch (const std::exception&) {
+      metrics = nullptr;
+    }
+  }
+  for (const auto& [column, text] : flatten_metrics(metrics))
+    if (!text.empty()) row.cells.emplace(column, text);
+}
+
+}  // namespace
+
+bool is_finished_status(const std::string& status) {
+  return status == "passed" || status == "failed" || status == "no_expectations";
+}
+
+std::string run_dir_name(const RunSpec& run, std::size_t total) {
+  int width = 4;
+  for (std::size_t n = total; n >= 10000; n /= 10) ++width;
+  std::string name;
+  for (const char c : run.name) name += (std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-') ? c : '_';
+  return format_text("runs/%0*zu-", width, run.index) + name;
+}
+
+std::string stderr_one_line(const std::string& text) {
+  std::string out, line;
+  auto flush = [&] {
+    while (!line.empty() && std::isspace(static_cast<unsigned char>(line.back()))) line.pop_back();
+    std::size_t start = 0;
+    while (start < line.size() && std::isspace(static_cast<unsigned char>(line[start]))) ++start;
+    line.erase(0, start);
+    if (line.rfind("signalsim: ", 0) == 0) line.erase(0, 11);
+    if (!line.empty()) out += (out.empty() ? "" : " / ") + line;
+    line.clear();
+  };
+  for (const char c : text) {
+    if (c == '\n') flush();
+    else line += c;
+  }
+  flush();
+  if (out.size() > 600) out = out.substr(0, 600) + "...";
+  return out;
+}
+
+std::string describe_run(const RunSpec& run) {
+  std::string out = "run " + std::to_string(run.index) + " " + run.name;
+  for (const auto& [key, value] : run.values) out += " " + key + "=" + value;
+  return out;
+}
+
+ResultRow make_row(const RunSpec& run, const std::string& out_dir, const std::string& run_dir, double timeout,
+                   const ProcessResult& result) {
+  ResultRow row;
+  row.run = run.index;
+  row.cells["scenario"] = run.name;
+  row.cells["file"] = run.scenario;
+  for (const auto& [key, value] : run.values) row.cells[key] = value;
+  row.cells["run_dir"] = run_dir;
+  row.cells["wall_time"] = format_text("%.2f", result.wall);
+  const std::string dir = (fs::path(out_dir) / run_dir).string();
+  const std::string message = stderr_one_line(result.stderr_text);
+  auto error = [&](const std::string& what) {
+    row.cells["status"] = "error";
+    row.cells["error"] = what;
+  };
+  if (result.timed_out) {
+    error(format_text("timed out: still running after the %g s limit (worker killed)", timeout));
+  } else if (!result.exited) {
+    error(result.signal ? "worker killed by " + signal_name(result.signal) + (message.empty() ? "" : ": " + message)
+                        : "worker failed: " + message);
+  } else if (result.exit_code == 0 || result.exit_code == 1) {
+    try {
+      read_summary(row, run, dir);
+    } catch (const std::exception& e) {
+      error(std::string("exit code ") + std::to_string(result.exit_code) + " but " + e.what());
+    }
+  } else {
+    error(message.empty() ? "exit code " + std::to_string(result.exit_code) : message);
+  }
+  return row;
+}
+
+ResultRow load_error_row(const RunSpec& run) {
+  ResultRow row;
+  row.run = run.index;
+  row.cells["scenario"] = run.name;
+  row.cells["file"] = run.scenario;
+  for (const auto& [key, value] : run.values) row.cells[key] = value;
+  row.cells["wall_time"] = "0.00";
+  row.cells["status"] = "error";
+  row.cells["error"] = stderr_one_line(run.load_error);
+  return row;
+}
+
+}  // namespace signalsim
