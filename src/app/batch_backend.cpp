@@ -46,6 +46,7 @@ BackendRun run_with_backend(const std::vector<RunSpec>& runs, BatchSettings sett
                                          : nullptr;
     if (slurm_only) throw std::runtime_error(std::string(slurm_only) + " needs --backend slurm");
     refuse_while_slurm_job_runs(settings.out_dir);  // its tasks write into the same run directories
+    forget_slurm_job(settings.out_dir);
     BackendRun run{run_batch(runs, settings)};
     if (!settings.quiet || run.result.interrupted)
       std::printf("%s\n", batch_summary(run.result, settings.out_dir).c_str());

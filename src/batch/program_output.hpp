@@ -19,9 +19,10 @@ struct ProgramOutput {
 /// "" when there is none.
 std::string find_on_path(const std::string& program);
 
-/// Runs argv (argv[0] looked up on PATH) with stdin on /dev/null and `extra_env` ("NAME=value")
-/// added to this process's environment; waits for it and returns what it printed. Signals do not
-/// stop the wait (the caller polls its own interrupt flag between calls).
+/// Runs argv (argv[0] looked up on PATH) in a process group of its own (Ctrl-C on the terminal does
+/// not reach it), with stdin on /dev/null and `extra_env` ("NAME=value") added to this process's
+/// environment; waits for it and returns what it printed. Signals do not stop the wait (the caller
+/// polls its own interrupt flag between calls).
 ProgramOutput run_program(const std::vector<std::string>& argv, const std::vector<std::string>& extra_env = {});
 
 }  // namespace signalsim

@@ -35,16 +35,18 @@ std::string plural(std::size_t n, const char* word) { return std::to_string(n) +
 void refuse_while_slurm_job_runs(const std::string& out_dir) {
   const auto job = read_job_record(out_dir);
   if (!job || find_on_path("squeue").empty()) return;
+  // A controller that does not answer runs no task of it (and a Slurm submission fails anyway).
   const QueueReading reading = read_queue(job->id);
-  if (!reading.ok)
-    throw InputError(out_dir, 0,
-                     "cannot tell whether Slurm job " + job->id + " (slurm/job.json) still writes there: " +
-                         reading.error);
   for (const auto& [task, state] : reading.tasks)
     if (is_active_task_state(state))
       throw InputError(out_dir, 0,
                        "Slurm job " + job->id + " still has " + describe_task_states(reading.tasks) +
                            " writing there: wait for it (--collect), or cancel it (scancel " + job->id + ") first");
+}
+
+void forget_slurm_job(const std::string& out_dir) {
+  std::error_code ignored;
+  if (fs::exists(slurm_dir(out_dir), ignored)) remove_job_record(out_dir);
 }
 
 SlurmOutcome run_batch_on_slurm(const std::vector<RunSpec>& runs, const BatchSettings& settings,
@@ -62,6 +64,7 @@ SlurmOutcome run_batch_on_slurm(const std::vector<RunSpec>& runs, const BatchSet
   submission.time = slurm.time;
   submission.extra_args = slurm.sbatch_args;
   check_submission(submission);  // a bad --partition is refused before OUT changes
+  const SlurmStopSignals signals;  // from here, Ctrl-C ends in the wait below, which cancels the job
 
   SlurmOutcome outcome;
   BatchStart batch = start_batch(runs, settings);
@@ -93,6 +96,11 @@ SlurmOutcome run_batch_on_slurm(const std::vector<RunSpec>& runs, const BatchSet
   fs::create_directories(fs::path(slurm_dir(out)) / "logs");
   submission.script = write_task_script(out, self_executable());
   submission.tasks = list.chunks.size();
+  if (SlurmStopSignals::stop_requested()) {  // Ctrl-C before anything was submitted
+    progress.end();
+    outcome.result = finish_batch(batch, settings, false);
+    return outcome;
+  }
   const SlurmJob job{submit_array(submission), list.chunks.size()};
   write_job_record(out, job);
   outcome.submitted = true;
@@ -104,7 +112,7 @@ SlurmOutcome run_batch_on_slurm(const std::vector<RunSpec>& runs, const BatchSet
                 slurm.max_parallel > 0 ? (", at most " + std::to_string(slurm.max_parallel) + " at a time").c_str() : "");
   std::fflush(stdout);
 
-  if (!slurm.wait) {
+  if (!slurm.wait && !SlurmStopSignals::stop_requested()) {
     outcome.waited = false;
     progress.end();
     outcome.result = finish_batch(batch, settings, true);

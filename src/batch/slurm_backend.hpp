@@ -49,7 +49,12 @@ SlurmOutcome run_batch_on_slurm(const std::vector<RunSpec>& runs, const BatchSet
 BatchResult collect_slurm_batch(const std::vector<RunSpec>& runs, const BatchSettings& settings);
 
 /// Throws InputError when OUT/slurm/job.json names a job that still has tasks pending or running
-/// (its tasks write into OUT). Does nothing without a record, or without squeue on PATH.
+/// (its tasks write into OUT). Does nothing without a record, without squeue on PATH, or when squeue
+/// cannot answer.
 void refuse_while_slurm_job_runs(const std::string& out_dir);
+
+/// A local batch into OUT: the recorded (ended) Slurm job no longer describes OUT's runs, so that a
+/// later --collect does not merge it over the local rows.
+void forget_slurm_job(const std::string& out_dir);
 
 }  // namespace signalsim

@@ -20,29 +20,9 @@ using Clock = std::chrono::steady_clock;
 
 volatile std::sig_atomic_t g_stop = 0;
 extern "C" void on_stop_signal(int) { g_stop = 1; }
-
-// SIGINT and SIGTERM set g_stop while the object lives (no SA_RESTART: a sleep wakes up).
-class StopSignals {
- public:
-  StopSignals() {
-    g_stop = 0;
-    struct sigaction sa {};
-    sa.sa_handler = on_stop_signal;
-    sigemptyset(&sa.sa_mask);
-    sigaction(SIGINT, &sa, &old_int_);
-    sigaction(SIGTERM, &sa, &old_term_);
-  }
-  ~StopSignals() {
-    sigaction(SIGINT, &old_int_, nullptr);
-    sigaction(SIGTERM, &old_term_, nullptr);
-  }
-  StopSignals(const StopSignals&) = delete;
-  StopSignals& operator=(const StopSignals&) = delete;
-
- private:
-  struct sigaction old_int_ {};
-  struct sigaction old_term_ {};
-};
+int g_depth = 0;
+struct sigaction g_old_int {};
+struct sigaction g_old_term {};
 
 // The runs of each chunk still without a row.
 struct Waiting {
@@ -53,6 +33,24 @@ struct Waiting {
 std::string task_name(const SlurmJob& job, std::size_t task) { return job.id + "_" + std::to_string(task); }
 
 }  // namespace
+
+SlurmStopSignals::SlurmStopSignals() {
+  if (g_depth++ > 0) return;
+  g_stop = 0;
+  struct sigaction sa {};
+  sa.sa_handler = on_stop_signal;  // no SA_RESTART: a sleep wakes up
+  sigemptyset(&sa.sa_mask);
+  sigaction(SIGINT, &sa, &g_old_int);
+  sigaction(SIGTERM, &sa, &g_old_term);
+}
+
+SlurmStopSignals::~SlurmStopSignals() {
+  if (--g_depth > 0) return;
+  sigaction(SIGINT, &g_old_int, nullptr);
+  sigaction(SIGTERM, &g_old_term, nullptr);
+}
+
+bool SlurmStopSignals::stop_requested() { return g_stop != 0; }
 
 ResultRow lost_run_row(const RunSpec& run, const std::string& out_dir, const std::string& run_dir,
                        const std::string& task, const std::string& state) {
@@ -80,7 +78,7 @@ ResultRow lost_run_row(const RunSpec& run, const std::string& out_dir, const std
 
 bool wait_for_slurm_job(BatchStart& batch, const BatchSettings& settings, const ChunkList& list, const SlurmJob& job,
                         BatchProgress& progress, bool cancel_on_interrupt) {
-  const StopSignals signals;
+  const SlurmStopSignals signals;
   Waiting waiting;
   waiting.open.resize(list.chunks.size());
   for (std::size_t task = 0; task < list.chunks.size(); ++task)
