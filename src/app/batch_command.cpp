@@ -2,6 +2,7 @@
 #include <cstdio>
 #include <memory>
 
+#include "app/batch_backend.hpp"
 #include "app/batch_cli.hpp"
 #include "app/command.hpp"
 #include "app/strict_params_flag.hpp"
@@ -16,6 +17,7 @@ Command add_batch_command(CLI::App& app) {
     std::vector<std::string> paths;
     std::vector<std::string> set;
     BatchCliOptions batch;
+    BackendCliOptions backend;
   };
   auto o = std::make_shared<Options>();
   CLI::App* sub = app.add_subcommand("batch", "Run a suite of scenarios (files or directories) in parallel; results.csv");
@@ -23,13 +25,13 @@ Command add_batch_command(CLI::App& app) {
   sub->add_option("--set", o->set, "Override for every run: a scenario key or a parameter (key=value); repeatable");
   add_batch_options(sub, o->batch, "out/batch", true);
   add_strict_params_flag(sub, o->set);
+  add_backend_options(sub, o->backend);
   return {sub, [o]() -> int {
             try {
               const std::vector<RunSpec> runs = suite_runs(scenario_files(o->paths), o->set);
               const BatchSettings settings = to_settings(o->batch, "out/batch", 300.0);
-              const BatchResult result = run_batch(runs, settings);
-              if (!settings.quiet || result.interrupted) std::printf("%s\n", batch_summary(result, settings.out_dir).c_str());
-              return result.exit_code();
+              const BackendRun run = run_with_backend(runs, settings, o->batch, o->backend);
+              return run.merged ? run.result.exit_code() : 0;
             } catch (const std::exception& e) {
               return report_bad_input(e.what());
             }

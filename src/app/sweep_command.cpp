@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <memory>
 
+#include "app/batch_backend.hpp"
 #include "app/batch_cli.hpp"
 #include "app/command.hpp"
 #include "app/plot_tool.hpp"
@@ -18,6 +19,7 @@ Command add_sweep_command(CLI::App& app) {
   struct Options {
     std::string file;
     BatchCliOptions batch;
+    BackendCliOptions backend;
     bool plot = false;
     bool list = false;
   };
@@ -27,6 +29,7 @@ Command add_sweep_command(CLI::App& app) {
   add_batch_options(sub, o->batch, "the file's out:, else out/<sweep name>", true);
   sub->add_flag("--plot", o->plot, "Draw the file's plot: (a heat map of a metric over two swept keys) with tools/plot");
   sub->add_flag("--list", o->list, "Print the runs and exit without running them");
+  add_backend_options(sub, o->backend);
   return {sub, [o]() -> int {
             try {
               const Sweep sweep = load_sweep(o->file);
@@ -45,8 +48,9 @@ Command add_sweep_command(CLI::App& app) {
                 }
                 return 0;
               }
-              const BatchResult result = run_batch(runs, settings);
-              if (!settings.quiet || result.interrupted) std::printf("%s\n", batch_summary(result, settings.out_dir).c_str());
+              const BackendRun run = run_with_backend(runs, settings, o->batch, o->backend);
+              if (!run.merged) return 0;  // --no-wait: submitted; --collect merges (and --plot draws) later
+              const BatchResult& result = run.result;
               if (o->plot && !result.interrupted) {
                 // One picture per plot: entry (tools/plot's defaults without one).
                 const std::vector<SweepPlot> plots = sweep.plots.empty() ? std::vector<SweepPlot>{{}} : sweep.plots;

@@ -12,6 +12,7 @@
 #include "batch/process_pool.hpp"
 #include "batch/results_file.hpp"
 #include "batch/run_outputs.hpp"
+#include "batch/run_row_file.hpp"
 #include "batch/run_rows.hpp"
 #include "batch/text_format.hpp"
 #include "scenario/input_error.hpp"
@@ -50,16 +51,18 @@ int default_jobs() {
 
 std::string results_path(const std::string& out_dir) { return (fs::path(out_dir) / "results.csv").string(); }
 
-BatchResult run_batch(const std::vector<RunSpec>& runs, const BatchSettings& settings) {
-  const auto start = Clock::now();
-  BatchResult result;
+BatchStart start_batch(const std::vector<RunSpec>& runs, const BatchSettings& settings) {
+  BatchStart batch;
+  BatchResult& result = batch.result;
   result.total = runs.size();
   fs::create_directories(fs::path(settings.out_dir) / "runs");
-  const OutputLock lock(settings.out_dir);
+  batch.lock = std::make_unique<OutputLock>(settings.out_dir);
   std::signal(SIGPIPE, SIG_IGN);  // a closed stdout (| head) must not kill the batch
   const std::string csv = results_path(settings.out_dir);
   const std::string manifest_file = manifest_path(settings.out_dir);
   const std::string manifest = batch_manifest(runs);
+  batch.run_dirs.resize(runs.size());
+  for (const RunSpec& run : runs) batch.run_dirs[run.index] = run_dir_name(run, runs.size());
 
   if (settings.resume && fs::exists(csv)) {
     if (!fs::exists(manifest_file) || read_text_file(manifest_file) != manifest)
@@ -75,78 +78,111 @@ BatchResult run_batch(const std::vector<RunSpec>& runs, const BatchSettings& set
       if (status != row.cells.end() && is_finished_status(status->second))
         result.rows[index] = std::move(row);  // error rows are run again
     }
+    // A run finished by a back-end that leaves a row file in its run directory (Slurm) but whose
+    // row never reached results.csv (the merge did not happen: --no-wait, Ctrl-C) is done too.
+    for (const RunSpec& run : runs) {
+      if (result.rows.count(run.index)) continue;
+      auto row = read_row_file(settings.out_dir, batch.run_dirs[run.index]);
+      if (row && row->run == run.index && row_matches(*row, run) && is_finished_status(row->cells["status"]))
+        result.rows[run.index] = std::move(*row);
+    }
     result.skipped = result.rows.size();
   }
   write_file_atomically(manifest_file, manifest);
-  ResultsFile results_file(csv);
-  if (!results_file.write(results_csv(settings.swept, result.rows))) throw std::runtime_error(results_file.error());
+  batch.results_file = std::make_unique<ResultsFile>(csv);
+  if (!batch.results_file->write(results_csv(settings.swept, result.rows)))
+    throw std::runtime_error(batch.results_file->error());
 
-  std::vector<ProcessJob> jobs;
-  std::vector<const RunSpec*> not_loaded;
-  std::vector<std::string> run_dirs(runs.size());
-  const std::string self = self_executable();
   for (const RunSpec& run : runs) {
-    run_dirs[run.index] = run_dir_name(run, runs.size());
     if (result.rows.count(run.index)) continue;
-    const fs::path dir = fs::path(settings.out_dir) / run_dirs[run.index];
-    fs::remove_all(dir);  // a stale or half-written run of an earlier batch
-    if (!run.load_error.empty()) {
-      not_loaded.push_back(&run);  // an error row with the file's message; no worker
-      continue;
-    }
+    fs::remove_all(fs::path(settings.out_dir) / batch.run_dirs[run.index]);  // a stale or half-written run
+    if (!run.load_error.empty()) batch.not_loaded.push_back(&run);  // an error row with the file's message
+    else batch.to_run.push_back(&run);
+  }
+  batch.last_write = Clock::now();
+  return batch;
+}
+
+bool run_in_worker_pool(const std::vector<const RunSpec*>& runs, const std::vector<std::string>& run_dirs,
+                        const BatchSettings& settings, const std::function<void(const RunSpec&, ResultRow)>& on_row,
+                        const std::function<void()>& on_tick) {
+  std::vector<ProcessJob> jobs;
+  std::vector<const RunSpec*> by_job;
+  const std::string self = self_executable();
+  for (const RunSpec* run : runs) {
     ProcessJob job;
-    job.id = run.index;
+    job.id = by_job.size();
     job.timeout = settings.timeout;
-    job.argv = {self, "run", run.scenario, "--out", dir.string(), "--quiet"};
-    for (const std::string& item : run.set) {
+    job.argv = {self, "run", run->scenario, "--out", (fs::path(settings.out_dir) / run_dirs[run->index]).string(),
+                "--quiet"};
+    for (const std::string& item : run->set) {
       job.argv.push_back("--set");
       job.argv.push_back(item);
     }
     jobs.push_back(std::move(job));
+    by_job.push_back(run);
   }
-  if (!settings.quiet && result.skipped > 0)
-    std::printf("resuming: %zu of %zu runs already done, %zu to run\n", result.skipped, runs.size(), jobs.size());
-
-  BatchProgress progress(jobs.size() + not_loaded.size(), settings.quiet);
-  for (const RunSpec* run : not_loaded) {
-    ResultRow row = load_error_row(*run);
-    progress.finished(*run, row);
-    result.rows[run->index] = std::move(row);
-  }
-  auto last_write = Clock::now();
-  const bool completed = run_processes(
+  return run_processes(
       jobs, settings.jobs,
       [&](const ProcessJob& job, const ProcessResult& process) {
-        const RunSpec& run = runs[job.id];
-        ResultRow row = make_row(run, settings.out_dir, run_dirs[job.id], settings.timeout, process);
-        progress.finished(run, row);
-        result.rows[job.id] = std::move(row);
-        // Each run's own summary.json is already on disk; results.csv is rewritten at most once a
-        // second (and at the end), so a batch of many thousands of runs stays linear.
-        // A rewrite that fails (a full disk) stops nothing: the previous complete file stays, the
-        // batch goes on and tries again with the next finished run.
-        if (Clock::now() - last_write >= std::chrono::seconds(1) || !results_file.error().empty()) {
-          const bool had_error = !results_file.error().empty();
-          if (!results_file.write(results_csv(settings.swept, result.rows)) && !had_error)
-            std::fprintf(stderr, "signalsim: %s; the batch goes on and writes it again later\n",
-                         results_file.error().c_str());
-          last_write = Clock::now();
-        }
+        const RunSpec& run = *by_job[job.id];
+        on_row(run, make_row(run, settings.out_dir, run_dirs[run.index], settings.timeout, process));
       },
-      [&] { progress.tick(); });
-  progress.end();
+      on_tick);
+}
+
+void rewrite_results(BatchStart& batch, const BatchSettings& settings, bool now) {
+  // Each run's own summary.json is already on disk; results.csv is rewritten at most once a second
+  // (and at the end), so a batch of many thousands of runs stays linear.
+  // A rewrite that fails (a full disk) stops nothing: the previous complete file stays, the batch
+  // goes on and tries again with the next finished run.
+  ResultsFile& file = *batch.results_file;
+  if (!now && Clock::now() - batch.last_write < std::chrono::seconds(1) && file.error().empty()) return;
+  const bool had_error = !file.error().empty();
+  if (!file.write(results_csv(settings.swept, batch.result.rows)) && !had_error)
+    std::fprintf(stderr, "signalsim: %s; the batch goes on and writes it again later\n", file.error().c_str());
+  batch.last_write = Clock::now();
+}
+
+BatchResult finish_batch(BatchStart& batch, const BatchSettings& settings, bool completed) {
+  BatchResult& result = batch.result;
   result.interrupted = !completed;
   const std::string table = results_csv(settings.swept, result.rows);
-  if (!results_file.write(table)) {
+  if (!batch.results_file->write(table)) {
     // The finished rows must not be lost: the table goes to stdout instead, after one line that says so.
-    result.results_error = results_file.error();
+    result.results_error = batch.results_file->error();
     std::fprintf(stderr, "signalsim: %s; the finished rows follow on stdout\n", result.results_error.c_str());
     std::fwrite(table.data(), 1, table.size(), stdout);
     std::fflush(stdout);
   }
   count(result);
-  result.wall = std::chrono::duration<double>(Clock::now() - start).count();
+  result.wall = std::chrono::duration<double>(Clock::now() - batch.start).count();
   return result;
+}
+
+BatchResult run_batch(const std::vector<RunSpec>& runs, const BatchSettings& settings) {
+  BatchStart batch = start_batch(runs, settings);
+  BatchResult& result = batch.result;
+  if (!settings.quiet && result.skipped > 0)
+    std::printf("resuming: %zu of %zu runs already done, %zu to run\n", result.skipped, runs.size(),
+                batch.to_run.size());
+
+  BatchProgress progress(batch.to_run.size() + batch.not_loaded.size(), settings.quiet);
+  for (const RunSpec* run : batch.not_loaded) {
+    ResultRow row = load_error_row(*run);
+    progress.finished(*run, row);
+    result.rows[run->index] = std::move(row);
+  }
+  const bool completed = run_in_worker_pool(
+      batch.to_run, batch.run_dirs, settings,
+      [&](const RunSpec& run, ResultRow row) {
+        progress.finished(run, row);
+        result.rows[run.index] = std::move(row);
+        rewrite_results(batch, settings);
+      },
+      [&] { progress.tick(); });
+  progress.end();
+  return finish_batch(batch, settings, completed);
 }
 
 std::string batch_summary(const BatchResult& result, const std::string& out_dir) {

@@ -14,11 +14,18 @@
 //     the previous file and is tried again) with every finished row, ordered by run index
 //   progress: one updating line on a terminal, one plain line per finished run otherwise
 //   Ctrl-C: start nothing more, stop the workers, keep every finished row; exit code 130
+// run_batch is start_batch + run_in_worker_pool + finish_batch; another back-end (Slurm,
+// slurm_backend.hpp) calls start_batch and finish_batch around its own way of running the runs.
 #pragma once
 
+#include <chrono>
+#include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "batch/batch_manifest.hpp"
+#include "batch/results_file.hpp"
 #include "batch/results_table.hpp"
 #include "batch/run_rows.hpp"
 #include "batch/run_spec.hpp"
@@ -55,6 +62,38 @@ int default_jobs();
 /// Runs the batch; see the file comment. Throws InputError when --resume meets a results.csv of
 /// another batch, std::runtime_error when the output directory cannot be written.
 BatchResult run_batch(const std::vector<RunSpec>& runs, const BatchSettings& settings);
+
+/// A batch under way, as start_batch leaves it for a back-end.
+struct BatchStart {
+  std::unique_ptr<OutputLock> lock;           ///< OUT is this batch's until finish_batch
+  std::unique_ptr<ResultsFile> results_file;  ///< OUT/results.csv
+  BatchResult result;                         ///< total; the rows kept by --resume (skipped)
+  std::vector<std::string> run_dirs;          ///< "runs/NNNN-name" by run index
+  std::vector<const RunSpec*> to_run;         ///< loaded runs without a kept row, by index (run dirs removed)
+  std::vector<const RunSpec*> not_loaded;     ///< scenario files that did not load: error rows, no worker
+  std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
+  std::chrono::steady_clock::time_point last_write = std::chrono::steady_clock::now();
+};
+
+/// Takes OUT's lock, keeps the finished rows of an earlier results.csv (and of run directories'
+/// row files, run_row_file.hpp) on --resume, writes OUT/batch.manifest and results.csv with the kept
+/// rows, removes the run directories of the runs still to run. Throws like run_batch.
+BatchStart start_batch(const std::vector<RunSpec>& runs, const BatchSettings& settings);
+
+/// Runs `runs` in worker processes (`signalsim run ... --out OUT/RUN_DIR`), at most settings.jobs at
+/// a time with settings.timeout each; hands every finished run's row to `on_row` as it ends, calls
+/// `on_tick` about every 200 ms. False when interrupted (SIGINT, SIGTERM): see process_pool.hpp.
+bool run_in_worker_pool(const std::vector<const RunSpec*>& runs, const std::vector<std::string>& run_dirs,
+                        const BatchSettings& settings, const std::function<void(const RunSpec&, ResultRow)>& on_row,
+                        const std::function<void()>& on_tick);
+
+/// Rewrites results.csv with every row so far, at most once a second unless `now`; a failed
+/// rewrite (a full disk) is reported once and tried again on the next call.
+void rewrite_results(BatchStart& batch, const BatchSettings& settings, bool now = false);
+
+/// The last results.csv (the rows go to stdout, after one line on stderr, when it cannot be
+/// written), the counts and the wall time. `completed` false: interrupted.
+BatchResult finish_batch(BatchStart& batch, const BatchSettings& settings, bool completed);
 
 /// OUT/results.csv
 std::string results_path(const std::string& out_dir);

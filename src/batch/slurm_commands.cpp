@@ -1,0 +1,103 @@
+// sbatch, squeue, scancel and scontrol as functions (slurm_commands.hpp).
+#include "batch/slurm_commands.hpp"
+
+#include <stdexcept>
+
+#include "batch/program_output.hpp"
+#include "batch/run_rows.hpp"
+
+namespace signalsim {
+
+void require_slurm_programs(const std::vector<std::string>& programs) {
+  for (const std::string& program : programs)
+    if (find_on_path(program).empty())
+      throw std::runtime_error("--backend slurm: " + program +
+                               " is not on PATH (install slurm-client, or load the cluster's Slurm module)");
+}
+
+std::vector<std::string> sbatch_argv(const ArraySubmission& s) {
+  std::vector<std::string> argv = {"sbatch", "--parsable", "--job-name=" + s.job_name,
+                                   "--array=0-" + std::to_string(s.tasks - 1) +
+                                       (s.max_parallel > 0 ? "%" + std::to_string(s.max_parallel) : ""),
+                                   "--cpus-per-task=" + std::to_string(s.cpus_per_task), "--output=" + s.output};
+  if (!s.partition.empty()) argv.push_back("--partition=" + s.partition);
+  if (!s.time.empty()) argv.push_back("--time=" + s.time);
+  argv.insert(argv.end(), s.extra_args.begin(), s.extra_args.end());
+  argv.push_back(s.script);
+  return argv;
+}
+
+namespace {
+
+// Throws "sbatch refused the job: <its stderr on one line>" unless sbatch exited 0.
+void throw_unless_accepted(const ProgramOutput& out) {
+  if (out.started && out.exit_code == 0) return;
+  // sbatch's own lines start "sbatch: error: "; stderr_one_line joins them and drops our prefix only.
+  std::string message = stderr_one_line(out.err);
+  for (std::size_t at; (at = message.find("sbatch: error: ")) != std::string::npos;) message.erase(at, 15);
+  throw std::runtime_error("sbatch refused the job: " +
+                           (message.empty() ? "exit code " + std::to_string(out.exit_code) : message));
+}
+
+}  // namespace
+
+void check_submission(const ArraySubmission& submission) {
+  ArraySubmission probe = submission;
+  probe.tasks = 1;
+  probe.max_parallel = 0;
+  std::vector<std::string> argv = sbatch_argv(probe);
+  argv.back() = "--wrap=true";  // instead of the script, which is not written yet
+  argv.insert(argv.begin() + 1, "--test-only");
+  throw_unless_accepted(run_program(argv));
+}
+
+std::string submit_array(const ArraySubmission& submission) {
+  const ProgramOutput out = run_program(sbatch_argv(submission));
+  throw_unless_accepted(out);
+  // --parsable: "JOBID" or "JOBID;CLUSTER".
+  std::string id = out.out.substr(0, out.out.find_first_of(";\n"));
+  while (!id.empty() && (id.back() == '\r' || id.back() == ' ')) id.pop_back();
+  if (id.empty() || id.find_first_not_of("0123456789") != std::string::npos)
+    throw std::runtime_error("sbatch printed no job id: '" + stderr_one_line(out.out) + "'");
+  return id;
+}
+
+QueueReading read_queue(const std::string& job_id) {
+  // SLURM_BITSTR_LEN=0: the pending part of an array ("3-7,9%2") is printed whole, never cut at 64
+  // characters.
+  const ProgramOutput out = run_program(
+      {"squeue", "--noheader", "--jobs=" + job_id, "--states=all", "--format=%K|%T"}, {"SLURM_BITSTR_LEN=0"});
+  QueueReading reading;
+  if (out.started && out.exit_code == 0) {
+    reading.ok = true;
+    reading.tasks = parse_task_states(out.out);
+  } else if (out.started && out.err.find("Invalid job id") != std::string::npos) {
+    reading.ok = true;  // purged (older than MinJobAge): nothing of it is pending or running
+  } else {
+    reading.error = "squeue: " + stderr_one_line(out.err.empty() ? out.out : out.err);
+  }
+  return reading;
+}
+
+std::string cancel_job(const std::string& job_id) {
+  const ProgramOutput out = run_program({"scancel", job_id});
+  if (out.started && out.exit_code == 0) return "";
+  return "scancel " + job_id + ": " + stderr_one_line(out.err);
+}
+
+std::size_t max_array_size(std::size_t fallback) {
+  const ProgramOutput out = run_program({"scontrol", "show", "config"});
+  if (!out.started || out.exit_code != 0) return fallback;
+  const std::size_t key = out.out.find("MaxArraySize");
+  if (key == std::string::npos) return fallback;
+  const std::size_t eq = out.out.find('=', key);
+  if (eq == std::string::npos) return fallback;
+  try {
+    const unsigned long value = std::stoul(out.out.substr(eq + 1));
+    return value > 0 ? value : fallback;
+  } catch (const std::exception&) {
+    return fallback;
+  }
+}
+
+}  // namespace signalsim

@@ -1,0 +1,56 @@
+// The Slurm commands the back-end runs (sbatch, squeue, scancel, scontrol), each turned into a value
+// or one line of error text. Nothing here knows signalsim's runs (slurm_backend.hpp does).
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "batch/slurm_queue.hpp"
+
+namespace signalsim {
+
+/// Throws std::runtime_error "--backend slurm: sbatch is not on PATH (...)" for the first of
+/// `programs` that is missing.
+void require_slurm_programs(const std::vector<std::string>& programs);
+
+/// One job array to submit.
+struct ArraySubmission {
+  std::string script;                   ///< the batch script (its path)
+  std::string job_name;                 ///< --job-name
+  std::size_t tasks = 0;                ///< --array=0-(tasks-1)
+  int max_parallel = 0;                 ///< %M; 0: no limit
+  int cpus_per_task = 1;                ///< --cpus-per-task
+  std::string output;                   ///< --output pattern (%A job, %a task)
+  std::string partition;                ///< --partition; "" the cluster's default
+  std::string time;                     ///< --time; "" the partition's default
+  std::vector<std::string> extra_args;  ///< --slurm-arg, passed to sbatch as they are, before the script
+};
+
+/// sbatch's argv for the submission (--parsable first).
+std::vector<std::string> sbatch_argv(const ArraySubmission& submission);
+
+/// Asks sbatch whether it would take the submission (--test-only, one task, no script), so that a
+/// bad --partition, --time or --slurm-arg is refused before anything in OUT changes. Throws like
+/// submit_array.
+void check_submission(const ArraySubmission& submission);
+
+/// Submits; returns the job id. Throws std::runtime_error "sbatch refused the job: <its message>".
+std::string submit_array(const ArraySubmission& submission);
+
+/// The states of the job's array tasks (squeue --states=all). `ok` false when squeue failed (error
+/// holds its message); a job Slurm no longer knows is ok with no task.
+struct QueueReading {
+  bool ok = false;
+  TaskStates tasks;
+  std::string error;
+};
+QueueReading read_queue(const std::string& job_id);
+
+/// scancel JOB; "" or its error message.
+std::string cancel_job(const std::string& job_id);
+
+/// The cluster's MaxArraySize (scontrol show config), `fallback` when it cannot be read.
+std::size_t max_array_size(std::size_t fallback = 1001);
+
+}  // namespace signalsim
