@@ -39,7 +39,8 @@ int main(int argc, char** argv) {
   const std::vector<Command> commands = {add_run_command(app), add_inspect_command(app),
                                          add_countries_command(app),
                                          add_batch_command(app), add_sweep_command(app), add_check_command(app),
-                                         add_compare_command(app), add_generate_command(app), add_schema_command(app)};
+                                         add_compare_command(app), add_generate_command(app), add_schema_command(app),
+                                         add_worker_command(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -14,6 +14,7 @@
 #include "batch/run_outputs.hpp"
 #include "batch/run_rows.hpp"
 #include "batch/text_format.hpp"
+#include "batch/worker_pool.hpp"
 #include "scenario/input_error.hpp"
 #include "report/atomic_file.hpp"
 
@@ -114,8 +115,8 @@ BatchResult run_batch(const std::vector<RunSpec>& runs, const BatchSettings& set
     result.rows[run->index] = std::move(row);
   }
   auto last_write = Clock::now();
-  const bool completed = run_processes(
-      jobs, settings.jobs,
+  const bool completed = run_jobs(
+      jobs, settings.jobs, settings.isolate,
       [&](const ProcessJob& job, const ProcessResult& process) {
         const RunSpec& run = runs[job.id];
         ResultRow row = make_row(run, settings.out_dir, run_dirs[job.id], settings.timeout, process);
