@@ -58,6 +58,8 @@ bool write_reply(const WorkerReply& done) {
 
 // One request: `signalsim run ...` through the run command's own parser and function.
 int run_request(const std::vector<std::string>& args) {
+  if (args.empty() || args.front() != "run")
+    return report_bad_input("worker: a request that is not a `signalsim run` command line");
   CLI::App app{"signalsim worker run"};
   app.require_subcommand(1);
   const Command run = add_run_command(app);
@@ -68,7 +70,6 @@ int run_request(const std::vector<std::string>& args) {
   } catch (const CLI::ParseError& e) {
     return report_bad_input(std::string("worker: ") + e.what());
   }
-  if (!run.sub->parsed()) return report_bad_input("worker: a request that is not a `signalsim run` command line");
   return run.run();
 }
 
