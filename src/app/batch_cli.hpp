@@ -19,13 +19,17 @@ struct BatchCliOptions {
   double timeout = 0.0;  // 0: the sweep file's, else 300 s
   bool resume = false;
   bool quiet = false;
+  bool isolate = false;  // one process per run
 };
 
-/// --out, --jobs, --timeout, --quiet; --resume when `with_resume`.
+/// --out, --jobs, --isolate, --timeout, --quiet; --resume when `with_resume`.
 inline void add_batch_options(CLI::App* sub, BatchCliOptions& o, const std::string& default_out, bool with_resume) {
   sub->add_option("--out", o.out_dir, "Output directory: results.csv and runs/ (default: " + default_out + ")");
   sub->add_option("--jobs,-j", o.jobs, "Worker processes at a time, one SUMO each (default: number of cores)")
       ->check(CLI::Range(1, 4096));
+  sub->add_flag("--isolate", o.isolate,
+                "One process per run (`signalsim run`), as before persistent workers: slower, nothing shared "
+                "between runs");
   sub->add_option("--timeout", o.timeout, "Wall-clock limit per run in seconds (default 300); the run becomes an error row")
       ->check(positive_number());
   if (with_resume)
@@ -42,6 +46,7 @@ inline BatchSettings to_settings(const BatchCliOptions& o, const std::string& de
   s.jobs = o.jobs > 0 ? o.jobs : default_jobs();
   s.timeout = o.timeout > 0 ? o.timeout : default_timeout;
   s.resume = o.resume;
+  s.isolate = o.isolate;
   s.quiet = o.quiet;
   return s;
 }

@@ -1,4 +1,4 @@
-// `signalsim batch PATH...`: a suite of scenarios (files or directories), one worker process per run.
+// `signalsim batch PATH...`: a suite of scenarios (files or directories), run by persistent workers.
 #include <cstdio>
 #include <memory>
 

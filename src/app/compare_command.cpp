@@ -24,7 +24,7 @@
 #include "app/strict_params_flag.hpp"
 #include "batch/comparison.hpp"
 #include "app/plot_tool.hpp"
-#include "batch/process_pool.hpp"
+#include "batch/worker_pool.hpp"
 #include "batch/run_outputs.hpp"
 #include "batch/scenario_files.hpp"
 #include "report/atomic_file.hpp"
@@ -168,7 +168,7 @@ int compare(const CompareOptions& o) {
   }
 
   std::vector<DriverRun> runs(jobs.size());
-  const bool completed = run_processes(jobs, settings.jobs, [&](const ProcessJob& job, const ProcessResult& result) {
+  const bool completed = run_jobs(jobs, settings.jobs, settings.isolate, [&](const ProcessJob& job, const ProcessResult& result) {
     runs[job.id] = driver_run(settings.out_dir, run_dirs[job.id], kDrivers[job.id % 2], result, settings.timeout);
   });
   if (!completed) {

@@ -15,6 +15,7 @@
 #include "batch/run_row_file.hpp"
 #include "batch/run_rows.hpp"
 #include "batch/text_format.hpp"
+#include "batch/worker_pool.hpp"
 #include "scenario/input_error.hpp"
 #include "report/atomic_file.hpp"
 
@@ -122,8 +123,8 @@ bool run_in_worker_pool(const std::vector<const RunSpec*>& runs, const std::vect
     jobs.push_back(std::move(job));
     by_job.push_back(run);
   }
-  return run_processes(
-      jobs, settings.jobs,
+  return run_jobs(
+      jobs, settings.jobs, settings.isolate,
       [&](const ProcessJob& job, const ProcessResult& process) {
         const RunSpec& run = *by_job[job.id];
         on_row(run, make_row(run, settings.out_dir, run_dirs[run.index], settings.timeout, process));

@@ -3,8 +3,9 @@
 //   read OUT/results.csv when resuming: rows of finished runs (passed, failed, no_expectations) that
 //     match this batch are kept, error rows are dropped (run again); a row that does not match
 //     (another sweep) is an error
-//   for each remaining run (by index): worker `signalsim run SCENARIO --out OUT/runs/NNNN-name
-//     --quiet --set ...` (process_pool), at most `jobs` at a time, each with the wall-clock timeout
+//   for each remaining run (by index): `signalsim run SCENARIO --out OUT/runs/NNNN-name --quiet
+//     --set ...` in one of `jobs` persistent workers (worker_pool), or as a process of its own with
+//     `isolate` (process_pool), each with the wall-clock timeout
 //   a run whose scenario file did not load (RunSpec::load_error): an error row with the message, no worker
 //   as each worker ends: a row from its exit code and RUNDIR/summary.json (status passed, failed or
 //     no_expectations - a scenario without expectations, nothing checked, not a failure - expectations,
@@ -36,6 +37,7 @@ namespace signalsim {
 struct BatchSettings {
   std::string out_dir;              ///< results.csv and runs/ go here
   int jobs = 1;                     ///< worker processes at a time
+  bool isolate = false;             ///< one process per run instead of persistent workers (worker_pool.hpp)
   double timeout = 300.0;           ///< [s] per run, wall clock
   bool resume = false;              ///< keep finished rows of an earlier results.csv
   bool quiet = false;               ///< no progress output

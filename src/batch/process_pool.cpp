@@ -1,5 +1,6 @@
 #include "batch/process_pool.hpp"
 
+#include "batch/interrupt_guard.hpp"
 #include "report/exit_codes.hpp"
 
 #include <fcntl.h>
@@ -21,32 +22,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 constexpr std::size_t kMaxStderr = 64 * 1024;
-
-volatile std::sig_atomic_t g_interrupted = 0;
-extern "C" void on_interrupt(int) { g_interrupted = 1; }
-
-// Installs the SIGINT/SIGTERM handlers for the lifetime of the object (no SA_RESTART: poll wakes up).
-class InterruptGuard {
- public:
-  InterruptGuard() {
-    g_interrupted = 0;
-    struct sigaction sa {};
-    sa.sa_handler = on_interrupt;
-    sigemptyset(&sa.sa_mask);
-    sigaction(SIGINT, &sa, &old_int_);
-    sigaction(SIGTERM, &sa, &old_term_);
-  }
-  ~InterruptGuard() {
-    sigaction(SIGINT, &old_int_, nullptr);
-    sigaction(SIGTERM, &old_term_, nullptr);
-  }
-  InterruptGuard(const InterruptGuard&) = delete;
-  InterruptGuard& operator=(const InterruptGuard&) = delete;
-
- private:
-  struct sigaction old_int_ {};
-  struct sigaction old_term_ {};
-};
 
 struct Worker {
   const ProcessJob* job = nullptr;
@@ -211,8 +186,8 @@ bool run_processes(const std::vector<ProcessJob>& jobs, int parallel,
     on_done(*w.job, r);
   };
 
-  while ((next < jobs.size() || !running.empty()) && !g_interrupted) {
-    while (running.size() < static_cast<std::size_t>(parallel) && next < jobs.size() && !g_interrupted)
+  while ((next < jobs.size() || !running.empty()) && !InterruptGuard::interrupted()) {
+    while (running.size() < static_cast<std::size_t>(parallel) && next < jobs.size() && !InterruptGuard::interrupted())
       start(jobs[next++]);
 
     // Wait for output, an exit (the pipe closes) or the nearest timeout, at most 200 ms.
@@ -249,7 +224,7 @@ bool run_processes(const std::vector<ProcessJob>& jobs, int parallel,
     if (on_tick) on_tick();
   }
 
-  if (!g_interrupted) return true;
+  if (!InterruptGuard::interrupted()) return true;
   // Interrupted: stop every worker still running. A worker that had already finished by itself
   // (it exited, it was not killed) is reported: its run is complete and must not be lost.
   for (Worker& w : running) reap(w, false);

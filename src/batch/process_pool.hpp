@@ -1,5 +1,5 @@
-// Worker processes for batch runs: libsumo allows one simulation per process, so every run is its
-// own `signalsim run` process.
+// One process per run: `--isolate` runs every run of a batch as its own `signalsim run` process
+// (persistent workers are worker_pool.hpp), and run_foreground starts a program in the foreground.
 //
 //   while jobs remain or workers run:
 //     start jobs until `jobs` workers run (fork; the child gets its own process group, stdin and

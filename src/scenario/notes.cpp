@@ -28,6 +28,11 @@ void set_notes_enabled(bool enabled) {
   state().enabled = enabled;
 }
 
+void forget_printed_notes() {
+  std::lock_guard<std::mutex> lock(state().mutex);
+  state().printed.clear();
+}
+
 void note_once(const std::string& text) {
   NoteState& s = state();
   std::lock_guard<std::mutex> lock(s.mutex);

@@ -13,6 +13,10 @@ namespace signalsim {
 /// Turns notes on (the default) or off for this process.
 void set_notes_enabled(bool enabled);
 
+/// Forgets which notes were printed: a batch's persistent worker starts each run as a fresh process
+/// would (app/worker_command.cpp).
+void forget_printed_notes();
+
 /// Prints "signalsim: note: <text>" on stderr unless a note with the same text was printed before.
 void note_once(const std::string& text);
 

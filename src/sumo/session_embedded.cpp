@@ -1,5 +1,6 @@
-// The embedded back-end: SUMO inside this process through libsumo (one simulation per process, docs/behaviour.md
-// §S1). SUMO prints its errors to stderr and throws a bare "Process Error", so stderr is captured
+// The embedded back-end: SUMO inside this process through libsumo (one simulation at a time per process,
+// docs/behaviour.md §S1; a batch's persistent worker starts one after another, each closed at the end
+// of its run). SUMO prints its errors to stderr and throws a bare "Process Error", so stderr is captured
 // while the session lives and the message we report is SUMO's own first error line.
 #include <fcntl.h>
 #include <unistd.h>
@@ -25,6 +26,35 @@ struct LibsumoApi {
   using Edge = libsumo::Edge;
   using TrafficLight = libsumo::TrafficLight;
 };
+
+// libsumo's state in this process: whether a simulation runs now, and whether a start ever failed
+// (embedded_sumo_reusable).
+struct LibsumoState {
+  bool running = false;
+  bool failed_start = false;
+};
+LibsumoState g_libsumo;
+
+// Simulation::start, refused while one runs (libsumo would close it under its session's feet).
+void start_libsumo(const std::vector<std::string>& command_line) {
+  if (g_libsumo.running)
+    throw SumoError("SUMO is already running in this process (libsumo runs one simulation at a time)");
+  try {
+    libsumo::Simulation::start(command_line);
+  } catch (...) {
+    g_libsumo.failed_start = true;
+    throw;
+  }
+  g_libsumo.running = true;
+}
+
+void close_libsumo() noexcept {
+  try {
+    libsumo::Simulation::close();
+  } catch (...) {  // closing must never throw out of a destructor
+  }
+  g_libsumo.running = false;
+}
 
 // SUMO's stderr, redirected into a nameless temporary file while the session lives.
 class StderrCapture {
@@ -73,18 +103,14 @@ class EmbeddedSession final : public SessionImpl<LibsumoApi> {
  public:
   explicit EmbeddedSession(const SessionConfig& config) : SessionImpl<LibsumoApi>(config) {
     try {
-      libsumo::Simulation::start(sumo_command_line(config, "sumo"));
+      start_libsumo(sumo_command_line(config, "sumo"));
     } catch (const std::exception& e) {
       throw SumoError("SUMO could not load the simulation: " + failure_reason(e));
     }
     started_ = true;
   }
   ~EmbeddedSession() override {
-    if (!started_) return;
-    try {
-      libsumo::Simulation::close();
-    } catch (...) {  // closing must never throw out of a destructor
-    }
+    if (started_) close_libsumo();
   }
   BackendKind backend() const override { return BackendKind::Embedded; }
   using SessionImpl<LibsumoApi>::insert_ego;
@@ -105,18 +131,17 @@ class EmbeddedSession final : public SessionImpl<LibsumoApi> {
 std::string embedded_net_load_error(const std::string& net_path) {
   StderrCapture capture;  // SUMO's messages stay out of the user's terminal
   try {
-    libsumo::Simulation::start({"sumo", "--net-file", net_path, "--begin", "0", "--end", "0", "--no-step-log", "true",
-                                "--duration-log.disable", "true", "--no-warnings", "true"});
+    start_libsumo({"sumo", "--net-file", net_path, "--begin", "0", "--end", "0", "--no-step-log", "true",
+                   "--duration-log.disable", "true", "--no-warnings", "true"});
   } catch (const std::exception& e) {
     const std::string reason = capture.first_error();
     return reason.empty() ? std::string(e.what()) : reason;
   }
-  try {
-    libsumo::Simulation::close();
-  } catch (...) {  // loaded is what was asked
-  }
+  close_libsumo();  // loaded is what was asked
   return {};
 }
+
+bool embedded_sumo_reusable() { return !g_libsumo.failed_start; }
 
 std::unique_ptr<SumoSession> open_embedded_session(const SessionConfig& config) {
   auto session = std::make_unique<EmbeddedSession>(config);

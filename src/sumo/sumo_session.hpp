@@ -269,4 +269,10 @@ std::unique_ptr<SumoSession> open_session(const SessionConfig& config);
 /// Starts and closes one simulation of no steps; costs about SUMO's load time of the net.
 std::string net_load_error(const std::string& net_path);
 
+/// Whether the next embedded simulation of this process starts as it would in a fresh process. libsumo
+/// runs one simulation at a time and may start again once it is closed (a batch's persistent worker
+/// runs one scenario after another), but a start that failed leaves SUMO's message handlers behind:
+/// that run's sumo.log would receive the next run's messages. False from then on: a worker ends.
+bool embedded_sumo_reusable();
+
 }  // namespace signalsim::sumo

@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Killing a worker mid-run leaves an error row and the sweep goes on; Ctrl-C (SIGINT) stops it
 # cleanly with every finished row kept (exit 130); --resume runs the error row and the rest.
-# The resumed results.csv equals a fresh sweep's (wall_time aside).
+# The resumed results.csv equals a fresh sweep's (wall_time aside). The first sweep runs one process
+# per run (--isolate: its workers are found by their command line); the persistent workers' own
+# crashes and interruptions are workers_isolation_test.sh's.
 # usage: resume_test.sh SIGNALSIM_BINARY SOURCE_DIR
 set -u
 bin=$1
@@ -25,7 +27,7 @@ wait_worker() {
   return 1
 }
 
-"$bin" sweep "$sweep" --out "$work/out" --jobs 1 > "$work/first.log" 2>&1 &
+"$bin" sweep "$sweep" --out "$work/out" --jobs 1 --isolate > "$work/first.log" 2>&1 &
 pid=$!
 w=$(wait_worker 1) || fail "run 1 never started"
 sleep 0.2

@@ -1,0 +1,94 @@
+#!/usr/bin/env bash
+# A persistent worker stays as isolated as a process per run: (1) a worker killed by SIGSEGV during
+# run 1 (kill from here, on its process id) makes run 1 an error row "worker killed by SIGSEGV" and
+# the runs after it finish in a new worker; (2) a run past --timeout is an error row "timed out", its
+# worker is killed and replaced, the rest finish; (3) SIGINT or SIGTERM to the sweep: exit 130, the
+# finished rows kept, no row for the interrupted run, no worker left. Sweep: sweep_crash.yaml (run
+# 1 takes most of a minute, the others a fraction of a second).
+# usage: workers_isolation_test.sh SIGNALSIM_BINARY SOURCE_DIR
+set -u
+bin=$1
+src=$2
+work=$(mktemp -d)
+pid=
+trap '[ -n "$pid" ] && kill $pid 2>/dev/null; rm -rf "$work"' EXIT
+fail() { echo "FAIL: $*"; exit 1; }
+ulimit -c 0  # the SIGSEGV of (1) leaves no core file
+sweep=$src/tests/batch/data/sweep_crash.yaml
+
+workers() { pgrep -P "$pid"; }  # the sweep's children: its workers
+# Waits until run $2 of output folder $1 has started (its run directory exists).
+wait_run() {
+  local i
+  for i in $(seq 1 600); do compgen -G "$1/runs/000$2-*" > /dev/null && return 0; sleep 0.05; done
+  return 1
+}
+# Records every worker process id of the sweep into $1 until the sweep ends.
+watch_workers() { while kill -0 "$pid" 2>/dev/null; do workers >> "$1"; sleep 0.02; done; }
+
+# The rows as "run status error" lines.
+rows() {
+  python3 - "$1" <<'PY'
+import csv, sys
+for r in csv.DictReader(open(sys.argv[1])):
+    print(r["run"], r["status"], r["error"])
+PY
+}
+
+# (1) SIGSEGV of the worker during run 1.
+"$bin" sweep "$sweep" --out "$work/crash" --jobs 1 > "$work/crash.log" 2>&1 &
+pid=$!
+watch_workers "$work/crash.pids" &
+wait_run "$work/crash" 1 || fail "run 1 never started"
+w=$(workers)
+[ "$(echo "$w" | wc -w)" -eq 1 ] || fail "--jobs 1: workers '$w', not one"
+kill -SEGV "$w"
+wait "$pid"
+code=$?
+[ $code -eq 4 ] || fail "crash: exit code $code, not 4 (a run errored) ($(tail -3 "$work/crash.log"))"
+rows "$work/crash/results.csv" > "$work/crash.rows"
+grep -q "^1 error worker killed by SIGSEGV" "$work/crash.rows" || fail "run 1: $(sed -n 2p "$work/crash.rows")"
+[ "$(grep -c " passed $" "$work/crash.rows")" -eq 5 ] || fail "the other runs: $(cat "$work/crash.rows")"
+sort -u "$work/crash.pids" | grep -vx "$w" | grep -q . || fail "no new worker after the crash"
+kill -0 "$w" 2>/dev/null && fail "the crashed worker $w still runs"
+echo "ok   a worker killed by SIGSEGV: its run is an error row, a new worker runs the rest"
+
+# (2) Run 1 past --timeout.
+"$bin" sweep "$sweep" --out "$work/slow" --jobs 1 --timeout 3 > "$work/slow.log" 2>&1 &
+pid=$!
+watch_workers "$work/slow.pids" &
+wait_run "$work/slow" 1 || fail "run 1 never started"
+first=$(workers)
+wait "$pid"
+code=$?
+[ $code -eq 4 ] || fail "timeout: exit code $code, not 4 ($(tail -3 "$work/slow.log"))"
+rows "$work/slow/results.csv" > "$work/slow.rows"
+grep -qx "1 error timed out: still running after the 3 s limit (worker killed)" "$work/slow.rows" ||
+  fail "run 1: $(sed -n 2p "$work/slow.rows")"
+[ "$(grep -c " passed $" "$work/slow.rows")" -eq 5 ] || fail "the other runs: $(cat "$work/slow.rows")"
+sort -u "$work/slow.pids" | grep -vx "$first" | grep -q . || fail "no new worker after the timeout"
+echo "ok   a run past --timeout: an error row, its worker killed and replaced, the rest finish"
+
+# (3) SIGINT, then SIGTERM, during run 1 (--jobs 2: the other worker has finished runs 0, 2 to 5).
+for sig in INT TERM; do
+  out=$work/stop_$sig
+  "$bin" sweep "$sweep" --out "$out" --jobs 2 > "$out.log" 2>&1 &
+  pid=$!
+  wait_run "$out" 1 || fail "$sig: run 1 never started"
+  wait_run "$out" 5 || fail "$sig: run 5 never started"
+  sleep 0.5
+  seen=$(workers)
+  kill -$sig "$pid"
+  wait "$pid"
+  code=$?
+  [ $code -eq 130 ] || fail "SIG$sig: exit code $code, not 130 ($(tail -3 "$out.log"))"
+  for w in $seen; do kill -0 "$w" 2>/dev/null && fail "SIG$sig: worker $w outlived the sweep"; done
+  rows "$out/results.csv" > "$out.rows"
+  grep -q "^1 " "$out.rows" && fail "SIG$sig: the interrupted run 1 has a row: $(grep "^1 " "$out.rows")"
+  grep -q "^0 passed $" "$out.rows" || fail "SIG$sig: run 0 lost: $(cat "$out.rows")"
+  grep -qv " passed $" "$out.rows" && fail "SIG$sig: a row that is not passed: $(cat "$out.rows")"
+  grep -q "interrupted: finished runs are kept" "$out.log" || fail "SIG$sig: $(tail -2 "$out.log")"
+done
+pid=
+echo "ok   SIGINT and SIGTERM: exit 130, finished rows kept, no row for the stopped run, no worker left"
+echo "workers_isolation_test passed"
