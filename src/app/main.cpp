@@ -40,8 +40,7 @@ int main(int argc, char** argv) {
                                          add_countries_command(app),
                                          add_batch_command(app), add_sweep_command(app), add_check_command(app),
                                          add_compare_command(app), add_generate_command(app), add_schema_command(app),
-                                         add_run_chunk_command(app,
-
+                                         add_run_chunk_command(app),
                                          add_worker_command(app)};
   try {
     app.parse(argc, argv);
