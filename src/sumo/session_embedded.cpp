@@ -24,6 +24,8 @@ struct LibsumoApi {
   using Lane = libsumo::Lane;
   using Edge = libsumo::Edge;
   using TrafficLight = libsumo::TrafficLight;
+  // In process the getters cost less than libsumo's subscriptions (session_impl.hpp).
+  static constexpr bool kSubscribes = false;
 };
 
 // SUMO's stderr, redirected into a nameless temporary file while the session lives.
