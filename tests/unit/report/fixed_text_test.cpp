@@ -41,7 +41,8 @@ TEST(FixedText, EdgeCases) {
       0.125, -0.125, 0.375, 0.625, 2.5, 3.5, -2.5, 0.5, 1.5, 0.0625, 0.03125, 1.0 / 3.0, 2.0 / 3.0, 99.9995, 999.9995,
       1e15, 1e16 + 2, 1e22, 1e23, -1e23, 123456789.0125, 4503599627370495.5, 9007199254740993.0, 1e59, 1e60, 1e300,
       -1e300, std::numeric_limits<double>::max(), -std::numeric_limits<double>::max(),
-      std::numeric_limits<double>::min(), std::numeric_limits<double>::denorm_min(), -std::numeric_limits<double>::min(),
+      std::numeric_limits<double>::min(), std::numeric_limits<double>::denorm_min(),
+      -std::numeric_limits<double>::min(),
       inf, -inf, nan, -nan, 0.1, 0.2, 0.3, 189.6, 208.95, 13.89, -3.2, 1.6, -200.0};
   for (double v : values)
     for (int decimals : {0, 1, 2, 3, 4, 6, 9, 17, -1}) expect_like_printf(v, decimals);
