@@ -1,6 +1,5 @@
 #include "report/outputs.hpp"
 
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
@@ -8,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "report/atomic_file.hpp"
+#include "report/fixed_text.hpp"
 #include "report/metrics.hpp"
 #include "scenario/take_over.hpp"
 #include "sumo/sumo_session.hpp"
@@ -90,14 +90,6 @@ nlohmann::ordered_json sumo_json(const Scenario& scenario, const RunSumoInfo& in
 
 }  // namespace
 
-std::string fixed(double v, int decimals) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-  std::string s = buf;
-  if (s == "-0.000" || s == "-0.00" || s == "-0.0") s.erase(0, 1);  // deterministic zero
-  return s;
-}
-
 std::string_view to_string(RunStatus status) {
   switch (status) {
     case RunStatus::Passed: return "passed";
@@ -116,29 +108,60 @@ RunStatus run_status(const std::vector<ExpectationResult>& results) {
   return RunStatus::Passed;
 }
 
+// One row a step: numbers appended in place (fixed_text.hpp), no temporary strings.
 void write_timeline_csv(const std::string& path, const std::vector<TimelineRow>& rows, bool v2i_column) {
   std::string out =
       "time,s_front,x,y,speed,accel,edge,lane,lateral_offset,blinker,blinker_source,sumo_signals,"
       "tl_id,tl_state,tl_observed,tl_decision,stop_distance,judge_distance,yellow_lamp_line,zone,stop_s,"
       "stop_level,planned_offset";
   out += v2i_column ? ",v2i_time_to_red\n" : "\n";
-  out.reserve(rows.size() * 120);
+  out.reserve(out.size() + rows.size() * 160);
+  const auto number = [&out](double v) {
+    append_fixed(out, v, 3);
+    out += ',';
+  };
+  const auto optional_number = [&out](const std::optional<double>& v) {
+    if (v) append_fixed(out, *v, 3);
+  };
+  const auto text = [&out](std::string_view v) {
+    out += v;
+    out += ',';
+  };
   for (const TimelineRow& r : rows) {
-    out += fixed(r.time, 3) + ',' + fixed(r.s_front, 3) + ',' + fixed(r.x, 3) + ',' + fixed(r.y, 3) + ',' +
-           fixed(r.speed, 3) + ',' + fixed(r.accel, 3) + ',' + r.edge + ',' + r.lane + ',' +
-           fixed(r.lateral_offset, 3) + ',' + std::string(to_string(r.blinker)) + ',' +
-           std::string(to_string(r.blinker_source)) + ',' +
-           (r.sumo_signals >= 0 ? std::to_string(r.sumo_signals) : std::string()) + ',' + r.tl_id + ',' +
-           (r.tl_state ? std::string(1, r.tl_state) : std::string()) + ',' + r.tl_observed + ',' +
-           (r.tl_id.empty() ? std::string() : std::string(to_string(r.tl_decision))) + ',' +
-           (r.stop_distance ? fixed(*r.stop_distance, 3) : std::string()) + ',' +
-           (r.stop_distance ? fixed(r.judge_distance, 3) : std::string()) + ',' +
-           (r.stop_distance ? fixed(r.yellow_lamp_line, 3) : std::string()) + ',' +
-           (r.zone == JudgeZone::None ? std::string() : std::string(to_string(r.zone))) + ',' +
-           (r.stop_s ? fixed(*r.stop_s, 3) : std::string()) + ',' +
-           (r.stop_level ? std::string(to_string(*r.stop_level)) : std::string()) + ',' +
-           (r.planned_offset ? fixed(*r.planned_offset, 3) : std::string());
-    if (v2i_column) out += ',' + (r.v2i_time_to_red ? fixed(*r.v2i_time_to_red, 3) : std::string());
+    number(r.time);
+    number(r.s_front);
+    number(r.x);
+    number(r.y);
+    number(r.speed);
+    number(r.accel);
+    text(r.edge);
+    text(r.lane);
+    number(r.lateral_offset);
+    text(to_string(r.blinker));
+    text(to_string(r.blinker_source));
+    if (r.sumo_signals >= 0) append_integer(out, r.sumo_signals);
+    out += ',';
+    text(r.tl_id);
+    if (r.tl_state) out += r.tl_state;
+    out += ',';
+    text(r.tl_observed);
+    text(r.tl_id.empty() ? std::string_view() : to_string(r.tl_decision));
+    if (r.stop_distance) {
+      number(*r.stop_distance);
+      number(r.judge_distance);
+      number(r.yellow_lamp_line);
+    } else {
+      out += ",,,";
+    }
+    text(r.zone == JudgeZone::None ? std::string_view() : to_string(r.zone));
+    optional_number(r.stop_s);
+    out += ',';
+    text(r.stop_level ? to_string(*r.stop_level) : std::string_view());
+    optional_number(r.planned_offset);
+    if (v2i_column) {
+      out += ',';
+      optional_number(r.v2i_time_to_red);
+    }
     out += '\n';
   }
   write_atomically(path, out);
@@ -146,9 +169,16 @@ void write_timeline_csv(const std::string& path, const std::vector<TimelineRow>&
 
 void write_events_csv(const std::string& path, const std::vector<TimelineEvent>& events) {
   std::string out = "time,s_front,kind,from,to,source\n";
-  for (const TimelineEvent& e : events)
-    out += fixed(e.time, 3) + ',' + fixed(e.s_front, 3) + ',' + e.kind + ',' + e.from + ',' + e.to + ',' +
-           e.source + '\n';
+  for (const TimelineEvent& e : events) {
+    append_fixed(out, e.time, 3);
+    out += ',';
+    append_fixed(out, e.s_front, 3);
+    for (const std::string* field : {&e.kind, &e.from, &e.to, &e.source}) {
+      out += ',';
+      out += *field;
+    }
+    out += '\n';
+  }
   write_atomically(path, out);
 }
 

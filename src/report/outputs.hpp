@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "report/fixed_text.hpp"  // fixed(): numbers as the files write them
 #include "scenario/scenario.hpp"
 #include "report/timeline.hpp"
 #include "sumo/route_builder.hpp"
@@ -20,9 +21,6 @@ std::string_view to_string(RunStatus status);
 
 /// The status of a finished run from its expectation results: NoExpectations when there are none.
 RunStatus run_status(const std::vector<ExpectationResult>& results);
-
-/// `v` with `decimals` decimals as the output files write it ("%.*f", never "-0.000").
-std::string fixed(double v, int decimals);
 
 /// `v2i_column`: append the column v2i_time_to_red (only for a run with V2I on, so that every other
 /// run's file stays as it was).

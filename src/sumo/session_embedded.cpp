@@ -25,6 +25,8 @@ struct LibsumoApi {
   using Lane = libsumo::Lane;
   using Edge = libsumo::Edge;
   using TrafficLight = libsumo::TrafficLight;
+  // In process the getters cost less than libsumo's subscriptions (session_impl.hpp).
+  static constexpr bool kSubscribes = false;
 };
 
 // libsumo's state in this process: whether a simulation runs now, and whether a start ever failed

@@ -5,6 +5,10 @@
 // session_traci.cpp include their library, define Api and instantiate this template; they own only
 // how SUMO is started and closed. Include it after <libsumo/libsumo.h> or <libsumo/libtraci.h>
 // (it uses their shared types and constants, libsumo::TraCIResults, libsumo::VAR_*).
+// `Api::kSubscribes` says whether the ego's and the simulation's variables are subscribed: over a
+// socket one subscribed answer a step replaces nine round trips; in process libsumo's subscription
+// machinery costs more than the getters it replaces (about 20 000 instructions a step, measured:
+// docs/performance.md), so the embedded session asks the getters, each once a step.
 //
 // This file declares the class; its members are defined, one job a file, in the files it includes
 // at its end:
@@ -12,6 +16,7 @@
 //   session_impl_commands.hpp  what it tells SUMO: signals, speed, lateral offset, modes, programs
 //   session_impl_ego.hpp       the ego's life: insertion or take-over, control, hand-back
 //   session_lane_data.hpp      the static lane data it asks once and keeps (LaneData)
+//   session_step_answers.hpp   what SUMO answered during the current step, asked once (StepAnswers)
 #pragma once
 
 #include <algorithm>
@@ -26,6 +31,7 @@
 #include "sumo/interruption.hpp"
 #include "sumo/number_parsing.hpp"
 #include "sumo/session_lane_data.hpp"
+#include "sumo/session_step_answers.hpp"
 #include "sumo/sumo_session.hpp"
 
 namespace signalsim::sumo {
@@ -101,6 +107,18 @@ class SessionImpl : public SumoSession {
     }
   }
 
+  // The subscribed variables of the step (over TraCI), or nullptr: none subscribed (libsumo), none
+  // to trust (the ego's after move_back moved it), or not all of them (the ego has gone).
+  const libsumo::TraCIResults* simulation_variables() const;
+  const libsumo::TraCIResults* ego_variables() const;
+  // The ego's state and lane index, asked once a step (ego_state() is ego() without its error text).
+  const EgoState& ego_state() const;
+  EgoState read_ego_state() const;
+  int ego_lane_index() const;
+  /// Forgets what the session kept of an earlier run (the step's answers, the lanes' data, the ego's
+  /// class): a run starts from SUMO's own answers, also in a session SUMO reloaded.
+  void forget_run_answers();
+
   void apply_speed_mode();       // session_impl_commands.hpp
   void add_ego();                // session_impl_ego.hpp, as the next three
   bool wait_for_departure();
@@ -108,13 +126,16 @@ class SessionImpl : public SumoSession {
   void move_to_depart_offset();
 
   LaneData<Api> lanes_;
+  mutable StepAnswers answers_;
   EgoVehicle vehicle_;
-  // The ego's variables that come with each step's answer (ego(), ego_signals()).
-  static constexpr std::array<int, 8> kEgoVariables = {
+  // Over TraCI, the ego's variables that come with each step's answer (ego(), ego_signals(), and its
+  // lane index for lateral_offset_from()).
+  static constexpr std::array<int, 9> kEgoVariables = {
       libsumo::VAR_ROAD_ID,      libsumo::VAR_LANE_ID,  libsumo::VAR_LANEPOSITION,     libsumo::VAR_SPEED,
-      libsumo::VAR_ACCELERATION, libsumo::VAR_POSITION, libsumo::VAR_LANEPOSITION_LAT, libsumo::VAR_SIGNALS};
+      libsumo::VAR_ACCELERATION, libsumo::VAR_POSITION, libsumo::VAR_LANEPOSITION_LAT, libsumo::VAR_SIGNALS,
+      libsumo::VAR_LANE_INDEX};
 
-  bool subscribed_ = false;     // the ego's and the simulation's variables come with each step
+  bool subscribed_ = false;     // over TraCI: the ego's and the simulation's variables come with each step
   mutable std::string vclass_;  // the ego's vehicle class, asked once
   bool ego_present_ = false;  // inserted (or taken over) and not arrived: release_ego() has work
   int ego_collisions_ = 0;

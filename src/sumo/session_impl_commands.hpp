@@ -1,6 +1,8 @@
 // SessionImpl<Api>, part 2 of 3: what the session tells SUMO (session_impl.hpp has the class).
 // The ego's signals and speed, backing up, its lateral offset, its speed mode (emergency braking,
-// right of way) and speed factor (SUMO's lane limits), and the shift of a light's program.
+// right of way) and speed factor (SUMO's lane limits), and the shift of a light's program. Where the
+// ego is comes from the step's answer (session_impl_observe.hpp); its length and width are the ones
+// it departed with (take_control).
 // Included by session_impl.hpp only.
 #pragma once
 
@@ -20,13 +22,13 @@ void SessionImpl<Api>::command(int signal_mask, double speed) {
 template <class Api>
 void SessionImpl<Api>::move_back(double distance) {
   try {
-    const std::string lane = Api::Vehicle::getLaneID(ego_);
-    const double pos = Api::Vehicle::getLanePosition(ego_);
-    const double lat = Api::Vehicle::getLateralLanePosition(ego_);
-    if (pos - distance < Api::Vehicle::getLength(ego_))
-      throw SumoError("the ego cannot back up beyond the start of lane " + lane);
-    Api::Vehicle::moveTo(ego_, lane, pos - distance);
-    const double drift = lat - Api::Vehicle::getLateralLanePosition(ego_);
+    const EgoState now = ego_state();  // a copy: moving the ego forgets the step's answer
+    if (now.lane_pos - distance < vehicle_.length)
+      throw SumoError("the ego cannot back up beyond the start of lane " + now.lane);
+    Api::Vehicle::moveTo(ego_, now.lane, now.lane_pos - distance);
+    answers_.forget_ego();
+    answers_.ego_moved = true;  // until the next step, where the ego is is asked directly
+    const double drift = now.lateral_offset - Api::Vehicle::getLateralLanePosition(ego_);
     if (config_.lateral_resolution > 0.0 && std::abs(drift) > 1e-6) Api::Vehicle::changeSublane(ego_, drift);
   } catch (const SumoError&) {
     throw;
@@ -42,14 +44,14 @@ void SessionImpl<Api>::command_lateral_offset(double target_offset_next_step, co
                     "lateral_resolution > 0 (--lateral-resolution)");
   try {
     const std::string& reference_edge = lanes_.lane_edge(reference_lane_id);
-    const std::string ego_edge = Api::Vehicle::getRoadID(ego_);
+    const std::string& ego_edge = ego_state().edge;
     if (ego_edge != reference_edge)
       throw SumoError("cannot command a lateral offset from lane '" + reference_lane_id + "': the ego is on '" +
                       ego_edge + "', not on that lane's edge '" + reference_edge + "'");
     // Keep the target on the lanes the ego may use around its own (the road border): SUMO refuses a
     // move past it and leaves the ego where it was, short of the border, instead of clamping.
     const int reference_index = lanes_.lane_index_on(reference_edge, reference_lane_id);
-    const int ego_index = Api::Vehicle::getLaneIndex(ego_);
+    const int ego_index = ego_lane_index();
     const int lanes = lanes_.lane_count(reference_edge);
     if (vclass_.empty()) vclass_ = Api::Vehicle::getVehicleClass(ego_);
     const std::string& vclass = vclass_;
@@ -74,6 +76,7 @@ void SessionImpl<Api>::command_lateral_offset(double target_offset_next_step, co
 
 template <class Api>
 void SessionImpl<Api>::shift_light_program(const std::string& tls_id, double offset) {
+  answers_.forget_lights();  // the light's state and timing change now
   try {
     const std::string program = Api::TrafficLight::getProgram(tls_id);
     for (const auto& logic : Api::TrafficLight::getAllProgramLogics(tls_id)) {

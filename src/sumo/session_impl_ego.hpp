@@ -1,7 +1,8 @@
 // SessionImpl<Api>, part 3 of 3: the ego's life in SUMO (session_impl.hpp has the class).
 // Inserting the ego (with its vType and the standing obstacles) or waiting for the vehicle to take
 // over, taking control of it once it departed (deterministic driving, speed and lane-change modes,
-// the lateral depart offset, the subscription), and handing it back at the end. Included by
+// the lateral depart offset, the subscription over TraCI), and handing it back at the end. What the
+// session kept of an earlier run is forgotten when the ego is inserted. Included by
 // session_impl.hpp only.
 #pragma once
 
@@ -9,6 +10,7 @@ namespace signalsim::sumo {
 
 template <class Api>
 void SessionImpl<Api>::insert_ego() {
+  forget_run_answers();
   try {
     if (config_.take_over.empty()) add_ego();
     const bool departed = wait_for_departure();
@@ -24,6 +26,14 @@ void SessionImpl<Api>::insert_ego() {
   } catch (const std::exception& e) {
     throw SumoError("SUMO rejected the ego: " + failure_reason(e));
   }
+}
+
+template <class Api>
+void SessionImpl<Api>::forget_run_answers() {
+  answers_.forget();
+  lanes_ = LaneData<Api>();
+  vclass_.clear();
+  subscribed_ = false;  // take_control subscribes again
 }
 
 template <class Api>
@@ -118,10 +128,13 @@ void SessionImpl<Api>::take_control() {
   vehicle_.depart_speed = Api::Vehicle::getSpeed(ego_);
   on_ego_departed();
   if (config_.depart_pos_lat != 0.0 && !config_.sumo_drives) move_to_depart_offset();
-  Api::Vehicle::subscribe(ego_, std::vector<int>(kEgoVariables.begin(), kEgoVariables.end()));
-  Api::Simulation::subscribe(std::vector<int>{libsumo::VAR_TIME, libsumo::VAR_ARRIVED_VEHICLES_IDS,
-                                              libsumo::VAR_COLLIDING_VEHICLES_NUMBER});
-  subscribed_ = true;
+  if constexpr (Api::kSubscribes) {  // over TraCI (session_impl.hpp)
+    Api::Vehicle::subscribe(ego_, std::vector<int>(kEgoVariables.begin(), kEgoVariables.end()));
+    Api::Simulation::subscribe(std::vector<int>{libsumo::VAR_TIME, libsumo::VAR_ARRIVED_VEHICLES_IDS,
+                                                libsumo::VAR_COLLIDING_VEHICLES_NUMBER});
+    subscribed_ = true;
+  }
+  answers_.forget();  // the run's first step is answered afresh
 }
 
 template <class Api>

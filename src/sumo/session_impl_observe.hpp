@@ -2,7 +2,9 @@
 // SUMO's step and the answer that comes with it (a TraCI subscription of the ego's and the
 // simulation's variables: one round trip a step over a socket), the ego's state and signals, its
 // leader, the vehicles on a lane, the ego's offset from a lane, and the traffic lights' states,
-// programs and timing. Included by session_impl.hpp only.
+// programs and timing. What a step answered is asked once and kept until the next step
+// (session_step_answers.hpp).
+// Included by session_impl.hpp only.
 #pragma once
 
 namespace signalsim::sumo {
@@ -25,8 +27,11 @@ template <class Api>
 bool SessionImpl<Api>::step() {
   throw_if_interrupted();
   try {
+    answers_.forget();  // before the step: a failed one leaves nothing of the last
     Api::Simulation::step();
-    const libsumo::TraCIResults sim = subscribed_ ? Api::Simulation::getSubscriptionResults() : libsumo::TraCIResults();
+    static const libsumo::TraCIResults kNone;
+    if (subscribed_) answers_.simulation_variables = Api::Simulation::getSubscriptionResults();
+    const libsumo::TraCIResults& sim = subscribed_ ? *answers_.simulation_variables : kNone;
     // Collisions are rare: their details are asked for only when the step had some.
     if (!subscribed_ || subscription::subscribed_int(sim, libsumo::VAR_COLLIDING_VEHICLES_NUMBER, 1) > 0)
       for (const auto& c : Api::Simulation::getCollisions())
@@ -47,37 +52,60 @@ bool SessionImpl<Api>::step() {
 }
 
 template <class Api>
+const libsumo::TraCIResults* SessionImpl<Api>::simulation_variables() const {
+  if (!subscribed_) return nullptr;
+  if (!answers_.simulation_variables) answers_.simulation_variables = Api::Simulation::getSubscriptionResults();
+  return &*answers_.simulation_variables;
+}
+
+template <class Api>
+const libsumo::TraCIResults* SessionImpl<Api>::ego_variables() const {
+  if (!subscribed_ || answers_.ego_moved) return nullptr;
+  if (!answers_.ego_variables) answers_.ego_variables = Api::Vehicle::getSubscriptionResults(ego_);
+  return answers_.ego_variables->size() == kEgoVariables.size() ? &*answers_.ego_variables : nullptr;
+}
+
+template <class Api>
 double SessionImpl<Api>::time() const {
   return guarded("the time", [this] {
-    if (subscribed_) {
-      const libsumo::TraCIResults sim = Api::Simulation::getSubscriptionResults();
-      if (const auto it = sim.find(libsumo::VAR_TIME); it != sim.end())
-        return static_cast<const libsumo::TraCIDouble&>(*it->second).value;
+    if (!answers_.time) {
+      const libsumo::TraCIResults* sim = simulation_variables();
+      const auto it = sim ? sim->find(libsumo::VAR_TIME) : libsumo::TraCIResults::const_iterator();
+      answers_.time = sim && it != sim->end() ? static_cast<const libsumo::TraCIDouble&>(*it->second).value
+                                              : Api::Simulation::getTime();
     }
-    return Api::Simulation::getTime();
+    return *answers_.time;
   });
 }
 
-// The ego's state comes with the step's answer (a TraCI subscription: one round trip a step
-// instead of nine over a socket); before the first subscribed step it is asked for directly.
+// The ego's state: from the step's subscribed answer over TraCI (one round trip a step instead of
+// nine), else from the getters; once a step either way.
 template <class Api>
 EgoState SessionImpl<Api>::ego() const {
-  return guarded("the ego", [this] {
-    const libsumo::TraCIResults v = subscribed_ ? Api::Vehicle::getSubscriptionResults(ego_) : libsumo::TraCIResults();
-    EgoState s;
-    s.time = time();
-    if (v.size() == kEgoVariables.size()) {
-      s.edge = subscription::subscribed_text(v, libsumo::VAR_ROAD_ID);
-      s.lane = subscription::subscribed_text(v, libsumo::VAR_LANE_ID);
-      s.lane_pos = subscription::subscribed_number(v, libsumo::VAR_LANEPOSITION);
-      s.speed = subscription::subscribed_number(v, libsumo::VAR_SPEED);
-      s.accel = subscription::subscribed_number(v, libsumo::VAR_ACCELERATION);
-      const auto& p = static_cast<const libsumo::TraCIPosition&>(*v.at(libsumo::VAR_POSITION));
-      s.x = p.x;
-      s.y = p.y;
-      s.lateral_offset = subscription::subscribed_number(v, libsumo::VAR_LANEPOSITION_LAT);
-      return s;
-    }
+  return guarded("the ego", [this] { return ego_state(); });
+}
+
+template <class Api>
+const EgoState& SessionImpl<Api>::ego_state() const {
+  if (!answers_.ego) answers_.ego = read_ego_state();
+  return *answers_.ego;
+}
+
+template <class Api>
+EgoState SessionImpl<Api>::read_ego_state() const {
+  EgoState s;
+  s.time = time();
+  if (const libsumo::TraCIResults* v = ego_variables()) {
+    s.edge = subscription::subscribed_text(*v, libsumo::VAR_ROAD_ID);
+    s.lane = subscription::subscribed_text(*v, libsumo::VAR_LANE_ID);
+    s.lane_pos = subscription::subscribed_number(*v, libsumo::VAR_LANEPOSITION);
+    s.speed = subscription::subscribed_number(*v, libsumo::VAR_SPEED);
+    s.accel = subscription::subscribed_number(*v, libsumo::VAR_ACCELERATION);
+    const auto& p = static_cast<const libsumo::TraCIPosition&>(*v->at(libsumo::VAR_POSITION));
+    s.x = p.x;
+    s.y = p.y;
+    s.lateral_offset = subscription::subscribed_number(*v, libsumo::VAR_LANEPOSITION_LAT);
+  } else {
     s.edge = Api::Vehicle::getRoadID(ego_);
     s.lane = Api::Vehicle::getLaneID(ego_);
     s.lane_pos = Api::Vehicle::getLanePosition(ego_);
@@ -87,20 +115,30 @@ EgoState SessionImpl<Api>::ego() const {
     s.x = p.x;
     s.y = p.y;
     s.lateral_offset = Api::Vehicle::getLateralLanePosition(ego_);
-    return s;
-  });
+  }
+  return s;
 }
 
 template <class Api>
 int SessionImpl<Api>::ego_signals() const {
   return guarded("the ego's signals", [this] {
-    if (subscribed_) {
-      const libsumo::TraCIResults v = Api::Vehicle::getSubscriptionResults(ego_);
-      if (const auto it = v.find(libsumo::VAR_SIGNALS); it != v.end())
-        return static_cast<const libsumo::TraCIInt&>(*it->second).value;
+    if (!answers_.ego_signals) {
+      const libsumo::TraCIResults* v = ego_variables();
+      answers_.ego_signals =
+          v ? subscription::subscribed_int(*v, libsumo::VAR_SIGNALS, 0) : Api::Vehicle::getSignals(ego_);
     }
-    return Api::Vehicle::getSignals(ego_);
+    return *answers_.ego_signals;
   });
+}
+
+template <class Api>
+int SessionImpl<Api>::ego_lane_index() const {
+  if (!answers_.ego_lane_index) {
+    const libsumo::TraCIResults* v = ego_variables();
+    answers_.ego_lane_index = v ? subscription::subscribed_int(*v, libsumo::VAR_LANE_INDEX, -1)
+                                : Api::Vehicle::getLaneIndex(ego_);
+  }
+  return *answers_.ego_lane_index;
 }
 
 template <class Api>
@@ -130,10 +168,11 @@ template <class Api>
 double SessionImpl<Api>::lateral_offset_from(const std::string& reference_lane_id) const {
   try {
     const std::string& reference_edge = lanes_.lane_edge(reference_lane_id);
-    const double in_lane = Api::Vehicle::getLateralLanePosition(ego_);
-    if (Api::Vehicle::getRoadID(ego_) != reference_edge) return in_lane;  // documented fallback
+    const EgoState& here = ego_state();
+    const double in_lane = here.lateral_offset;
+    if (here.edge != reference_edge) return in_lane;  // documented fallback
     const int reference_index = lanes_.lane_index_on(reference_edge, reference_lane_id);
-    const int ego_index = Api::Vehicle::getLaneIndex(ego_);
+    const int ego_index = ego_lane_index();
     if (reference_index < 0 || ego_index < 0) return in_lane;
     return in_lane + lanes_.centre_distance(reference_edge, reference_index, ego_index);
   } catch (const std::exception& e) {
@@ -143,8 +182,9 @@ double SessionImpl<Api>::lateral_offset_from(const std::string& reference_lane_i
 
 template <class Api>
 std::string SessionImpl<Api>::light_state(const std::string& tls_id) const {
+  if (const std::string* known = StepAnswers::find(answers_.light_states, tls_id)) return *known;
   try {
-    return Api::TrafficLight::getRedYellowGreenState(tls_id);
+    return StepAnswers::keep(answers_.light_states, tls_id, Api::TrafficLight::getRedYellowGreenState(tls_id));
   } catch (const std::exception& e) {
     throw SumoError("SUMO cannot report traffic light '" + tls_id + "': " + failure_reason(e));
   }
@@ -179,9 +219,11 @@ std::vector<LightProgram> SessionImpl<Api>::light_programs(const std::string& tl
 
 template <class Api>
 LightTiming SessionImpl<Api>::light_timing(const std::string& tls_id) const {
+  if (const LightTiming* known = StepAnswers::find(answers_.light_timings, tls_id)) return *known;
   try {
-    return {Api::TrafficLight::getProgram(tls_id), Api::TrafficLight::getPhase(tls_id),
-            Api::TrafficLight::getNextSwitch(tls_id)};
+    return StepAnswers::keep(answers_.light_timings, tls_id,
+                             LightTiming{Api::TrafficLight::getProgram(tls_id), Api::TrafficLight::getPhase(tls_id),
+                                         Api::TrafficLight::getNextSwitch(tls_id)});
   } catch (const std::exception& e) {
     throw SumoError("SUMO cannot report the timing of traffic light '" + tls_id + "': " + failure_reason(e));
   }

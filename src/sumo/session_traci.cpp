@@ -35,6 +35,8 @@ struct LibtraciApi {
   using Lane = libtraci::Lane;
   using Edge = libtraci::Edge;
   using TrafficLight = libtraci::TrafficLight;
+  // One subscribed answer a step instead of a round trip a variable (session_impl.hpp).
+  static constexpr bool kSubscribes = true;
 };
 
 constexpr const char* kView = "View #0";
