@@ -27,7 +27,7 @@ namespace {
 namespace fs = std::filesystem;
 
 // The next line of stdin (without its newline); nullopt at the end or when a signal interrupts the read.
-std::optional<std::string> read_request(std::string& buffer) {
+std::optional<std::string> read_request(int fd, std::string& buffer) {
   while (true) {
     if (const auto end = buffer.find('\n'); end != std::string::npos) {
       std::string line = buffer.substr(0, end);
@@ -35,7 +35,7 @@ std::optional<std::string> read_request(std::string& buffer) {
       return line;
     }
     char chunk[4096];
-    const ssize_t n = read(STDIN_FILENO, chunk, sizeof chunk);
+    const ssize_t n = read(fd, chunk, sizeof chunk);
     if (n > 0) {
       buffer.append(chunk, static_cast<std::size_t>(n));
       continue;
@@ -79,10 +79,18 @@ int serve() {
                             "(file descriptor 3, for the replies, is not open)");
   fcntl(kWorkerReplyFd, F_SETFD, FD_CLOEXEC);  // not for the programs a run starts (tools/plot)
   sumo::install_interruption_handlers();        // also between runs: SIGTERM ends the worker cleanly
+  // The requests move to a descriptor of their own, closed on exec, and stdin becomes /dev/null as
+  // in a process of its own (--isolate): a program a run starts (a TraCI sumo, tools/plot) must not
+  // hold the request pipe open (the batch would not see this worker die) nor read its requests.
+  const int requests = fcntl(STDIN_FILENO, F_DUPFD_CLOEXEC, 10);
+  const int null = open("/dev/null", O_RDONLY | O_CLOEXEC);
+  if (requests < 0 || null < 0 || dup2(null, STDIN_FILENO) < 0)
+    return report_bad_input("worker: cannot move the request pipe off stdin");
+  close(null);
   std::error_code error;
   const fs::path start_dir = fs::current_path(error);
   std::string buffer;
-  while (const std::optional<std::string> line = read_request(buffer)) {
+  while (const std::optional<std::string> line = read_request(requests, buffer)) {
     if (sumo::interruption_requested()) break;
     const auto args = decode_worker_request(*line);
     if (!args) return report_bad_input("worker: a request line that is not tab-separated arguments");
