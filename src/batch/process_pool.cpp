@@ -14,6 +14,7 @@
 #include <chrono>
 #include <climits>
 #include <csignal>
+#include <cstdio>
 #include <cstring>
 #include <thread>
 
@@ -31,7 +32,6 @@ struct Worker {
   bool reaped = false;
   int status = 0;
   bool timed_out = false;
-  bool terminated = false;     // sent SIGTERM by the interrupted pool
   std::string err;
 };
 
@@ -120,6 +120,12 @@ std::string self_executable() {
   return std::string(buf, static_cast<std::size_t>(n));
 }
 
+bool stopped_by_signal(const ProcessResult& result) {
+  if (result.timed_out) return false;  // our SIGKILL: the run's own end, an error row
+  if (result.exited) return result.exit_code == kExitInterrupted || result.exit_code == kExitTerminated;
+  return result.signal == SIGINT || result.signal == SIGTERM;
+}
+
 std::string signal_name(int signal) {
   switch (signal) {
     case SIGKILL: return "SIGKILL";
@@ -170,6 +176,8 @@ bool run_processes(const std::vector<ProcessJob>& jobs, int parallel,
     running.push_back(std::move(w));
   };
 
+  bool stopped = false;  // a run was stopped by a signal sent to it, not to the pool
+  // Reports the reaped worker's run, unless a signal stopped it (the run did not finish: no row).
   auto finish = [&](Worker& w) {
     drain(w);
     close_worker(w);
@@ -183,11 +191,16 @@ bool run_processes(const std::vector<ProcessJob>& jobs, int parallel,
     } else if (WIFSIGNALED(w.status)) {
       r.signal = WTERMSIG(w.status);
     }
+    if (stopped_by_signal(r)) {
+      stopped = true;
+      return;
+    }
     on_done(*w.job, r);
   };
+  const auto stopping = [&] { return stopped || InterruptGuard::interrupted(); };
 
-  while ((next < jobs.size() || !running.empty()) && !InterruptGuard::interrupted()) {
-    while (running.size() < static_cast<std::size_t>(parallel) && next < jobs.size() && !InterruptGuard::interrupted())
+  while ((next < jobs.size() || !running.empty()) && !stopping()) {
+    while (running.size() < static_cast<std::size_t>(parallel) && next < jobs.size() && !stopping())
       start(jobs[next++]);
 
     // Wait for output, an exit (the pipe closes) or the nearest timeout, at most 200 ms.
@@ -224,15 +237,14 @@ bool run_processes(const std::vector<ProcessJob>& jobs, int parallel,
     if (on_tick) on_tick();
   }
 
-  if (!InterruptGuard::interrupted()) return true;
+  if (!stopping()) return true;
+  if (stopped && !InterruptGuard::interrupted())
+    std::fprintf(stderr, "signalsim: a run was stopped by a signal sent to its process: the batch stops\n");
   // Interrupted: stop every worker still running. A worker that had already finished by itself
   // (it exited, it was not killed) is reported: its run is complete and must not be lost.
   for (Worker& w : running) reap(w, false);
   for (Worker& w : running)
-    if (!w.reaped) {
-      kill(-w.pid, SIGTERM);
-      w.terminated = true;
-    }
+    if (!w.reaped) kill(-w.pid, SIGTERM);
   const auto deadline = Clock::now() + std::chrono::seconds(2);
   for (Worker& w : running) {
     while (!reap(w, false) && Clock::now() < deadline) std::this_thread::sleep_for(std::chrono::milliseconds(10));
@@ -243,11 +255,10 @@ bool run_processes(const std::vector<ProcessJob>& jobs, int parallel,
   }
   std::sort(running.begin(), running.end(), [](const Worker& a, const Worker& b) { return a.job->id < b.job->id; });
   for (Worker& w : running) {
-    // A worker stopped here unwinds and exits with the terminated code 143 (signalsim run handles
-    // SIGTERM): that run did not finish, no row. One that exited by itself in the meantime did.
-    const bool stopped = w.terminated && WIFEXITED(w.status) &&
-                         (WEXITSTATUS(w.status) == kExitTerminated || WEXITSTATUS(w.status) == kExitInterrupted);
-    if (WIFEXITED(w.status) && !stopped) finish(w);
+    // A worker stopped here - or by a signal of its own, as Slurm's scancel signals every process -
+    // unwinds and exits 143 or 130 (finish drops it: that run did not finish, no row). One that
+    // exited by itself in the meantime did finish; one killed by another signal did not.
+    if (WIFEXITED(w.status)) finish(w);
     else close_worker(w);
   }
   return false;

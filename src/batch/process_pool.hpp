@@ -10,6 +10,9 @@
 //       timed out
 //     on SIGINT/SIGTERM: start nothing more, SIGTERM every worker's group (SIGKILL after 2 s),
 //       reap them without reporting them, return false
+//     a run that a SIGINT/SIGTERM reached itself (stopped_by_signal: a `kill` of its process or
+//       group, Slurm's scancel signalling every process of a task) did not finish: it is not
+//       reported and the pool stops as if the signal had reached it (docs/batch.md "Ctrl-C")
 #pragma once
 
 #include <cstddef>
@@ -34,10 +37,16 @@ struct ProcessResult {
   double wall = 0.0;               ///< [s]
 };
 
+/// Whether a run ended because a SIGINT or SIGTERM reached it rather than by finishing: it exited
+/// 130 or 143 (what `signalsim run` exits with when one stops it), or one killed it before its
+/// handlers were installed. Not for a run the pool killed after its timeout.
+bool stopped_by_signal(const ProcessResult& result);
+
 /// Runs `jobs` with at most `parallel` at a time. `on_done` is called for every job that finished
 /// (exit, signal, timeout), in completion order; `on_tick` about every 200 ms. Returns false when
-/// interrupted by SIGINT or SIGTERM (the signals are handled only while run() runs); the jobs
-/// still running are then killed and not reported.
+/// interrupted by SIGINT or SIGTERM (the signals are handled only while run() runs), or when a run
+/// was stopped by one sent to it directly (stopped_by_signal); the jobs still running are then
+/// killed and not reported, nor is the stopped run.
 bool run_processes(const std::vector<ProcessJob>& jobs, int parallel,
                    const std::function<void(const ProcessJob&, const ProcessResult&)>& on_done,
                    const std::function<void()>& on_tick = {});

@@ -7,12 +7,12 @@
 #include <algorithm>
 #include <chrono>
 #include <csignal>
+#include <cstdio>
 #include <memory>
 #include <thread>
 
 #include "batch/interrupt_guard.hpp"
 #include "batch/worker_process.hpp"
-#include "report/exit_codes.hpp"
 
 namespace signalsim {
 namespace {
@@ -111,15 +111,28 @@ void wait_for_workers(const std::vector<Slot>& slots) {
   else if (busy) std::this_thread::sleep_for(std::chrono::duration<double>(wait));
 }
 
-// Reads a worker's replies and notices its end and its run's timeout; finished runs go to `finished`.
-void collect(Slot& slot, std::vector<Finished>& finished) {
-  if (!slot.worker) return;
+// Takes the replies that arrived. A run that finished goes to `finished`; one that a SIGINT or
+// SIGTERM stopped (it replied 130 or 143: the signal reached the worker itself, as Slurm's scancel
+// signals every process of a task) did not finish - no row - and sets `stopped`. True when the
+// worker said it ends after its reply.
+bool take_replies(Slot& slot, std::vector<Finished>& finished, bool& stopped) {
   slot.worker->read_available();
   bool last = false;
   for (WorkerReply reply; slot.worker->take_reply(reply);) {
-    if (slot.job) finished.push_back(replied(slot, reply.exit_code));
     last = last || reply.last;
+    if (!slot.job) continue;
+    Finished f = replied(slot, reply.exit_code);
+    if (stopped_by_signal(f.result)) stopped = true;
+    else finished.push_back(std::move(f));
   }
+  return last;
+}
+
+// Reads a worker's replies and notices its end and its run's timeout; finished runs go to
+// `finished`. `stopped`: a signal sent to the worker itself stopped it (take_replies).
+void collect(Slot& slot, std::vector<Finished>& finished, bool& stopped) {
+  if (!slot.worker) return;
+  const bool last = take_replies(slot, finished, stopped);
   if (last) {
     slot.worker.reset();  // it ends by itself after this reply: the next job gets a new worker
     slot.broken = false;
@@ -138,7 +151,17 @@ void collect(Slot& slot, std::vector<Finished>& finished) {
   if (slot.job) {
     Finished f = ended(slot);
     if (slot.broken) f.result.stderr_text += (f.result.stderr_text.empty() ? "" : "\n") + slot.worker->reply_error();
-    finished.push_back(std::move(f));
+    // Ended without a reply through a SIGINT/SIGTERM of its own (before its handlers were installed,
+    // or between two runs): its run did not finish either.
+    if (!slot.broken && stopped_by_signal(f.result)) stopped = true;
+    else finished.push_back(std::move(f));
+  } else {
+    ProcessResult idle;  // an idle worker that such a signal ended: the same stop
+    const int status = slot.worker->wait_status();
+    idle.exited = WIFEXITED(status);
+    idle.exit_code = idle.exited ? WEXITSTATUS(status) : -1;
+    idle.signal = WIFSIGNALED(status) ? WTERMSIG(status) : 0;
+    if (!slot.broken && stopped_by_signal(idle)) stopped = true;
   }
   slot.broken = false;
   slot.worker.reset();  // the next job gets a new worker
@@ -152,15 +175,15 @@ void report(std::vector<Finished>& finished,
 }
 
 // Interrupted: the runs that ended are reported, every worker is stopped (SIGTERM, SIGKILL after the
-// grace time). A run that ends by itself meanwhile is reported; one the signal stopped (130, 143) not.
+// grace time). A run that ends by itself meanwhile is reported; one a signal stopped (130, 143: ours,
+// or one that reached the worker before it) not.
 void stop_workers(std::vector<Slot>& slots,
                   const std::function<void(const ProcessJob&, const ProcessResult&)>& on_done) {
   std::vector<Finished> finished;
+  bool stopped = false;  // known already
   for (Slot& slot : slots) {
     if (!slot.worker) continue;
-    slot.worker->read_available();
-    for (WorkerReply reply; slot.worker->take_reply(reply);)
-      if (slot.job) finished.push_back(replied(slot, reply.exit_code));
+    take_replies(slot, finished, stopped);
     slot.worker->close_requests();
     slot.worker->signal_group(SIGTERM);
   }
@@ -170,12 +193,7 @@ void stop_workers(std::vector<Slot>& slots,
     std::vector<pollfd> fds;
     for (Slot& slot : slots) {
       if (!slot.worker) continue;
-      slot.worker->read_available();
-      for (WorkerReply reply; slot.worker->take_reply(reply);) {
-        if (!slot.job) continue;
-        Finished f = replied(slot, reply.exit_code);
-        if (reply.exit_code != kExitInterrupted && reply.exit_code != kExitTerminated) finished.push_back(std::move(f));
-      }
+      take_replies(slot, finished, stopped);
       if (slot.worker->pipes_closed() && slot.worker->reap(false)) {
         slot.job = nullptr;  // ended without a reply: stopped, no row
         slot.worker.reset();
@@ -202,9 +220,11 @@ bool run_in_workers(const std::vector<ProcessJob>& jobs, int parallel,
   std::size_t next = 0;
   const auto busy = [&] { return std::any_of(slots.begin(), slots.end(), [](const Slot& s) { return s.job; }); };
   std::vector<Finished> finished;
-  while ((next < jobs.size() || busy()) && !InterruptGuard::interrupted()) {
+  bool stopped = false;  // a signal sent to a worker itself stopped its run: the batch stops too
+  const auto stopping = [&] { return stopped || InterruptGuard::interrupted(); };
+  while ((next < jobs.size() || busy()) && !stopping()) {
     for (Slot& slot : slots) {
-      if (slot.job || next >= jobs.size() || InterruptGuard::interrupted()) continue;
+      if (slot.job || next >= jobs.size() || stopping()) continue;
       const ProcessJob& job = jobs[next++];
       std::string error;
       if (!dispatch(slot, job, error)) {
@@ -214,11 +234,13 @@ bool run_in_workers(const std::vector<ProcessJob>& jobs, int parallel,
       }
     }
     wait_for_workers(slots);
-    for (Slot& slot : slots) collect(slot, finished);
+    for (Slot& slot : slots) collect(slot, finished, stopped);
     report(finished, on_done);
     if (on_tick) on_tick();
   }
-  if (InterruptGuard::interrupted()) {
+  if (stopping()) {
+    if (stopped && !InterruptGuard::interrupted())
+      std::fprintf(stderr, "signalsim: a run was stopped by a signal sent to its worker: the batch stops\n");
     stop_workers(slots, on_done);
     return false;
   }

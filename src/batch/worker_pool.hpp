@@ -15,6 +15,10 @@
 //   on SIGINT/SIGTERM: start nothing more; replies already there are reported; every worker's
 //     group gets SIGTERM (SIGKILL after 2 s); a run that still ends by itself in that time (exit
 //     code neither 130 nor 143) is reported, the others not; returns false
+//   a SIGINT/SIGTERM that reaches a worker itself (a `kill` of it or its group; Slurm's scancel
+//     signals every process of a task, often the worker before the pool) stops its run as it stops
+//     `signalsim run`: the reply 130 or 143 (or its end by that signal) is no finished run, no row;
+//     the pool then stops as above, as if the signal had reached it
 #pragma once
 
 #include <functional>

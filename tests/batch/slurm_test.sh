@@ -113,10 +113,13 @@ slow=$src/tests/batch/data/sweep_slow.yaml
 "$bin" sweep "$slow" --backend slurm --chunk 5 --no-wait --out "$work/slow" > "$work/slow.log" 2>&1 ||
   fail "sweep_slow --no-wait: exit code $? ($(cat "$work/slow.log"))"
 sjob=$(job_of "$work/slow")
-for i in $(seq 1 400); do
+# scancel signals every process of the task (proctrack/linuxproc): run-chunk and its worker, in
+# either order; the run the worker was doing must end without a row, not as an "interrupted" error.
+for i in $(seq 1 2400); do
   ls "$work"/slow/runs/0000-*/row.csv > /dev/null 2>&1 && break
   sleep 0.05
 done
+ls "$work"/slow/runs/0000-*/row.csv > /dev/null 2>&1 || fail "run 0 of job $sjob left no row.csv in 2 minutes"
 scancel "$sjob" || fail "scancel $sjob"
 "$bin" sweep "$slow" --out "$work/slow" --collect > "$work/slow_collect.log" 2>&1
 code=$?

@@ -3,8 +3,10 @@
 # run 1 (kill from here, on its process id) makes run 1 an error row "worker killed by SIGSEGV" and
 # the runs after it finish in a new worker; (2) a run past --timeout is an error row "timed out", its
 # worker is killed and replaced, the rest finish; (3) SIGINT or SIGTERM to the sweep: exit 130, the
-# finished rows kept, no row for the interrupted run, no worker left. Sweep: sweep_crash.yaml (run
-# 1 takes most of a minute, the others a fraction of a second).
+# finished rows kept, no row for the interrupted run, no worker left; (4) SIGTERM to the worker
+# itself (alone, or with the sweep, as Slurm's scancel): exit 130, no row for its run, run 0's row
+# and files untouched, --resume completes. Sweep: sweep_crash.yaml (run 1 takes most of a minute,
+# the others a fraction of a second).
 # usage: workers_isolation_test.sh SIGNALSIM_BINARY SOURCE_DIR
 set -u
 bin=$1
@@ -91,4 +93,39 @@ for sig in INT TERM; do
 done
 pid=
 echo "ok   SIGINT and SIGTERM: exit 130, finished rows kept, no row for the stopped run, no worker left"
+
+# (4) SIGTERM that reaches the worker itself during run 1 (a `kill` of it, or Slurm's scancel, which
+#     signals every process of a task): alone, and together with the sweep; persistent workers and
+#     --isolate. The stopped run is no result - no row, not an error row - and the sweep stops as for
+#     its own SIGTERM (exit 130); run 0's row and files stay as they were; --resume completes.
+files_of_run0() { (cd "$1"/runs/0000-* && sha1sum ./*); }
+for mode in workers isolate; do
+  for target in worker both; do
+    out=$work/own_${mode}_$target
+    flag=; [ $mode = isolate ] && flag=--isolate
+    "$bin" sweep "$sweep" --out "$out" --jobs 1 $flag > "$out.log" 2>&1 &
+    pid=$!
+    wait_run "$out" 1 || fail "$mode, $target: run 1 never started"
+    w=$(workers)
+    [ "$(echo "$w" | wc -w)" -eq 1 ] || fail "$mode: workers '$w', not one"
+    files_of_run0 "$out" > "$out.run0" || fail "$mode, $target: run 0 has no files"
+    if [ $target = both ]; then kill -TERM "$w" "$pid"; else kill -TERM "$w"; fi
+    wait "$pid"
+    code=$?
+    [ $code -eq 130 ] || fail "$mode, SIGTERM to $target: exit code $code, not 130 ($(tail -3 "$out.log"))"
+    rows "$out/results.csv" > "$out.rows"
+    [ "$(cat "$out.rows")" = "0 passed " ] || fail "$mode, SIGTERM to $target: rows: $(cat "$out.rows")"
+    files_of_run0 "$out" | cmp -s - "$out.run0" || fail "$mode, SIGTERM to $target: run 0's files changed"
+    [ $target = both ] || continue
+    "$bin" sweep "$sweep" --out "$out" --jobs 1 $flag --resume --timeout 3 > "$out.resume.log" 2>&1
+    rows "$out/results.csv" > "$out.rows"
+    grep -q "^resuming: 1 of 6 runs already done, 5 to run" "$out.resume.log" ||
+      fail "$mode, $target: --resume: $(head -1 "$out.resume.log")"
+    grep -qx "1 error timed out: still running after the 3 s limit (worker killed)" "$out.rows" ||
+      fail "$mode, $target: --resume did not run run 1 again: $(sed -n 2p "$out.rows")"
+    [ "$(grep -c " passed $" "$out.rows")" -eq 5 ] || fail "$mode, $target: --resume: $(cat "$out.rows")"
+  done
+done
+pid=
+echo "ok   SIGTERM to a worker itself (alone, or with the sweep): exit 130, no row for its run, run 0 untouched"
 echo "workers_isolation_test passed"
