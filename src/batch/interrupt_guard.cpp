@@ -20,12 +20,19 @@ InterruptGuard::InterruptGuard() {
   ignore.sa_handler = SIG_IGN;
   sigemptyset(&ignore.sa_mask);
   sigaction(SIGPIPE, &ignore, &old_pipe_);
+  // SIGCHLD at its default: inherited as ignored (nohup, some CI runners), the kernel would reap the
+  // workers itself and waitpid could not tell a crash (SIGSEGV) from a clean end.
+  struct sigaction child {};
+  child.sa_handler = SIG_DFL;
+  sigemptyset(&child.sa_mask);
+  sigaction(SIGCHLD, &child, &old_chld_);
 }
 
 InterruptGuard::~InterruptGuard() {
   sigaction(SIGINT, &old_int_, nullptr);
   sigaction(SIGTERM, &old_term_, nullptr);
   sigaction(SIGPIPE, &old_pipe_, nullptr);
+  sigaction(SIGCHLD, &old_chld_, nullptr);
 }
 
 bool InterruptGuard::interrupted() { return g_interrupted != 0; }

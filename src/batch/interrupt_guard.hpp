@@ -1,7 +1,8 @@
 // Ctrl-C and SIGTERM while a batch's runs are under way (process_pool, worker_pool): while an
 // InterruptGuard lives, SIGINT and SIGTERM only set a flag (no SA_RESTART, so a blocking poll or
 // read returns at once) and SIGPIPE is ignored (a worker that died must not take the batch with it
-// when it is written to); the previous handlers come back when it ends.
+// when it is written to) and SIGCHLD is at its default (so waitpid sees how each worker ended); the
+// previous handlers come back when it ends.
 #pragma once
 
 #include <csignal>
@@ -22,6 +23,7 @@ class InterruptGuard {
   struct sigaction old_int_ {};
   struct sigaction old_term_ {};
   struct sigaction old_pipe_ {};
+  struct sigaction old_chld_ {};
 };
 
 }  // namespace signalsim

@@ -81,6 +81,7 @@ bool dispatch(Slot& slot, const ProcessJob& job, std::string& error) {
         return false;
       }
     }
+    slot.worker->take_stderr();  // what it wrote while idle belongs to no run
     if (slot.worker->send(args)) {
       slot.job = &job;
       slot.start = Clock::now();
