@@ -7,7 +7,11 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 
@@ -18,17 +22,27 @@ namespace {
 
 bool executable(const std::string& path) { return ::access(path.c_str(), X_OK) == 0; }
 
-// Reads both pipes until both are closed.
-void drain(int out_fd, int err_fd, std::string& out, std::string& err) {
+using Clock = std::chrono::steady_clock;
+
+// Reads both pipes until both are closed; false when `deadline` came first.
+bool drain(int out_fd, int err_fd, std::string& out, std::string& err, Clock::time_point deadline) {
   pollfd fds[2] = {{out_fd, POLLIN, 0}, {err_fd, POLLIN, 0}};
   std::string* into[2] = {&out, &err};
   int open_count = 2;
   char buf[4096];
+  bool in_time = true;
   while (open_count > 0) {
-    if (::poll(fds, 2, -1) < 0) {
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count();
+    if (left <= 0) {
+      in_time = false;
+      break;
+    }
+    const int ready = ::poll(fds, 2, static_cast<int>(std::min<long long>(left, 1000)));
+    if (ready < 0) {
       if (errno == EINTR) continue;
       break;
     }
+    if (ready == 0) continue;
     for (int i = 0; i < 2; ++i) {
       if (fds[i].fd < 0 || !(fds[i].revents & (POLLIN | POLLHUP | POLLERR))) continue;
       const ssize_t n = ::read(fds[i].fd, buf, sizeof buf);
@@ -43,6 +57,7 @@ void drain(int out_fd, int err_fd, std::string& out, std::string& err) {
   }
   for (const pollfd& p : fds)
     if (p.fd >= 0) ::close(p.fd);
+  return in_time;
 }
 
 }  // namespace
@@ -62,7 +77,10 @@ std::string find_on_path(const std::string& program) {
   return "";
 }
 
-ProgramOutput run_program(const std::vector<std::string>& argv, const std::vector<std::string>& extra_env) {
+ProgramOutput run_program(const std::vector<std::string>& argv, const std::vector<std::string>& extra_env,
+                          double timeout_seconds) {
+  const auto deadline =
+      Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(timeout_seconds));
   ProgramOutput result;
   const std::string program = argv.empty() ? "" : find_on_path(argv[0]);
   if (program.empty()) {
@@ -113,7 +131,14 @@ ProgramOutput run_program(const std::vector<std::string>& argv, const std::vecto
     return result;
   }
   result.started = true;
-  drain(out_pipe[0], err_pipe[0], result.out, result.err);
+  if (!drain(out_pipe[0], err_pipe[0], result.out, result.err, deadline)) {
+    // Its whole process group: a helper it started must not keep the pipes (or the controller) busy.
+    ::kill(-pid, SIGKILL);
+    result.timed_out = true;
+    char seconds[32];
+    std::snprintf(seconds, sizeof seconds, "%g", timeout_seconds);
+    result.err = "did not answer within " + std::string(seconds) + " s";
+  }
   int status = 0;
   while (::waitpid(pid, &status, 0) < 0) {
     if (errno != EINTR) return result;

@@ -49,13 +49,15 @@ int run_chunk(const std::string& out_dir, std::size_t index, int jobs) {
     fs::remove_all(fs::path(out) / run.run_dir);  // half-written by an attempt that was stopped
     to_run.push_back(&specs[i]);
   }
-  std::printf("chunk %zu: %zu runs (%zu already done), %d at a time\n", index, specs.size(), already, jobs);
+  std::printf("chunk %zu: %zu runs (%zu already done), %d at a time%s\n", index, specs.size(), already, jobs,
+              list.isolate ? ", one process per run (--isolate)" : "");
   std::fflush(stdout);
 
   BatchSettings settings;
   settings.out_dir = out;
   settings.jobs = jobs;
   settings.timeout = list.timeout;
+  settings.isolate = list.isolate;
   BatchProgress progress(to_run.size(), false);
   int code = 0;
   const bool completed = run_in_worker_pool(

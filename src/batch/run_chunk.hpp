@@ -1,5 +1,5 @@
 // One Slurm array task's work (`signalsim run-chunk OUT INDEX`): chunk INDEX of OUT/slurm/chunks.json
-// run with the local worker pool, from the submission's working directory, each finished run's row
+// run with the local worker pool (one process per run when the submission had --isolate), from the submission's working directory, each finished run's row
 // written atomically to RUNDIR/row.csv (run_row_file.hpp) for the submitting side to merge. A run
 // that already has a finished row file (the task was requeued) is not run again.
 #pragma once

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "batch/batch_progress.hpp"
+#include "batch/interrupt_guard.hpp"
 #include "batch/process_pool.hpp"
 #include "batch/program_output.hpp"
 #include "batch/run_outputs.hpp"
@@ -59,12 +60,12 @@ SlurmOutcome run_batch_on_slurm(const std::vector<RunSpec>& runs, const BatchSet
   submission.job_name = "signalsim-" + fs::path(out).filename().string();
   submission.max_parallel = slurm.max_parallel;
   submission.cpus_per_task = settings.jobs;
-  submission.output = (fs::path(slurm_dir(out)) / "logs" / "task-%A_%a.log").string();
+  submission.output = output_pattern((fs::path(slurm_dir(out)) / "logs").string(), "task-%A_%a.log");
   submission.partition = slurm.partition;
   submission.time = slurm.time;
   submission.extra_args = slurm.sbatch_args;
   check_submission(submission);  // a bad --partition is refused before OUT changes
-  const SlurmStopSignals signals;  // from here, Ctrl-C ends in the wait below, which cancels the job
+  const InterruptGuard signals;  // from here, Ctrl-C ends in the wait below, which cancels the job
 
   SlurmOutcome outcome;
   BatchStart batch = start_batch(runs, settings);
@@ -89,6 +90,7 @@ SlurmOutcome run_batch_on_slurm(const std::vector<RunSpec>& runs, const BatchSet
   ChunkList list;
   list.directory = fs::current_path().string();
   list.timeout = settings.timeout;
+  list.isolate = settings.isolate;
   list.chunks = make_chunks(to_run, size);
 
   remove_job_record(out);  // the chunk list is about to describe another job
@@ -96,7 +98,7 @@ SlurmOutcome run_batch_on_slurm(const std::vector<RunSpec>& runs, const BatchSet
   fs::create_directories(fs::path(slurm_dir(out)) / "logs");
   submission.script = write_task_script(out, self_executable());
   submission.tasks = list.chunks.size();
-  if (SlurmStopSignals::stop_requested()) {  // Ctrl-C before anything was submitted
+  if (InterruptGuard::interrupted()) {  // Ctrl-C before anything was submitted
     progress.end();
     outcome.result = finish_batch(batch, settings, false);
     return outcome;
@@ -112,7 +114,7 @@ SlurmOutcome run_batch_on_slurm(const std::vector<RunSpec>& runs, const BatchSet
                 slurm.max_parallel > 0 ? (", at most " + std::to_string(slurm.max_parallel) + " at a time").c_str() : "");
   std::fflush(stdout);
 
-  if (!slurm.wait && !SlurmStopSignals::stop_requested()) {
+  if (!slurm.wait && !InterruptGuard::interrupted()) {
     outcome.waited = false;
     progress.end();
     outcome.result = finish_batch(batch, settings, true);
@@ -168,6 +170,7 @@ BatchResult collect_slurm_batch(const std::vector<RunSpec>& runs, const BatchSet
     std::printf("collecting Slurm job %s: %s in %s\n", job->id.c_str(), plural(to_collect, "run").c_str(),
                 plural(job->tasks, "array task").c_str());
   BatchProgress progress(to_collect, settings.quiet);
+  const InterruptGuard signals;  // Ctrl-C only stops waiting
   const bool completed = wait_for_slurm_job(batch, settings, list, *job, progress, false);
   progress.end();
   return finish_batch(batch, settings, completed);

@@ -58,6 +58,7 @@ void write_chunk_list(const std::string& out_dir, const ChunkList& list) {
   doc["format"] = kChunkFormat;
   doc["directory"] = list.directory;
   doc["timeout"] = list.timeout;
+  doc["isolate"] = list.isolate;
   doc["chunks"] = nlohmann::ordered_json::array();
   for (const auto& chunk : list.chunks) {
     nlohmann::ordered_json runs = nlohmann::ordered_json::array();
@@ -91,6 +92,7 @@ ChunkList read_chunk_list(const std::string& out_dir) {
     if (doc.value("format", "") != kChunkFormat) throw std::runtime_error("not a signalsim chunk list");
     list.directory = doc.at("directory").get<std::string>();
     list.timeout = doc.at("timeout").get<double>();
+    list.isolate = doc.value("isolate", false);  // absent in lists written before --isolate was kept
     for (const auto& chunk : doc.at("chunks")) {
       std::vector<ChunkRun> runs;
       for (const auto& item : chunk) {
@@ -116,7 +118,7 @@ std::string write_task_script(const std::string& out_dir, const std::string& pro
   const std::string path = (fs::path(slurm_dir(out_dir)) / "task.sh").string();
   write_file_atomically(path, "#!/bin/sh\n"
                               "# Written by signalsim (--backend slurm, docs/slurm.md): array task N runs chunk N\n"
-                              "# of " + out_dir + "/slurm/chunks.json with the local pool, one row file per run.\n"
+                              "# of OUT/slurm/chunks.json with the local pool, one row file per run.\n"
                               "exec " + shell_quoted(program) + " run-chunk " + shell_quoted(out_dir) +
                               " \"$SLURM_ARRAY_TASK_ID\"\n");
   ::chmod(path.c_str(), 0755);

@@ -1,7 +1,7 @@
 // What a Slurm submission leaves in OUT/slurm/ for its tasks and for a later --collect:
 //   chunks.json   the runs to run, cut into chunks of consecutive runs, one chunk per array task
 //                 (each run: index, scenario file, name, swept values, --set items, run directory),
-//                 the working directory of the submission and the timeout per run
+//                 the working directory of the submission, the timeout per run and --isolate
 //   task.sh       the batch script: `signalsim run-chunk OUT $SLURM_ARRAY_TASK_ID`
 //   job.json      the submitted job's id and its number of tasks (written once sbatch accepted it)
 //   logs/         each task's output (task-<job>_<task>.log)
@@ -26,6 +26,7 @@ struct ChunkRun {
 struct ChunkList {
   std::string directory;  ///< the submission's working directory (scenario paths are relative to it)
   double timeout = 300.0;
+  bool isolate = false;  ///< --isolate: one process per run in the tasks' pools too
   std::vector<std::vector<ChunkRun>> chunks;  ///< by array task index
 };
 

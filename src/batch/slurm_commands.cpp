@@ -15,6 +15,19 @@ void require_slurm_programs(const std::vector<std::string>& programs) {
                                " is not on PATH (install slurm-client, or load the cluster's Slurm module)");
 }
 
+std::string output_pattern(const std::string& directory, const std::string& name) {
+  // sbatch's --output is a filename pattern (%j, %A, %a, ... replaced; "%%" is a '%'), made
+  // absolute with the task's directory before it is expanded, so a relative name and --chdir
+  // would not keep the user's path out of it either.
+  if (directory.find('\\') != std::string::npos)
+    throw std::runtime_error("--backend slurm: --out " + directory.substr(0, directory.rfind("/slurm/logs")) +
+                             " holds a '\\', with which sbatch names every task's log alike (no %A/%a "
+                             "patterns): choose an --out without it");
+  std::string out;
+  for (const char c : directory) out += c == '%' ? std::string("%%") : std::string(1, c);
+  return out + "/" + name;
+}
+
 std::vector<std::string> sbatch_argv(const ArraySubmission& s) {
   std::vector<std::string> argv = {"sbatch", "--parsable", "--job-name=" + s.job_name,
                                    "--array=0-" + std::to_string(s.tasks - 1) +
@@ -30,8 +43,11 @@ std::vector<std::string> sbatch_argv(const ArraySubmission& s) {
 namespace {
 
 // Throws "sbatch refused the job: <its stderr on one line>" unless sbatch exited 0.
-void throw_unless_accepted(const ProgramOutput& out) {
+void throw_unless_accepted(const ProgramOutput& out, const std::string& job_name) {
   if (out.started && out.exit_code == 0) return;
+  if (out.timed_out)
+    throw std::runtime_error("sbatch " + out.err + " and was stopped (is the Slurm controller up? scontrol ping); " +
+                             "it may have made a job all the same: squeue --me --name=" + job_name);
   // sbatch's own lines start "sbatch: error: "; stderr_one_line joins them and drops our prefix only.
   std::string message = stderr_one_line(out.err);
   for (std::size_t at; (at = message.find("sbatch: error: ")) != std::string::npos;) message.erase(at, 15);
@@ -48,12 +64,12 @@ void check_submission(const ArraySubmission& submission) {
   std::vector<std::string> argv = sbatch_argv(probe);
   argv.back() = "--wrap=true";  // instead of the script, which is not written yet
   argv.insert(argv.begin() + 1, "--test-only");
-  throw_unless_accepted(run_program(argv));
+  throw_unless_accepted(run_program(argv, {}, kSlurmSubmitTimeout), submission.job_name);
 }
 
 std::string submit_array(const ArraySubmission& submission) {
-  const ProgramOutput out = run_program(sbatch_argv(submission));
-  throw_unless_accepted(out);
+  const ProgramOutput out = run_program(sbatch_argv(submission), {}, kSlurmSubmitTimeout);
+  throw_unless_accepted(out, submission.job_name);
   // --parsable: "JOBID" or "JOBID;CLUSTER".
   std::string id = out.out.substr(0, out.out.find_first_of(";\n"));
   while (!id.empty() && (id.back() == '\r' || id.back() == ' ')) id.pop_back();
@@ -66,13 +82,16 @@ QueueReading read_queue(const std::string& job_id) {
   // SLURM_BITSTR_LEN=0: the pending part of an array ("3-7,9%2") is printed whole, never cut at 64
   // characters.
   const ProgramOutput out = run_program(
-      {"squeue", "--noheader", "--jobs=" + job_id, "--states=all", "--format=%K|%T"}, {"SLURM_BITSTR_LEN=0"});
+      {"squeue", "--noheader", "--jobs=" + job_id, "--states=all", "--format=%K|%T"}, {"SLURM_BITSTR_LEN=0"},
+      kSlurmQueryTimeout);
   QueueReading reading;
   if (out.started && out.exit_code == 0) {
     reading.ok = true;
     reading.tasks = parse_task_states(out.out);
   } else if (out.started && out.err.find("Invalid job id") != std::string::npos) {
     reading.ok = true;  // purged (older than MinJobAge): nothing of it is pending or running
+  } else if (out.timed_out) {
+    reading.error = "squeue " + out.err + " (is the Slurm controller up? scontrol ping)";
   } else {
     reading.error = "squeue: " + stderr_one_line(out.err.empty() ? out.out : out.err);
   }
@@ -80,13 +99,14 @@ QueueReading read_queue(const std::string& job_id) {
 }
 
 std::string cancel_job(const std::string& job_id) {
-  const ProgramOutput out = run_program({"scancel", job_id});
+  const ProgramOutput out = run_program({"scancel", job_id}, {}, kSlurmQueryTimeout);
   if (out.started && out.exit_code == 0) return "";
+  if (out.timed_out) return "scancel " + job_id + " " + out.err;
   return "scancel " + job_id + ": " + stderr_one_line(out.err);
 }
 
 std::size_t max_array_size(std::size_t fallback) {
-  const ProgramOutput out = run_program({"scontrol", "show", "config"});
+  const ProgramOutput out = run_program({"scontrol", "show", "config"}, {}, kSlurmQueryTimeout);
   if (!out.started || out.exit_code != 0) return fallback;
   const std::size_t key = out.out.find("MaxArraySize");
   if (key == std::string::npos) return fallback;

@@ -21,11 +21,16 @@ struct ArraySubmission {
   std::size_t tasks = 0;                ///< --array=0-(tasks-1)
   int max_parallel = 0;                 ///< %M; 0: no limit
   int cpus_per_task = 1;                ///< --cpus-per-task
-  std::string output;                   ///< --output pattern (%A job, %a task)
+  std::string output;                   ///< --output pattern (%A job, %a task); output_pattern() makes it
   std::string partition;                ///< --partition; "" the cluster's default
   std::string time;                     ///< --time; "" the partition's default
   std::vector<std::string> extra_args;  ///< --slurm-arg, passed to sbatch as they are, before the script
 };
+
+/// `directory/name` as an sbatch --output pattern: a '%' of the directory (a user's --out) doubled,
+/// so that only `name`'s %A and %a are replaced. Throws std::runtime_error for a directory with a
+/// '\' (sbatch then replaces no pattern at all, and the tasks' logs could not be told apart).
+std::string output_pattern(const std::string& directory, const std::string& name);
 
 /// sbatch's argv for the submission (--parsable first).
 std::vector<std::string> sbatch_argv(const ArraySubmission& submission);
@@ -35,7 +40,14 @@ std::vector<std::string> sbatch_argv(const ArraySubmission& submission);
 /// submit_array.
 void check_submission(const ArraySubmission& submission);
 
-/// Submits; returns the job id. Throws std::runtime_error "sbatch refused the job: <its message>".
+/// How long a Slurm command may take before it is killed and its call fails with one line: a
+/// controller that never answers must not hang the submitting command (nor its Ctrl-C). sbatch gets
+/// longer: a submission that timed out may still have made a job (the message says how to look).
+constexpr double kSlurmQueryTimeout = 60.0;   ///< squeue, scancel, scontrol
+constexpr double kSlurmSubmitTimeout = 300.0; ///< sbatch
+
+/// Submits; returns the job id. Throws std::runtime_error "sbatch refused the job: <its message>",
+/// or "sbatch did not answer within 300 s ..." (naming the job to look for with squeue).
 std::string submit_array(const ArraySubmission& submission);
 
 /// The states of the job's array tasks (squeue --states=all). `ok` false when squeue failed (error

@@ -4,11 +4,11 @@
 #include <poll.h>
 
 #include <chrono>
-#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <optional>
 
+#include "batch/interrupt_guard.hpp"
 #include "batch/run_row_file.hpp"
 #include "batch/slurm_commands.hpp"
 
@@ -17,12 +17,6 @@ namespace fs = std::filesystem;
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-volatile std::sig_atomic_t g_stop = 0;
-extern "C" void on_stop_signal(int) { g_stop = 1; }
-int g_depth = 0;
-struct sigaction g_old_int {};
-struct sigaction g_old_term {};
 
 // The runs of each chunk still without a row.
 struct Waiting {
@@ -33,24 +27,6 @@ struct Waiting {
 std::string task_name(const SlurmJob& job, std::size_t task) { return job.id + "_" + std::to_string(task); }
 
 }  // namespace
-
-SlurmStopSignals::SlurmStopSignals() {
-  if (g_depth++ > 0) return;
-  g_stop = 0;
-  struct sigaction sa {};
-  sa.sa_handler = on_stop_signal;  // no SA_RESTART: a sleep wakes up
-  sigemptyset(&sa.sa_mask);
-  sigaction(SIGINT, &sa, &g_old_int);
-  sigaction(SIGTERM, &sa, &g_old_term);
-}
-
-SlurmStopSignals::~SlurmStopSignals() {
-  if (--g_depth > 0) return;
-  sigaction(SIGINT, &g_old_int, nullptr);
-  sigaction(SIGTERM, &g_old_term, nullptr);
-}
-
-bool SlurmStopSignals::stop_requested() { return g_stop != 0; }
 
 ResultRow lost_run_row(const RunSpec& run, const std::string& out_dir, const std::string& run_dir,
                        const std::string& task, const std::string& state) {
@@ -78,7 +54,6 @@ ResultRow lost_run_row(const RunSpec& run, const std::string& out_dir, const std
 
 bool wait_for_slurm_job(BatchStart& batch, const BatchSettings& settings, const ChunkList& list, const SlurmJob& job,
                         BatchProgress& progress, bool cancel_on_interrupt) {
-  const SlurmStopSignals signals;
   Waiting waiting;
   waiting.open.resize(list.chunks.size());
   for (std::size_t task = 0; task < list.chunks.size(); ++task)
@@ -119,7 +94,7 @@ bool wait_for_slurm_job(BatchStart& batch, const BatchSettings& settings, const 
   auto next_queue = begin;
   std::optional<Clock::time_point> grace_end;  // set when a COMPLETED task's rows are not visible yet
   while (true) {
-    if (g_stop) {
+    if (InterruptGuard::interrupted()) {
       if (cancel_on_interrupt) {
         const std::string error = cancel_job(job.id);
         if (error.empty()) std::fprintf(stderr, "\nsignalsim: interrupted: Slurm job %s cancelled\n", job.id.c_str());

@@ -18,20 +18,10 @@
 
 namespace signalsim {
 
-/// SIGINT and SIGTERM are noted (stop_requested()) instead of ending the process while the
-/// outermost object lives; nested ones share it. The submission holds one from before sbatch, so
-/// that a Ctrl-C during the submission cancels the job it made.
-class SlurmStopSignals {
- public:
-  SlurmStopSignals();
-  ~SlurmStopSignals();
-  SlurmStopSignals(const SlurmStopSignals&) = delete;
-  SlurmStopSignals& operator=(const SlurmStopSignals&) = delete;
-  static bool stop_requested();
-};
-
 /// Waits as above; every row goes into batch.result.rows (and through progress). False when
-/// interrupted.
+/// interrupted. The caller holds an InterruptGuard (interrupt_guard.hpp) around the call: the
+/// submission one from before sbatch, so that a Ctrl-C during the submission cancels the job it
+/// made (a second guard inside would forget that Ctrl-C).
 bool wait_for_slurm_job(BatchStart& batch, const BatchSettings& settings, const ChunkList& list, const SlurmJob& job,
                         BatchProgress& progress, bool cancel_on_interrupt);
 

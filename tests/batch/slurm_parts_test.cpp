@@ -1,8 +1,13 @@
 // The Slurm back-end's SUMO-free and Slurm-free parts: squeue's task lines, chunk sizes within
 // MaxArraySize, the chunk list and row files read back as written, sbatch's command line, the error
-// rows of lost runs. (The back-end against a real Slurm: slurm_test.sh.)
+// rows of lost runs, task.sh with an --out path that is hostile to a shell, a Slurm command that
+// never answers. (The back-end against a real Slurm: slurm_test.sh.)
 #include <gtest/gtest.h>
 
+#include <filesystem>
+
+#include "batch/program_output.hpp"
+#include "batch/run_outputs.hpp"
 #include "batch/run_row_file.hpp"
 #include "batch/slurm_chunks.hpp"
 #include "batch/slurm_commands.hpp"
@@ -50,6 +55,7 @@ TEST(SlurmChunks, ChunkListAndJobRecordReadBackAsWritten) {
   ChunkList list;
   list.directory = "/some/where";
   list.timeout = 60;
+  list.isolate = true;
   ChunkRun run;
   run.spec.index = 3;
   run.spec.scenario = "data/a b.yaml";
@@ -62,6 +68,7 @@ TEST(SlurmChunks, ChunkListAndJobRecordReadBackAsWritten) {
   const ChunkList back = read_chunk_list(dir.path());
   EXPECT_EQ(back.directory, list.directory);
   EXPECT_EQ(back.timeout, 60);
+  EXPECT_TRUE(back.isolate);
   ASSERT_EQ(back.chunks.size(), 2u);
   ASSERT_EQ(back.chunks[0].size(), 1u);
   EXPECT_EQ(back.chunks[0][0].spec.values, run.spec.values);
@@ -97,14 +104,46 @@ TEST(SlurmCommands, SbatchGetsTheArrayThrottleAndTheUsersArgumentsBeforeTheScrip
   s.tasks = 6;
   s.max_parallel = 2;
   s.cpus_per_task = 4;
-  s.output = "/o/slurm/logs/task-%A_%a.log";
+  s.output = output_pattern("/o 100%/slurm/logs", "task-%A_%a.log");  // the user's '%' is no pattern
   s.partition = "short";
   s.time = "30";
   s.extra_args = {"--account=proj"};
   const std::vector<std::string> expected = {
       "sbatch", "--parsable", "--job-name=signalsim-o", "--array=0-5%2", "--cpus-per-task=4",
-      "--output=/o/slurm/logs/task-%A_%a.log", "--partition=short", "--time=30", "--account=proj", "/o/slurm/task.sh"};
+      "--output=/o 100%%/slurm/logs/task-%A_%a.log", "--partition=short", "--time=30", "--account=proj",
+      "/o/slurm/task.sh"};
   EXPECT_EQ(sbatch_argv(s), expected);
+  EXPECT_THROW(output_pattern("/o\\x/slurm/logs", "task-%A_%a.log"), std::runtime_error);
+}
+
+TEST(SlurmChunks, TaskScriptPassesAHostileOutPathThroughWhole) {
+  test::TempDir dir;
+  // A newline, a fake #SBATCH line, quotes, '%', '\\' and a command substitution in --out.
+  const std::string out = dir.path() + "/a b%j\\\n#SBATCH --wrap=x\n$(touch pwned)'\"";
+  std::filesystem::create_directories(slurm_dir(out));
+  const std::string script = write_task_script(out, "/bin/echo");
+  const ProgramOutput ran = run_program({"/bin/sh", script}, {"SLURM_ARRAY_TASK_ID=3"});
+  ASSERT_TRUE(ran.started) << ran.err;
+  EXPECT_EQ(ran.exit_code, 0) << ran.err;
+  EXPECT_EQ(ran.out, "run-chunk " + out + " 3\n");
+  EXPECT_FALSE(std::filesystem::exists("pwned"));
+  const std::string text = read_text_file(script);
+  // sbatch reads #SBATCH lines up to the first command: only the fixed comments come before it.
+  const std::string exec_line = "\nexec '/bin/echo' run-chunk '";
+  ASSERT_NE(text.find(exec_line), std::string::npos) << text;
+  EXPECT_EQ(text.substr(0, text.find(exec_line)).find(dir.path()), std::string::npos) << text;
+}
+
+TEST(ProgramOutput, AProgramThatNeverAnswersIsStoppedAtTheTimeout) {
+  const ProgramOutput hung = run_program({"sleep", "60"}, {}, 0.2);
+  EXPECT_TRUE(hung.started);
+  EXPECT_TRUE(hung.timed_out);
+  EXPECT_NE(hung.exit_code, 0);
+  EXPECT_EQ(hung.err, "did not answer within 0.2 s");
+  const ProgramOutput quick = run_program({"sh", "-c", "echo hi"}, {}, 30);
+  EXPECT_FALSE(quick.timed_out);
+  EXPECT_EQ(quick.exit_code, 0);
+  EXPECT_EQ(quick.out, "hi\n");
 }
 
 TEST(SlurmWait, ALostRunIsAnErrorRowNamedByItsTasksState) {

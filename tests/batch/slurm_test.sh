@@ -1,23 +1,34 @@
 #!/usr/bin/env bash
 # The Slurm back-end against a real single-node Slurm (tools/slurm-local: munged, slurmctld and
 # slurmd on 127.0.0.1, started here and stopped by their PIDs at the end):
-#   - the 18-run sweep through `--backend slurm` gives the local run's results.csv (wall_time aside)
+#   - the 18-run sweep through `--backend slurm` gives the local run's results.csv (wall_time aside),
+#     into an --out with a space and '%' (the task logs land in OUT/slurm/logs)
 #   - --no-wait, one pending task cancelled (scancel JOB_5): --collect names it in error rows,
-#     --resume submits exactly those runs and the results.csv equals the local one; while the job
+#     --resume (with --isolate, which the task honours) submits exactly those runs and the
+#     results.csv equals the local one; while the job
 #     runs, a new submission or a local batch into the same --out is refused
 #   - a running task cancelled: its unfinished runs are error rows saying CANCELLED, the finished
 #     one is kept
 #   - Ctrl-C while waiting cancels the job (exit 130)
-#   - no sbatch on PATH, a rejected submission (a bad --partition): one line, exit 2, no --out
-# Skips (exit 77) where Slurm cannot start: not root, or the packages missing (tools/setup --slurm).
+#   - no sbatch on PATH, a rejected submission (a bad --partition), a '\' in --out: one line,
+#     exit 2, no --out
+# Skips (exit 77) where Slurm cannot start: not root, the packages missing (tools/setup --slurm), a
+# port taken between choosing it and starting, the machine's name not on loopback. Its ports are
+# chosen free for each run, so that two runs at once do not collide.
 # usage: slurm_test.sh SIGNALSIM_BINARY SOURCE_DIR
 set -u
 bin=$(realpath "$1")
 src=$(realpath "$2")
 work=$(mktemp -d)
 cluster=$work/cluster
-# A port of its own: a tools/slurm-local started by hand (16817) may be running beside the test.
-export SIGNALSIM_SLURM_PORT=${SIGNALSIM_SLURM_TEST_PORT:-16917}
+# Ports of its own, free now (the system picks them): a tools/slurm-local started by hand (16817),
+# or another run of this test, may be running beside it.
+read -r ctld_port slurmd_port < <(python3 -c "
+import socket
+held = [socket.socket() for _ in range(2)]
+for s in held: s.bind(('127.0.0.1', 0))
+print(*(s.getsockname()[1] for s in held))")
+export SIGNALSIM_SLURM_PORT=$ctld_port SIGNALSIM_SLURMD_PORT=$slurmd_port
 cleanup() {
   "$src/tools/slurm-local" stop "$cluster" > /dev/null 2>&1
   rm -rf "$work"
@@ -35,7 +46,7 @@ fi
 [ $code -eq 0 ] || fail "tools/slurm-local start: exit code $code: $(cat "$work/start.log")"
 export SLURM_CONF=$cluster/slurm.conf
 daemons=$(cat "$cluster"/munged.pid "$cluster"/slurmctld.pid "$cluster"/slurmd.pid | tr '\n' ' ')
-echo "ok   single-node Slurm up (PIDs $daemons)"
+echo "ok   single-node Slurm up (PIDs $daemons, ports $ctld_port and $slurmd_port)"
 cd "$work" || exit 1
 
 strip() { python3 -c "
@@ -53,16 +64,20 @@ active_tasks() { squeue --noheader --jobs="$1" --format=%T 2> /dev/null | grep -
 
 "$bin" sweep "$sweep" --out "$work/local" --jobs 2 --quiet || fail "the local sweep: exit code $?"
 
-# 1. The whole sweep through Slurm: 5 tasks of up to 4 runs.
-"$bin" sweep "$sweep" --backend slurm --chunk 4 --out "$work/s1" > "$work/s1.log" 2>&1 ||
+# 1. The whole sweep through Slurm: 5 tasks of up to 4 runs, into an --out with a space and a '%j'
+#    (sbatch's --output is a filename pattern: the path's '%' must not be one).
+s1="$work/s 1%j"
+"$bin" sweep "$sweep" --backend slurm --chunk 4 --out "$s1" > "$work/s1.log" 2>&1 ||
   fail "--backend slurm: exit code $? ($(tail -3 "$work/s1.log"))"
 grep -q "^submitted Slurm job [0-9]*: 18 runs in 5 array tasks of up to 4, 1 CPU each" "$work/s1.log" ||
   fail "submission line: $(head -1 "$work/s1.log")"
 grep -q "^18 runs: 18 passed, 0 failed, 0 without expectations, 0 errors" "$work/s1.log" ||
   fail "summary line: $(tail -1 "$work/s1.log")"
-same_as_local "$work/s1" "--backend slurm"
-[ "$(ls "$work"/s1/runs/*/row.csv | wc -l)" -eq 18 ] || fail "not every run directory has its row.csv"
-echo "ok   18 runs through Slurm: results.csv == the local run's"
+same_as_local "$s1" "--backend slurm"
+[ "$(ls "$s1"/runs/*/row.csv | wc -l)" -eq 18 ] || fail "not every run directory has its row.csv"
+s1job=$(job_of "$s1")
+[ "$(ls "$s1"/slurm/logs/task-"${s1job}"_*.log | wc -l)" -eq 5 ] || fail "the task logs are not in $s1/slurm/logs"
+echo "ok   18 runs through Slurm into an --out with ' ' and '%': results.csv == the local run's, logs in place"
 
 # 2. --no-wait; task 5 (runs 15-17) cancelled while pending; --collect; --resume.
 "$bin" sweep "$sweep" --backend slurm --chunk 3 --max-parallel 1 --no-wait --out "$work/nw" > "$work/nw.log" 2>&1 ||
@@ -100,12 +115,15 @@ PY
 active=$(active_tasks "$job")
 [ "$active" -eq 0 ] || fail "--collect returned with $active tasks of job $job still active"
 
-"$bin" sweep "$sweep" --backend slurm --out "$work/nw" --resume > "$work/resume.log" 2>&1 ||
+"$bin" sweep "$sweep" --backend slurm --out "$work/nw" --resume --isolate > "$work/resume.log" 2>&1 ||
   fail "--resume: exit code $? ($(tail -3 "$work/resume.log"))"
 grep -q "^resuming: 15 of 18 runs already done, 3 to run" "$work/resume.log" || fail "resume: $(head -1 "$work/resume.log")"
 grep -q "^submitted Slurm job [0-9]*: 3 runs in 1 array task" "$work/resume.log" || fail "resume: $(sed -n 2p "$work/resume.log")"
 same_as_local "$work/nw" "--resume after a cancelled task"
-echo "ok   --resume submitted exactly the 3 lost runs: results.csv == the local run's"
+rjob=$(job_of "$work/nw")
+grep -q "^chunk 0: 3 runs (0 already done), 1 at a time, one process per run (--isolate)" "$work/nw/slurm/logs/task-${rjob}_0.log" ||
+  fail "--isolate did not reach the task: $(head -1 "$work/nw/slurm/logs/task-${rjob}_0.log")"
+echo "ok   --resume --isolate submitted exactly the 3 lost runs, one process each: results.csv == the local run's"
 
 # 3. A running task cancelled: sweep_slow's runs 1 and 2 take about a second each; the task is
 #    cancelled once run 0's row is there.
@@ -167,11 +185,16 @@ code=$?
 [ $code -eq 2 ] && [ "$(wc -l < "$work/e2.err")" -eq 1 ] && grep -q "sbatch refused the job: invalid partition specified: nosuch" "$work/e2.err" ||
   fail "a bad --partition: exit code $code, stderr: $(cat "$work/e2.err")"
 [ -e "$work/e2" ] && fail "a bad --partition: --out was created"
+"$bin" sweep "$sweep" --backend slurm --out "$work/e\\4" > /dev/null 2> "$work/e4.err"
+code=$?
+[ $code -eq 2 ] && [ "$(wc -l < "$work/e4.err")" -eq 1 ] && grep -q "holds a '\\\\'" "$work/e4.err" ||
+  fail "an --out with a backslash: exit code $code, stderr: $(cat "$work/e4.err")"
+[ -e "$work/e\\4" ] && fail "an --out with a backslash: --out was created"
 "$bin" sweep "$sweep" --out "$work/local" --collect > /dev/null 2> "$work/e3.err"
 code=$?
 [ $code -eq 2 ] && grep -q "no Slurm job was submitted there" "$work/e3.err" ||
   fail "--collect without a job: exit code $code, stderr: $(cat "$work/e3.err")"
-echo "ok   no sbatch, a rejected submission, nothing to collect: one line each, exit 2"
+echo "ok   no sbatch, a rejected submission, a '\\' in --out, nothing to collect: one line each, exit 2"
 
 # The daemons stop by their PIDs.
 "$src/tools/slurm-local" stop "$cluster" || fail "tools/slurm-local stop"
