@@ -7,8 +7,10 @@
 #include <pugixml.hpp>
 
 #include <cstddef>
+#include <deque>
 #include <optional>
 #include <string>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -20,27 +22,35 @@ namespace signalsim::sumo {
 /// The element a defect is recorded against: its kind and id. No owner: listed only.
 using DefectOwner = std::optional<std::pair<NetElement, std::string>>;
 
-/// Defects as they are found, with byte offsets; lines are assigned in one pass at the end.
+/// The defects of one net as its elements are read (all at load, or each element the first time a
+/// lookup needs it, net_index.hpp): each gets its line when it is recorded.
 class DefectLog {
  public:
+  DefectLog() = default;
+  /// `newlines`: the sorted offsets of the text's '\n' (see newline_offsets).
+  explicit DefectLog(std::vector<std::size_t> newlines) : newlines_(std::move(newlines)) {}
+
   /// `offset`: of the element in the buffer; `earlier`: of a first definition (a repeated id), or -1.
   void add(const DefectOwner& owner, std::string element, std::string reason, std::ptrdiff_t offset,
            bool affects_routes = true, std::ptrdiff_t earlier = -1);
 
-  /// Lines from `newlines` (the sorted offsets of the text's '\n', see newline_offsets).
-  /// Returns the defects in file order; `keys` gets (owner, index into the result) per owned defect
-  /// that affects routes.
-  std::vector<NetDefect> finish(const std::vector<std::size_t>& newlines,
-                                std::vector<std::pair<std::pair<NetElement, std::string>, std::size_t>>& keys);
+  /// The first defect in file order recorded against this element that affects routes, or null.
+  const NetDefect* first_against(NetElement kind, const std::string& id) const;
+  /// Every defect recorded, in file order (of equal offsets, in the order recorded).
+  std::vector<NetDefect> in_file_order() const;
+  /// No more defects come (the whole net is read): the line index is freed.
+  void seal() { newlines_ = {}; }
 
  private:
-  struct Pending {
+  int line_of(std::ptrdiff_t offset) const;
+
+  struct Recorded {
     NetDefect defect;
-    DefectOwner owner;
     std::ptrdiff_t offset = 0;
-    std::ptrdiff_t earlier = -1;
   };
-  std::vector<Pending> pending_;
+  std::vector<std::size_t> newlines_;
+  std::deque<Recorded> recorded_;                                 // in the order recorded
+  std::unordered_map<std::string, std::size_t> first_against_;  // defect_key -> the first in file order
 };
 
 class XmlElement {
