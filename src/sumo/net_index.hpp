@@ -137,6 +137,9 @@ class NetIndex {
  public:
   /// Reads `path` (gzip detected by its magic bytes, not its name). Throws NetError.
   static NetIndex load(const std::string& path, NetReading reading = NetReading::OnDemand);
+  /// The index of `path` from the process's NetIndexCache (net_index_cache.hpp): loaded once per
+  /// process while the file is unchanged, shared by every run on it. Throws NetError as load.
+  static std::shared_ptr<const NetIndex> load_shared(const std::string& path);
 
   NetIndex();  ///< an empty net
   NetIndex(NetIndex&&) noexcept;

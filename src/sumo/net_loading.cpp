@@ -53,7 +53,8 @@ std::map<std::string, std::string> NetLoader::params(pugi::xml_node parent, cons
     out[*key] = param.text("value");
     // The one param signalsim reads as a number (docs/behaviour.md §T4.1: a lanelet's own search distance).
     if (*key == "turn_signal_distance" && !parse_double(out[*key]))
-      log_.add(owner, owner_what, "param 'turn_signal_distance' is not a number: '" + out[*key] + "'", p.offset_debug());
+      log_.add(owner, owner_what, "param 'turn_signal_distance' is not a number: '" + out[*key] + "'",
+               log_.fragment_base() + p.offset_debug());
   }
   return out;
 }
@@ -128,7 +129,7 @@ void NetLoader::edge(pugi::xml_node node) {
   const XmlElement e(node, what, self, log_);
   if (edge.id.empty()) return e.defect("attribute 'id' is missing");
   if (net_.edge_by_id.count(edge.id) != 0) {
-    return e.defect("another edge has this id; this one is ignored", true, first_.of(node.parent(), "edge", edge.id));
+    return e.defect("another edge has this id; this one is ignored", true, first_.of("edge", edge.id));
   }
   edge.is_internal = e.text("function") == "internal";
   edge.from_junction = e.text("from");
@@ -159,7 +160,7 @@ void NetLoader::edge(pugi::xml_node node) {
     if (lane.id.empty()) continue;
     if (const auto [first, fresh] = net_.lane_by_id.emplace(lane.id, std::make_pair(edge_pos, i)); !fresh) {
       XmlElement(nodes[order[i]], describe("lane", lane.id), owner(NetElement::Lane, lane.id), log_)
-          .defect("another lane has this id", true, first_.of(node.parent(), "lane", lane.id));
+          .defect("another lane has this id", true, first_.of("lane", lane.id));
     }
   }
   net_.edges.push_back(std::move(edge));
@@ -176,7 +177,7 @@ void NetLoader::junction(pugi::xml_node node) {
   junction.y = j.number("y", 0.0);
   if (net_.junctions.count(junction.id) != 0) {
     return j.defect("another junction has this id; this one is ignored", true,
-                    first_.of(node.parent(), "junction", junction.id));
+                    first_.of("junction", junction.id));
   }
   net_.junctions.emplace(junction.id, std::move(junction));
 }
@@ -251,7 +252,7 @@ void NetLoader::tl_logic(pugi::xml_node node) {
   }
   if (net_.tl_logic_by_id.count(logic.id) != 0) {
     // Several programs may share an id, not an id and a programID.
-    const std::ptrdiff_t first = first_.of(node.parent(), "tlLogic", logic.id + "\n" + logic.program_id);
+    const std::ptrdiff_t first = first_.of("tlLogic", logic.id + "\n" + logic.program_id);
     if (first != t.offset()) {
       return t.defect("another tlLogic has this id and programID '" + logic.program_id + "'; this one is ignored",
                       true, first);
@@ -263,11 +264,11 @@ void NetLoader::tl_logic(pugi::xml_node node) {
 }
 
 NetIndex NetIndex::load(const std::string& path, NetReading reading) {
-  // The newlines are found before the in-place parse overwrites some characters (ends of names and
+  // The newlines are found before an in-place parse overwrites some characters (ends of names and
   // values), for the defects' lines.
   std::string bytes = read_net_file(path);
   std::vector<std::size_t> newlines = newline_offsets(bytes);
-  auto source = std::make_unique<NetSource>(std::move(bytes));
+  auto source = std::make_unique<NetSource>(std::move(bytes), reading == NetReading::OnDemand);
   if (const pugi::xml_parse_result parsed = source->parsed(); !parsed) {
     throw NetError(path + ": not XML: " + parsed.description() + " at offset " + std::to_string(parsed.offset));
   }
@@ -287,9 +288,10 @@ NetIndex NetIndex::load(const std::string& path, NetReading reading) {
   }
 
   net.log = DefectLog(std::move(newlines));
-  if (reading == NetReading::Whole) {
-    net.source = std::move(source);
-    NetLoader loader(net);
+  const bool on_demand = reading == NetReading::OnDemand && source->scan();
+  net.source = std::move(source);
+  NetLoader loader(net);
+  if (!on_demand) {  // every element from the document, in file order
     for (pugi::xml_node node : root.children()) {
       if (node.type() != pugi::node_element) continue;
       if (is(node, "edge")) loader.edge(node);
@@ -302,16 +304,14 @@ NetIndex NetIndex::load(const std::string& path, NetReading reading) {
     net.finish_whole_net();
     return index;
   }
-  source->scan();
-  net.edge_count = source->edge_count;
-  net.source = std::move(source);
-  net.whole = false;
-  NetLoader loader(net);
-  // Few and read whole by their users (approach lights, generate): read now.
+  // Few and read whole by their users (approach lights, generate): read now, from the document.
   for (pugi::xml_node node : net.source->lights_and_roundabouts) {
     if (is(node, "roundabout")) loader.roundabout(node);
     else loader.tl_logic(node);
   }
+  net.source->drop_document();  // the rest is parsed again from the text when read
+  net.edge_count = net.source->edge_count;
+  net.whole = false;
   return index;
 }
 

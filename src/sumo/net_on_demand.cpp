@@ -25,7 +25,11 @@ template <typename F>
 void read_group(NetData& net, ElementGroup& group, F&& read_element) {
   if (group.read || group.head == ElementGroup::kNone) return;
   group.read = true;
-  net.source->each_node(group, read_element);
+  net.source->each_element(group, [&](pugi::xml_node node, std::ptrdiff_t base) {
+    net.log.set_fragment_base(base);
+    read_element(node);
+  });
+  net.log.set_fragment_base(0);
 }
 
 /// The from-edge of a from-lane id "<from>_<fromLane>": the text before the last '_', when the
@@ -50,8 +54,8 @@ void NetData::read_edge(const std::string& id) {
   std::vector<std::pair<std::ptrdiff_t, ElementGroup*>> todo{{src.offset_of(found->edge), &found->edge}};
   for (std::size_t k = 0; k < todo.size(); ++k) {
     const auto [offset, group] = todo[k];
-    for (pugi::xml_node lane : src.head_node(*group).children("lane")) {
-      src.each_edge_defining(lane.attribute("id").value(), [&](std::string_view other) {
+    for (const std::string& lane_id : src.lane_ids(*group)) {
+      src.each_edge_defining(lane_id, [&](std::string_view other) {
         ElementGroup& g = src.edge_entry(other)->edge;
         const std::ptrdiff_t at = src.offset_of(g);
         const bool listed = std::any_of(todo.begin(), todo.end(), [&](const auto& t) { return t.second == &g; });

@@ -1,12 +1,13 @@
-// NetSource: the parsed net document and the scan of where its elements are (see the header).
+// NetSource: the net's text, its parsed document until the scan is done, and where its elements
+// are (see the header).
 #include "sumo/net_source.hpp"
 
+#include <algorithm>
 #include <cstring>
 #include <utility>
 
 namespace signalsim::sumo {
 namespace {
-
 
 std::string_view id_of(pugi::xml_node node, const char* attribute) { return node.attribute(attribute).value(); }
 
@@ -17,8 +18,18 @@ bool names_edge(std::string_view lane_id, std::string_view edge_id) {
 
 }  // namespace
 
-std::ptrdiff_t FirstDefinitions::of(pugi::xml_node root, const std::string& kind, const std::string& key) {
-  if (!built_) build(root);
+// ---- FirstDefinitions -------------------------------------------------------------------------------
+
+std::ptrdiff_t FirstDefinitions::of(const std::string& kind, const std::string& key) {
+  if (!built_) {
+    if (source_.root_) {
+      build(source_.root_);
+    } else {  // the document is freed: the text again, once
+      pugi::xml_document doc;
+      doc.load_buffer(source_.text_.data(), source_.text_.size());
+      build(doc.document_element());
+    }
+  }
   const auto it = first_.find(kind + "\n" + key);
   return it == first_.end() ? -1 : it->second;
 }
@@ -38,28 +49,14 @@ void FirstDefinitions::build(pugi::xml_node root) {
   }
 }
 
+// ---- small lists and the id store --------------------------------------------------------------------
+
 void IdList::add(std::string_view id) {
   if (first.empty()) {
     first = id;
     return;
   }
   if ((more.empty() ? first : more.back()) != id) more.push_back(id);
-}
-
-NetSource::NetSource(std::string bytes) : bytes_(std::move(bytes)) {
-  parsed_ = doc_.load_buffer_inplace(bytes_.data(), bytes_.size());
-  if (parsed_) root_ = doc_.document_element();
-}
-
-void NetSource::add(Kind kind, ElementGroup& group, pugi::xml_node node) {
-  const auto index = static_cast<std::uint32_t>(nodes_.size());
-  nodes_.push_back(node);
-  next_.push_back(ElementGroup::kNone);
-  kind_.push_back(kind);
-  group_of_.push_back(&group);
-  if (group.head == ElementGroup::kNone) group.head = index;
-  else next_[group.tail] = index;
-  group.tail = index;
 }
 
 void ViaList::add(std::string_view lane, std::string_view from_edge) {
@@ -69,6 +66,38 @@ void ViaList::add(std::string_view lane, std::string_view from_edge) {
   }
   const Via& last = more.empty() ? first : more.back();
   if (last.lane != lane || last.from_edge != from_edge) more.push_back({lane, from_edge});
+}
+
+std::string_view IdStore::keep(const char* text) {
+  const std::size_t n = std::strlen(text);
+  if (used_ + n > size_) {
+    size_ = std::max<std::size_t>(n, 1u << 16);
+    blocks_.push_back(std::make_unique<char[]>(size_));
+    used_ = 0;
+  }
+  char* at = blocks_.back().get() + used_;
+  std::memcpy(at, text, n);
+  used_ += n;
+  return {at, n};
+}
+
+ParsedElement::ParsedElement(const std::string& text, std::size_t begin, std::size_t end) {
+  // The last element's stretch runs to the end of the text: its parse stops at </net> with the
+  // element complete (pugixml keeps what it parsed).
+  doc_.load_buffer(text.data() + begin, end - begin, pugi::parse_default | pugi::parse_fragment, pugi::encoding_utf8);
+}
+
+// ---- NetSource -------------------------------------------------------------------------------------
+
+NetSource::NetSource(std::string bytes, bool on_demand) : text_(std::move(bytes)) {
+  parsed_ = on_demand ? doc_.load_buffer(text_.data(), text_.size()) : doc_.load_buffer_inplace(text_.data(), text_.size());
+  if (parsed_) root_ = doc_.document_element();
+}
+
+void NetSource::drop_document() {
+  lights_and_roundabouts.clear();
+  root_ = {};
+  doc_.reset();
 }
 
 EdgeEntry* NetSource::edge_entry(std::string_view id) {
@@ -81,13 +110,21 @@ ElementGroup* NetSource::connections_from(std::string_view edge_id) {
   return it == edges.end() ? nullptr : &it->second.connections;
 }
 
+std::vector<std::string> NetSource::lane_ids(const ElementGroup& group) const {
+  std::vector<std::string> out;
+  const Element& e = elements_[group.head];
+  const ParsedElement parsed(text_, e.begin, e.end);
+  for (pugi::xml_node lane : parsed.node().children("lane")) out.emplace_back(lane.attribute("id").value());
+  return out;
+}
+
 std::string_view NetSource::edge_named_by(std::string_view lane_id) {
   const std::size_t cut = lane_id.rfind('_');
   if (cut == std::string_view::npos) return {};
   const auto edge = edges.find(lane_id.substr(0, cut));
   if (edge == edges.end() || edge->second.edge.head == ElementGroup::kNone) return {};
-  for (pugi::xml_node lane : head_node(edge->second.edge).children("lane"))
-    if (id_of(lane, "id") == lane_id) return edge->first;
+  for (const std::string& id : lane_ids(edge->second.edge))
+    if (id == lane_id) return edge->first;
   return {};
 }
 
@@ -103,52 +140,87 @@ ViaList* NetSource::via_list(std::string_view lane_id, bool create) {
   return it == vias_elsewhere_.end() ? nullptr : &it->second;
 }
 
-void NetSource::scan() {
+void NetSource::add(Kind kind, ElementGroup& group, pugi::xml_node node) {
+  const auto index = static_cast<std::uint32_t>(elements_.size());
+  Element e;
+  e.begin = static_cast<std::size_t>(node.offset_debug() - 1);  // its '<'
+  e.end = text_.size();  // until the next element's start is known
+  e.kind = kind;
+  e.group = &group;
+  elements_.push_back(e);
+  if (group.head == ElementGroup::kNone) group.head = index;
+  else elements_[group.tail].next = index;
+  group.tail = index;
+}
+
+bool NetSource::scan() {
+  // Offsets are those of the text only for UTF-8 (pugixml converts other encodings first).
+  if (parsed_.encoding != pugi::encoding_utf8) return false;
   // A net has an <edge> for about every 600 bytes (Bad Hersfeld 660, bologna 900): a first guess
   // (a visit of every element costs as much as the hashing it saves).
-  edges.reserve(bytes_.size() / 600);
+  edges.reserve(text_.size() / 600);
   // netconvert writes an edge's connections one after another: the entry of the last from-edge is kept.
   std::string_view last_from;
   EdgeEntry* last_from_entry = nullptr;
+  bool previous_recorded = false;  // whether the previous child element is in elements_
   for (pugi::xml_node node = root_.first_child(); node; node = node.next_sibling()) {
     if (node.type() != pugi::node_element) continue;
+    const std::ptrdiff_t at = node.offset_debug() - 1;
+    if (at < 0 || text_[static_cast<std::size_t>(at)] != '<') return false;
+    if (previous_recorded) elements_.back().end = static_cast<std::size_t>(at);
+    const std::size_t recorded = elements_.size();
     const char* name = node.name();
     if (std::strcmp(name, "edge") == 0) {
-      const std::string_view id = id_of(node, "id");
-      if (id.empty()) {
+      const char* id = node.attribute("id").value();
+      if (*id == '\0') {
         add(Kind::Edge, edges_without_id, node);
-        continue;
-      }
-      const auto entry = edges.try_emplace(id).first;
-      ElementGroup& group = entry->second.edge;
-      const bool first = group.head == ElementGroup::kNone;
-      add(Kind::Edge, group, node);
-      if (!first) continue;  // a repeated edge is ignored whole, its lanes too
-      ++edge_count;
-      for (pugi::xml_node lane : node.children("lane")) {
-        const std::string_view lane_id = id_of(lane, "id");
-        if (!lane_id.empty() && !names_edge(lane_id, id)) lanes_elsewhere_[lane_id].add(entry->first);
+      } else {
+        auto entry = edges.find(id);
+        if (entry == edges.end()) entry = edges.try_emplace(ids_.keep(id)).first;
+        ElementGroup& group = entry->second.edge;
+        const bool first = group.head == ElementGroup::kNone;
+        add(Kind::Edge, group, node);
+        if (first) {  // a repeated edge is ignored whole, its lanes too
+          ++edge_count;
+          for (pugi::xml_node lane : node.children("lane")) {
+            const std::string_view lane_id = id_of(lane, "id");
+            if (!lane_id.empty() && !names_edge(lane_id, entry->first))
+              lanes_elsewhere_[ids_.keep(lane_id.data())].add(entry->first);
+          }
+        }
       }
     } else if (std::strcmp(name, "connection") == 0) {
-      const std::string_view from = id_of(node, "from");
-      if (from.empty()) {
+      const char* from = node.attribute("from").value();
+      if (*from == '\0') {
         add(Kind::Connection, connections_without_from, node);
-        continue;
+      } else {
+        if (last_from_entry == nullptr || last_from != from) {
+          auto entry = edges.find(from);
+          if (entry == edges.end()) entry = edges.try_emplace(ids_.keep(from)).first;
+          last_from = entry->first;
+          last_from_entry = &entry->second;
+        }
+        add(Kind::Connection, last_from_entry->connections, node);
+        if (const char* via = node.attribute("via").value(); *via != '\0') {
+          const std::string_view kept = ids_.keep(via);
+          via_list(kept, true)->add(kept, last_from);
+        }
       }
-      if (last_from_entry == nullptr || from != last_from) {
-        const auto entry = edges.try_emplace(from).first;
-        last_from = entry->first;
-        last_from_entry = &entry->second;
-      }
-      add(Kind::Connection, last_from_entry->connections, node);
-      if (const std::string_view via = id_of(node, "via"); !via.empty()) via_list(via, true)->add(via, last_from);
     } else if (std::strcmp(name, "junction") == 0) {
-      const std::string_view id = id_of(node, "id");
-      add(Kind::Junction, id.empty() ? junctions_without_id : junctions[id], node);
+      const char* id = node.attribute("id").value();
+      if (*id == '\0') {
+        add(Kind::Junction, junctions_without_id, node);
+      } else {
+        auto entry = junctions.find(id);
+        if (entry == junctions.end()) entry = junctions.try_emplace(ids_.keep(id)).first;
+        add(Kind::Junction, entry->second, node);
+      }
     } else if (std::strcmp(name, "tlLogic") == 0 || std::strcmp(name, "roundabout") == 0) {
       lights_and_roundabouts.push_back(node);
     }
+    previous_recorded = elements_.size() > recorded;
   }
+  return true;
 }
 
 }  // namespace signalsim::sumo

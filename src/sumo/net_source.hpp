@@ -1,10 +1,13 @@
-// NetSource: a net file's parsed document kept in memory, and where each element is in it, so that
-// NetIndex reads an element's values only when a lookup first needs them (net_index.hpp: the run
-// of a route on a city net reads its few hundred elements, not the 200 000 of the file).
+// NetSource: a net file's text kept in memory, and where each element is in it, so that NetIndex
+// reads an element's values only when a lookup first needs them (net_index.hpp: the run of a route
+// on a city net reads its few hundred elements, not the 200 000 of the file).
 //
-// The scan at load visits every child of <net> once and reads only ids (an element's `id`, a
-// connection's `from` and `via`, a lane's `id`); the groups it builds are what one lookup must read
-// for its answer to be the one a reading of the whole file gives (see net_on_demand.cpp):
+// At load the text is parsed whole (so a file that is not XML fails at once), and the scan visits
+// every child of <net> once, reading only ids (an element's `id`, a connection's `from` and `via`,
+// lane ids); then the document is freed (it is twice the size of the text) and an element is parsed
+// again from its stretch of the text when it is read. The groups the scan builds are what one
+// lookup must read for its answer to be the one a reading of the whole file gives (see
+// net_on_demand.cpp):
 //   - every <edge> with one id (a repeated id is a defect of the later ones),
 //   - every <junction> with one id,
 //   - every <connection> with one `from` (its defects go against its from-lane or from-edge),
@@ -20,6 +23,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <unordered_map>
@@ -27,15 +31,19 @@
 
 namespace signalsim::sumo {
 
+class NetSource;
+
 /// The offset of the first definition of a repeated id. Repeated ids are rare (SUMO refuses them),
-/// so the table of first definitions is built only at the first one: one pass over the document,
-/// and the load stays linear however many ids repeat.
+/// so the table of first definitions is built only at the first one: one pass over the document
+/// (parsed again when it was freed), and the load stays linear however many ids repeat.
 class FirstDefinitions {
  public:
-  std::ptrdiff_t of(pugi::xml_node root, const std::string& kind, const std::string& key);
+  explicit FirstDefinitions(const NetSource& source) : source_(source) {}
+  std::ptrdiff_t of(const std::string& kind, const std::string& key);
 
  private:
   void build(pugi::xml_node root);
+  const NetSource& source_;
   bool built_ = false;
   std::unordered_map<std::string, std::ptrdiff_t> first_;
 };
@@ -43,7 +51,7 @@ class FirstDefinitions {
 /// Elements of one kind and key, in file order, and whether they have been read.
 struct ElementGroup {
   static constexpr std::uint32_t kNone = 0xffffffffu;
-  std::uint32_t head = kNone;  ///< into NetSource::nodes
+  std::uint32_t head = kNone;  ///< into NetSource's element list
   std::uint32_t tail = kNone;
   bool read = false;
 };
@@ -84,28 +92,54 @@ struct EdgeEntry {
   ViaList vias;
 };
 
+/// Copies of the ids the scan keeps (decoded attribute values), in blocks that never move.
+class IdStore {
+ public:
+  std::string_view keep(const char* text);
+
+ private:
+  std::vector<std::unique_ptr<char[]>> blocks_;
+  std::size_t used_ = 0, size_ = 0;
+};
+
+/// One element parsed again from its stretch of the text.
+class ParsedElement {
+ public:
+  ParsedElement(const std::string& text, std::size_t begin, std::size_t end);
+  pugi::xml_node node() const { return doc_.first_child(); }
+
+ private:
+  pugi::xml_document doc_;
+};
+
 class NetSource {
  public:
-  /// Parses `bytes` in place; parsed() says whether that worked.
-  explicit NetSource(std::string bytes);
+  /// Parses `bytes`: in place when `on_demand` is false (the elements are read from this document
+  /// at load), else a copy, the text kept to parse elements again. parsed() says whether it worked.
+  NetSource(std::string bytes, bool on_demand);
   NetSource(const NetSource&) = delete;
   NetSource& operator=(const NetSource&) = delete;
 
   pugi::xml_parse_result parsed() const { return parsed_; }
+  /// The document's root; null once the document is freed.
   pugi::xml_node root() const { return root_; }
 
   /// Records where every <edge>, <junction> and <connection> is (ids only, nothing else read).
-  void scan();
+  /// False when the elements cannot be parsed again from the text (a file that is not UTF-8, whose
+  /// offsets are not those of the text): then the whole net must be read from the document.
+  bool scan();
+  /// Frees the document (after scan and the reading at load).
+  void drop_document();
 
-  /// Keys are the values of id attributes: views into the parsed buffer. An entry may have no
-  /// <edge> (connections from an edge the net lacks): see `edge_count`.
+  /// Keys are views into the IdStore. An entry may have no <edge> (connections from an edge the
+  /// net lacks): see `edge_count`.
   std::unordered_map<std::string_view, EdgeEntry> edges;
   std::unordered_map<std::string_view, ElementGroup> junctions;
   /// Elements without the id they are grouped by: read only with the whole net (listed defects).
   ElementGroup edges_without_id, junctions_without_id, connections_without_from;
   /// Edge ids with an <edge> element.
   std::size_t edge_count = 0;
-  /// The <tlLogic> and <roundabout> elements in file order (read at load).
+  /// The <tlLogic> and <roundabout> elements in file order (read at load, from the document).
   std::vector<pugi::xml_node> lights_and_roundabouts;
 
   /// The entry of an edge with an <edge> element, or null.
@@ -124,27 +158,39 @@ class NetSource {
   void each_from_edge_via(std::string_view lane_id, F&& f) {
     if (const ViaList* vias = via_list(lane_id, false)) vias->each_from_edge(lane_id, f);
   }
+  /// The lane ids of a group's first <edge>, in file order.
+  std::vector<std::string> lane_ids(const ElementGroup& group) const;
 
   enum class Kind : std::uint8_t { Edge, Junction, Connection };
   /// Calls `f(kind, group)` for the group of every scanned element, in file order (a group once
   /// per element of it).
   template <typename F>
   void each_element_group(F&& f) {
-    for (std::size_t i = 0; i < nodes_.size(); ++i) f(kind_[i], *group_of_[i]);
+    for (std::size_t i = 0; i < elements_.size(); ++i) f(elements_[i].kind, *elements_[i].group);
   }
-
-  /// The nodes of a group in file order.
+  /// Calls `f(node, base)` for the elements of a group in file order, each parsed again: `base` is
+  /// the offset in the text of the node's offset_debug() 0.
   template <typename F>
-  void each_node(const ElementGroup& group, F&& f) const {
-    for (std::uint32_t i = group.head; i != ElementGroup::kNone; i = next_[i]) f(nodes_[i]);
+  void each_element(const ElementGroup& group, F&& f) const {
+    for (std::uint32_t i = group.head; i != ElementGroup::kNone; i = elements_[i].next) {
+      const ParsedElement parsed(text_, elements_[i].begin, elements_[i].end);
+      f(parsed.node(), static_cast<std::ptrdiff_t>(elements_[i].begin));
+    }
   }
-  /// A group's first element, and its offset (its place in the file).
-  pugi::xml_node head_node(const ElementGroup& group) const { return nodes_[group.head]; }
-  std::ptrdiff_t offset_of(const ElementGroup& group) const { return nodes_[group.head].offset_debug(); }
+  /// The offset of a group's first element (its place in the file).
+  std::ptrdiff_t offset_of(const ElementGroup& group) const {
+    return static_cast<std::ptrdiff_t>(elements_[group.head].begin) + 1;  // its name, as offset_debug()
+  }
 
-  FirstDefinitions first_definitions;
+  FirstDefinitions first_definitions{*this};
 
  private:
+  struct Element {
+    std::size_t begin = 0, end = 0;  // its stretch of the text: from its '<' to the next element's
+    std::uint32_t next = ElementGroup::kNone;  // the next element of its group
+    Kind kind = Kind::Edge;
+    ElementGroup* group = nullptr;  // the maps' values do not move
+  };
   void add(Kind kind, ElementGroup& group, pugi::xml_node node);
   /// The edge a lane id names ("<edge>_<suffix without '_'>") when that edge has such a lane, or "".
   std::string_view edge_named_by(std::string_view lane_id);
@@ -152,19 +198,18 @@ class NetSource {
   /// table of its own.
   ViaList* via_list(std::string_view lane_id, bool create);
 
+  std::string text_;  // the file's text; parsed in place (whole reading) or kept as it is (on demand)
+  pugi::xml_document doc_;
+  pugi::xml_parse_result parsed_;
+  pugi::xml_node root_;
+  IdStore ids_;
+  std::vector<Element> elements_;
   /// Lane id -> the edges with a lane of that id that it does not name (a hand-written net's).
   std::unordered_map<std::string_view, IdList> lanes_elsewhere_;
   /// Internal lane ids without '_' (they name no edge): the connections through them.
   std::unordered_map<std::string_view, ViaList> vias_elsewhere_;
 
-  std::string bytes_;  // the document's text, parsed in place: it must outlive the document
-  pugi::xml_document doc_;
-  pugi::xml_parse_result parsed_;
-  pugi::xml_node root_;
-  std::vector<pugi::xml_node> nodes_;
-  std::vector<std::uint32_t> next_;  // next node of the same group, or kNone
-  std::vector<Kind> kind_;           // of each node
-  std::vector<ElementGroup*> group_of_;  // of each node (the maps' values do not move)
+  friend class FirstDefinitions;
 };
 
 }  // namespace signalsim::sumo

@@ -41,6 +41,11 @@ class DefectLog {
   /// No more defects come (the whole net is read): the line index is freed.
   void seal() { newlines_ = {}; }
 
+  /// The offset in the text of offset 0 of the nodes being read: an element parsed again on its
+  /// own (NetSource) has offsets from its start.
+  void set_fragment_base(std::ptrdiff_t base) { fragment_base_ = base; }
+  std::ptrdiff_t fragment_base() const { return fragment_base_; }
+
  private:
   int line_of(std::ptrdiff_t offset) const;
 
@@ -49,6 +54,7 @@ class DefectLog {
     std::ptrdiff_t offset = 0;
   };
   std::vector<std::size_t> newlines_;
+  std::ptrdiff_t fragment_base_ = 0;
   std::deque<Recorded> recorded_;                                 // in the order recorded
   std::unordered_map<std::string, std::size_t> first_against_;  // defect_key -> the first in file order
 };
@@ -77,7 +83,8 @@ class XmlElement {
 
   /// Records `reason` against this element.
   void defect(const std::string& reason, bool affects_routes = true, std::ptrdiff_t earlier = -1) const;
-  std::ptrdiff_t offset() const { return node_.offset_debug(); }
+  /// The element's offset in the text.
+  std::ptrdiff_t offset() const { return node_.offset_debug() + log_->fragment_base(); }
   const std::string& what() const { return what_; }
 
  private:
@@ -87,7 +94,7 @@ class XmlElement {
   DefectLog* log_;
 };
 
-/// The offsets of every '\n' in `text`, in order (taken before pugixml parses it in place).
+/// The offsets of every '\n' in `text`, in order (taken before pugixml may parse it in place).
 std::vector<std::size_t> newline_offsets(const std::string& text);
 
 /// "<kind> '<id>'" for messages; "<kind> without id" when `id` is empty.

@@ -173,6 +173,37 @@ TEST(NetOnDemand, NetsWhoseAnswersDependOnTheOrderOfReading) {
   }
 }
 
+/// `text` with every `from` replaced by `to`.
+std::string replaced_all(std::string text, const std::string& from, const std::string& to) {
+  for (std::size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
+    text.replace(at, from.size(), to);
+  return text;
+}
+
+TEST(NetOnDemand, TextsWhoseElementsAreParsedAgainFromTheirStretch) {
+  const std::string line = read_all(net_path("line.net.xml"));
+  ASSERT_NE(line.find("\n</net>"), std::string::npos);
+  std::u16string utf16 = u"\xfeff";
+  for (char c : line) utf16 += static_cast<char16_t>(static_cast<unsigned char>(c));
+  const std::vector<std::string> texts = {
+      "\xef\xbb\xbf" + line,                                               // a UTF-8 byte order mark
+      replaced_all(line, "\n", "\r\n"),                                      // CRLF line ends
+      replaced_all(line, "\"cb", "\"c&amp;b"),                               // an id with an entity
+      replaced_all(line, "\"cb", "\"c&#98;"),
+      replaced_all(line, "    <edge id=\"cb\"", "    <!-- <edge id=\"x\"/> -->\n    <edge id=\"cb\""),
+      replaced_all(line, "</net>", "</net>\n<!-- </net> <edge id=\"x\"/> -->"),  // after the last element
+      replaced_all(line, "encoding=\"UTF-8\"", "encoding=\"ISO-8859-1\""),  // read whole (offsets of a conversion)
+      std::string(reinterpret_cast<const char*>(utf16.data()), utf16.size() * 2),  // UTF-16: read whole
+  };
+  ScratchDir scratch;
+  for (std::size_t i = 0; i < texts.size(); ++i) {
+    SCOPED_TRACE(i);
+    const std::string path = scratch.write("text" + std::to_string(i) + ".net.xml", texts[i]);
+    ASSERT_EQ(NetIndex::load(path).edge_count(), 6u);
+    expect_order_independent(path);
+  }
+}
+
 TEST(NetOnDemand, ALaneIdOfAnEarlierEdgeStaysItsWhenTheLaterEdgeIsReadFirst) {
   ScratchDir scratch;
   const std::string text = line_with("<lane id=\"ab_0\"", "<lane id=\"cb_0\"");
