@@ -1,11 +1,12 @@
 // signalsim_net_timing: what signalsim's own start-up of a run costs on a scenario's net, and what
 // one step costs (docs/performance.md "Start-up on big nets"). CPU time of this process, medians.
 //
-//   build/bench/signalsim_net_timing SCENARIO [--repeat N] [--steps]
+//   build/bench/signalsim_net_timing SCENARIO [--set KEY=VALUE]... [--repeat N] [--steps]
 //
 // Start-up: the net index as a run reads it (NetReading::OnDemand) and the run's plan (plan_run: the
 // route's elements read, lanelets, lane plan); for comparison the whole net read at load (what
-// `inspect` and `generate` do). --steps then drives the scenario once in libsumo (one simulation
+// `inspect` and `generate` do), and a second NetIndex::load_shared of the net (a batch worker's next
+// run on it). `--set` as in `signalsim run` (`--set net=PATH`: the same route on another net). --steps then drives the scenario once in libsumo (one simulation
 // per process) and prints the CPU per step of the step loop, SUMO's step included, start-up not.
 #include <sys/resource.h>
 
@@ -44,8 +45,8 @@ double median(std::vector<double> v) {
   return v[v.size() / 2];
 }
 
-int run(const std::string& scenario_path, int repeat, bool steps) {
-  const Scenario scenario = load_scenario(scenario_path);
+int run(const std::string& scenario_path, const std::vector<std::string>& set, int repeat, bool steps) {
+  const Scenario scenario = load_scenario(scenario_path, ScenarioOverrides{set});
   std::vector<double> on_demand, plan, whole;
   std::size_t edges = 0, lanelets = 0;
   for (int i = 0; i < repeat; ++i) {
@@ -70,6 +71,15 @@ int run(const std::string& scenario_path, int repeat, bool steps) {
               "peak RSS %.0f MiB\n",
               repeat, median(on_demand), median(plan), median(on_demand) + median(plan), rss_after_start);
   std::printf("whole net read at load (inspect, generate), CPU, median of %d: %.4f s\n", repeat, median(whole));
+  const auto shared = sumo::NetIndex::load_shared(scenario.net);
+  std::vector<double> again;
+  for (int i = 0; i < repeat; ++i) {
+    const double t0 = cpu_seconds();
+    const auto same = sumo::NetIndex::load_shared(scenario.net);
+    again.push_back(cpu_seconds() - t0);
+    if (same != shared) std::printf("load_shared loaded the net again\n");
+  }
+  std::printf("load_shared of a loaded net, CPU, median of %d: %.1f us\n", repeat, median(again) * 1e6);
   if (!steps) return 0;
 
   const sumo::NetIndex net = sumo::NetIndex::load(scenario.net);
@@ -86,23 +96,25 @@ int run(const std::string& scenario_path, int repeat, bool steps) {
 
 int main(int argc, char** argv) {
   std::string scenario;
+  std::vector<std::string> set;
   int repeat = 7;
   bool steps = false;
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--repeat") == 0 && i + 1 < argc) repeat = std::max(1, std::atoi(argv[++i]));
+    else if (std::strcmp(argv[i], "--set") == 0 && i + 1 < argc) set.emplace_back(argv[++i]);
     else if (std::strcmp(argv[i], "--steps") == 0) steps = true;
     else if (scenario.empty() && argv[i][0] != '-') scenario = argv[i];
     else {
-      std::fprintf(stderr, "usage: signalsim_net_timing SCENARIO [--repeat N] [--steps]\n");
+      std::fprintf(stderr, "usage: signalsim_net_timing SCENARIO [--set KEY=VALUE]... [--repeat N] [--steps]\n");
       return 2;
     }
   }
   if (scenario.empty()) {
-    std::fprintf(stderr, "usage: signalsim_net_timing SCENARIO [--repeat N] [--steps]\n");
+    std::fprintf(stderr, "usage: signalsim_net_timing SCENARIO [--set KEY=VALUE]... [--repeat N] [--steps]\n");
     return 2;
   }
   try {
-    return run(scenario, repeat, steps);
+    return run(scenario, set, repeat, steps);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "%s\n", e.what());
     return 2;

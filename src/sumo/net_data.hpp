@@ -1,5 +1,5 @@
 // NetData: what a NetIndex holds: the elements read so far, their lookup tables, the defects, and,
-// until the whole net is read, the parsed document to read more from (NetSource). The elements are
+// until the whole net is read, the net's text and where its elements are, to read more (NetSource). The elements are
 // read by NetLoader (net_loading.cpp) and on demand by the `read_*` functions (net_on_demand.cpp).
 // Private to signalsim_sumo.
 #pragma once
@@ -63,18 +63,10 @@ struct NetData {
   void read_connections_via(const std::string& lane_id);
   /// Everything a defect against this element could come from.
   void read_defects_of(NetElement kind, const std::string& id);
-  /// Every element not read yet; then the document is freed.
+  /// Every element not read yet; then the text is freed.
   void read_whole_net();
-  /// After every element is read: the whole-net lists, and the document freed.
+  /// After every element is read: the whole-net lists, and the text freed.
   void finish_whole_net();
 };
-
-/// Runs `read` under the lock unless the whole net is read.
-template <typename F>
-void read_on_demand(NetData& data, F&& read) {
-  if (data.whole.load(std::memory_order_acquire)) return;
-  std::lock_guard lock(data.reading);
-  if (data.source) read();
-}
 
 }  // namespace signalsim::sumo

@@ -4,12 +4,14 @@
 // file is read directly. All lookups are hash-map based: O(1) in the size of the net.
 //
 // Reading on demand: load parses the whole file (so a file that is not XML fails at once) and notes
-// where each edge, junction and connection is, but reads an element's values (lanes, shapes,
-// params, ...) only when a lookup first needs them; light programs and roundabouts are read at load.
+// where each edge, junction and connection is; then it frees the parsed document and keeps the
+// text, and an element's values (lanes, shapes, params, ...) are parsed from its stretch of the text
+// when a lookup first needs them (net_source.hpp); light programs and roundabouts are read at load.
 // A run reads the elements of its route, a fraction of a city net. Every answer, defects included,
 // is the one a reading of the whole file in order gives: a lookup reads everything its answer
 // depends on (net_on_demand.cpp). The whole-net queries (edges(), defects()) read the whole net.
-// Lookups may be called from several threads (a lock while elements are read).
+// Lookups may be called from several threads (a lock while elements are read). To share one index
+// between the runs of a process: load_shared (net_index_cache.hpp).
 //
 // Loading rule: whatever SUMO 1.15 loads, NetIndex loads. Only a file that is not a net at all (not
 // XML, no <net> root, unreadable, a bad `lefthand`) throws NetError. A value signalsim reads that

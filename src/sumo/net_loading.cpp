@@ -264,10 +264,11 @@ void NetLoader::tl_logic(pugi::xml_node node) {
 }
 
 NetIndex NetIndex::load(const std::string& path, NetReading reading) {
-  // The newlines are found before an in-place parse overwrites some characters (ends of names and
-  // values), for the defects' lines.
+  // For the defects' lines: a whole reading parses in place, which overwrites some characters (ends
+  // of names and values), so the newlines are found first; on demand the text stays as read.
   std::string bytes = read_net_file(path);
-  std::vector<std::size_t> newlines = newline_offsets(bytes);
+  std::vector<std::size_t> newlines;
+  if (reading == NetReading::Whole) newlines = newline_offsets(bytes);
   auto source = std::make_unique<NetSource>(std::move(bytes), reading == NetReading::OnDemand);
   if (const pugi::xml_parse_result parsed = source->parsed(); !parsed) {
     throw NetError(path + ": not XML: " + parsed.description() + " at offset " + std::to_string(parsed.offset));
@@ -287,7 +288,7 @@ NetIndex NetIndex::load(const std::string& path, NetReading reading) {
     net.lefthand = *value;
   }
 
-  net.log = DefectLog(std::move(newlines));
+  net.log = reading == NetReading::Whole ? DefectLog(std::move(newlines)) : DefectLog(&source->text());
   const bool on_demand = reading == NetReading::OnDemand && source->scan();
   net.source = std::move(source);
   NetLoader loader(net);

@@ -53,7 +53,8 @@ void NetData::read_edge(const std::string& id) {
   // The edges to read: this one and, transitively, every earlier unread edge sharing a lane id.
   std::vector<std::pair<std::ptrdiff_t, ElementGroup*>> todo{{src.offset_of(found->edge), &found->edge}};
   for (std::size_t k = 0; k < todo.size(); ++k) {
-    const auto [offset, group] = todo[k];
+    const std::ptrdiff_t offset = todo[k].first;
+    const ElementGroup* group = todo[k].second;
     for (const std::string& lane_id : src.lane_ids(*group)) {
       src.each_edge_defining(lane_id, [&](std::string_view other) {
         ElementGroup& g = src.edge_entry(other)->edge;
@@ -138,7 +139,7 @@ void NetData::finish_whole_net() {
   for (std::size_t i : order) edges_in_file_order.emplace_back(edges[i]);
   defects_in_file_order = log.in_file_order();
   log.seal();
-  source.reset();  // nothing left to read: the document's memory goes
+  source.reset();  // nothing left to read: the text's memory goes
   whole.store(true, std::memory_order_release);
 }
 

@@ -123,6 +123,8 @@ class NetSource {
   pugi::xml_parse_result parsed() const { return parsed_; }
   /// The document's root; null once the document is freed.
   pugi::xml_node root() const { return root_; }
+  /// The file's text as read (on demand; parsed in place, and so changed, for a whole reading).
+  const std::string& text() const { return text_; }
 
   /// Records where every <edge>, <junction> and <connection> is (ids only, nothing else read).
   /// False when the elements cannot be parsed again from the text (a file that is not UTF-8, whose

@@ -85,6 +85,10 @@ std::vector<NetDefect> DefectLog::in_file_order() const {
 // 1 + the newlines before the offset; 0 when pugixml gave no offset.
 int DefectLog::line_of(std::ptrdiff_t offset) const {
   if (offset < 0) return 0;
+  if (!have_newlines_ && text_ != nullptr) {
+    newlines_ = newline_offsets(*text_);
+    have_newlines_ = true;
+  }
   return 1 + static_cast<int>(std::lower_bound(newlines_.begin(), newlines_.end(), static_cast<std::size_t>(offset)) -
                               newlines_.begin());
 }

@@ -28,7 +28,10 @@ class DefectLog {
  public:
   DefectLog() = default;
   /// `newlines`: the sorted offsets of the text's '\n' (see newline_offsets).
-  explicit DefectLog(std::vector<std::size_t> newlines) : newlines_(std::move(newlines)) {}
+  explicit DefectLog(std::vector<std::size_t> newlines) : newlines_(std::move(newlines)), have_newlines_(true) {}
+  /// The newlines are found in `text` (which must stay as it is) when the first defect comes: a net
+  /// without defects never needs them.
+  explicit DefectLog(const std::string* text) : text_(text) {}
 
   /// `offset`: of the element in the buffer; `earlier`: of a first definition (a repeated id), or -1.
   void add(const DefectOwner& owner, std::string element, std::string reason, std::ptrdiff_t offset,
@@ -39,7 +42,10 @@ class DefectLog {
   /// Every defect recorded, in file order (of equal offsets, in the order recorded).
   std::vector<NetDefect> in_file_order() const;
   /// No more defects come (the whole net is read): the line index is freed.
-  void seal() { newlines_ = {}; }
+  void seal() {
+    newlines_ = {};
+    text_ = nullptr;
+  }
 
   /// The offset in the text of offset 0 of the nodes being read: an element parsed again on its
   /// own (NetSource) has offsets from its start.
@@ -53,7 +59,9 @@ class DefectLog {
     NetDefect defect;
     std::ptrdiff_t offset = 0;
   };
-  std::vector<std::size_t> newlines_;
+  mutable std::vector<std::size_t> newlines_;
+  mutable bool have_newlines_ = false;
+  const std::string* text_ = nullptr;
   std::ptrdiff_t fragment_base_ = 0;
   std::deque<Recorded> recorded_;                                 // in the order recorded
   std::unordered_map<std::string, std::size_t> first_against_;  // defect_key -> the first in file order
