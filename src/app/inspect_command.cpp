@@ -20,7 +20,7 @@ struct InspectOptions {
 
 int inspect(const InspectOptions& o) {
   try {
-    const auto net = sumo::NetIndex::load(o.net_path);
+    const auto net = sumo::NetIndex::load(o.net_path, sumo::NetReading::Whole);  // its summary lists every defect
     // Everything is built before anything is printed: bad input writes no partial output.
     std::optional<sumo::RoutePlan> plan;
     if (!o.route.empty()) {

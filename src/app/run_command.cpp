@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <cstdio>
 #include <iostream>
+#include <memory>
 #include <optional>
 
 #include "app/command.hpp"
@@ -97,7 +98,10 @@ int run(const RunOptions& options) {
   try {
     scenario = load_scenario(options.scenario_path, options.overrides);
     const RunContext context = run_context(options);
-    const sumo::NetIndex net = sumo::NetIndex::load(scenario->net);
+    // One index per net and process while the file is unchanged: a worker's later runs on the same
+    // net skip the load (answers do not depend on what earlier runs looked up).
+    const std::shared_ptr<const sumo::NetIndex> net_ptr = sumo::NetIndex::load_shared(scenario->net);
+    const sumo::NetIndex& net = *net_ptr;
     PlannedRun planned = plan_run(*scenario, net);
     check_expectations_apply(planned.scenario, planned.plan.map);
     set_notes_enabled(!options.quiet);

@@ -99,7 +99,7 @@ GenerateReport generate(const GenerateOptions& o) {
   const ParameterSet params = resolved_parameters(o.scenario.country);
   sumo::NetIndex net;
   try {
-    net = sumo::NetIndex::load(o.net);
+    net = sumo::NetIndex::load(o.net, sumo::NetReading::Whole);  // the walk graph reads every edge
   } catch (const sumo::NetError& e) {
     throw GenerateError(e.what());
   }

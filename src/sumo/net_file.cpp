@@ -2,6 +2,7 @@
 
 #include <zlib.h>
 
+#include <algorithm>
 #include <array>
 #include <cerrno>
 #include <cstring>
@@ -34,6 +35,8 @@ std::string read_plain(const std::string& path) {
   return bytes;
 }
 
+constexpr unsigned kChunk = 1u << 20;
+
 std::string read_gzip(const std::string& path) {
   struct GzClose {
     void operator()(gzFile_s* file) const { gzclose(file); }
@@ -43,7 +46,11 @@ std::string read_gzip(const std::string& path) {
   gzbuffer(file.get(), 1u << 17);
 
   std::string bytes;
-  constexpr unsigned kChunk = 1u << 20;
+  // Room for a net's usual inflation (about 6x) up front: growing copies the text each time. The
+  // pages are touched only as they are filled.
+  std::error_code ec;
+  const auto compressed = std::filesystem::file_size(path, ec);
+  if (!ec) bytes.reserve(static_cast<std::size_t>(std::min<std::uintmax_t>(compressed * 8 + kChunk, 1u << 30)));
   for (;;) {
     const std::size_t old_size = bytes.size();
     bytes.resize(old_size + kChunk);

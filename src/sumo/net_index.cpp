@@ -1,7 +1,10 @@
-// NetIndex lookups and lane permissions. Loading is in net_loading.cpp.
+// NetIndex lookups and lane permissions. Loading is in net_loading.cpp, reading on demand in
+// net_on_demand.cpp: each lookup reads what its answer depends on, then looks it up.
 #include "sumo/net_index.hpp"
 
 #include <sstream>
+
+#include "sumo/net_data.hpp"
 
 namespace signalsim::sumo {
 namespace {
@@ -45,57 +48,109 @@ namespace {
 
 const std::vector<NetConnection> kNoConnections;
 
+/// `find()` after `read()` (under the lock, unless the whole net is read already).
+template <typename Read, typename Find>
+auto look_up(NetData& net, Read&& read, Find&& find) {
+  if (net.whole.load(std::memory_order_acquire)) return find();
+  std::lock_guard lock(net.reading);
+  if (net.source) read();
+  return find();
+}
+
+/// The whole net read (for the whole-net queries).
+NetData& whole(NetData& net) {
+  if (!net.whole.load(std::memory_order_acquire)) {
+    std::lock_guard lock(net.reading);
+    if (net.source) net.read_whole_net();
+  }
+  return net;
+}
+
 }  // namespace
 
 std::string defect_key(NetElement kind, const std::string& id) {
   return std::to_string(static_cast<int>(kind)) + ":" + id;
 }
 
+NetIndex::NetIndex() : data_(std::make_unique<NetData>()) { data_->whole = true; }
+NetIndex::NetIndex(NetIndex&&) noexcept = default;
+NetIndex& NetIndex::operator=(NetIndex&&) noexcept = default;
+NetIndex::~NetIndex() = default;
+
+const std::string& NetIndex::path() const { return data_->path; }
+bool NetIndex::lefthand() const { return data_->lefthand; }
+std::size_t NetIndex::edge_count() const { return data_->edge_count; }
+const std::vector<NetRoundabout>& NetIndex::roundabouts() const { return data_->roundabouts; }
+const std::vector<NetTlLogic>& NetIndex::tl_logics() const { return data_->tl_logics; }
+
+const std::vector<std::reference_wrapper<const NetEdge>>& NetIndex::edges() const {
+  return whole(*data_).edges_in_file_order;
+}
+
+const std::vector<NetDefect>& NetIndex::defects() const { return whole(*data_).defects_in_file_order; }
+
 const NetDefect* NetIndex::defect(NetElement kind, const std::string& id) const {
-  if (defect_by_element_.empty()) return nullptr;
-  auto it = defect_by_element_.find(defect_key(kind, id));
-  return it == defect_by_element_.end() ? nullptr : &defects_[it->second];
+  NetData& net = *data_;
+  return look_up(net, [&] { net.read_defects_of(kind, id); }, [&] { return net.log.first_against(kind, id); });
 }
 
 const NetEdge* NetIndex::edge(const std::string& id) const {
-  auto it = edge_by_id_.find(id);
-  return it == edge_by_id_.end() ? nullptr : &edges_[it->second];
+  NetData& net = *data_;
+  return look_up(net, [&] { net.read_edge(id); }, [&]() -> const NetEdge* {
+    auto it = net.edge_by_id.find(id);
+    return it == net.edge_by_id.end() ? nullptr : &net.edges[it->second];
+  });
 }
 
 const NetLane* NetIndex::lane(const std::string& id) const {
-  auto it = lane_by_id_.find(id);
-  return it == lane_by_id_.end() ? nullptr : &edges_[it->second.first].lanes[it->second.second];
+  NetData& net = *data_;
+  return look_up(net, [&] { net.read_lane(id); }, [&]() -> const NetLane* {
+    auto it = net.lane_by_id.find(id);
+    return it == net.lane_by_id.end() ? nullptr : &net.edges[it->second.first].lanes[it->second.second];
+  });
 }
 
 const NetEdge* NetIndex::edge_of_lane(const std::string& lane_id) const {
-  auto it = lane_by_id_.find(lane_id);
-  return it == lane_by_id_.end() ? nullptr : &edges_[it->second.first];
+  NetData& net = *data_;
+  return look_up(net, [&] { net.read_lane(lane_id); }, [&]() -> const NetEdge* {
+    auto it = net.lane_by_id.find(lane_id);
+    return it == net.lane_by_id.end() ? nullptr : &net.edges[it->second.first];
+  });
 }
 
 const NetJunction* NetIndex::junction(const std::string& id) const {
-  auto it = junctions_.find(id);
-  return it == junctions_.end() ? nullptr : &it->second;
+  NetData& net = *data_;
+  return look_up(net, [&] { net.read_junction(id); }, [&]() -> const NetJunction* {
+    auto it = net.junctions.find(id);
+    return it == net.junctions.end() ? nullptr : &it->second;
+  });
 }
 
 const std::vector<NetConnection>& NetIndex::connections_from_lane(const std::string& lane_id) const {
-  auto it = connections_by_from_lane_.find(lane_id);
-  return it == connections_by_from_lane_.end() ? kNoConnections : it->second;
+  NetData& net = *data_;
+  return *look_up(net, [&] { net.read_connections_from_lane(lane_id); }, [&]() -> const std::vector<NetConnection>* {
+    auto it = net.connections_by_from_lane.find(lane_id);
+    return it == net.connections_by_from_lane.end() ? &kNoConnections : &it->second;
+  });
 }
 
 const NetConnection* NetIndex::connection_via(const std::string& internal_lane_id) const {
-  auto it = connection_by_via_.find(internal_lane_id);
-  return it == connection_by_via_.end() ? nullptr : &it->second;
+  NetData& net = *data_;
+  return look_up(net, [&] { net.read_connections_via(internal_lane_id); }, [&]() -> const NetConnection* {
+    auto it = net.connection_by_via.find(internal_lane_id);
+    return it == net.connection_by_via.end() ? nullptr : &it->second.second;
+  });
 }
 
 std::optional<std::size_t> NetIndex::roundabout_of_edge(const std::string& edge_id) const {
-  auto it = roundabout_by_edge_.find(edge_id);
-  if (it == roundabout_by_edge_.end()) return std::nullopt;
+  auto it = data_->roundabout_by_edge.find(edge_id);
+  if (it == data_->roundabout_by_edge.end()) return std::nullopt;
   return it->second;
 }
 
 const NetTlLogic* NetIndex::tl_logic(const std::string& id) const {
-  auto it = tl_logic_by_id_.find(id);
-  return it == tl_logic_by_id_.end() ? nullptr : &tl_logics_[it->second];
+  auto it = data_->tl_logic_by_id.find(id);
+  return it == data_->tl_logic_by_id.end() ? nullptr : &data_->tl_logics[it->second];
 }
 
 }  // namespace signalsim::sumo

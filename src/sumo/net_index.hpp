@@ -1,7 +1,17 @@
-// NetIndex: everything signalsim needs from a SUMO .net.xml (plain or gzip), read once with pugixml.
+// NetIndex: everything signalsim needs from a SUMO .net.xml (plain or gzip), parsed with pugixml.
 //
 // libsumo 1.15 has no API for roundabouts, junction types or <stopOffset> (docs/behaviour.md §S2), so the net
 // file is read directly. All lookups are hash-map based: O(1) in the size of the net.
+//
+// Reading on demand: load parses the whole file (so a file that is not XML fails at once) and notes
+// where each edge, junction and connection is; then it frees the parsed document and keeps the
+// text, and an element's values (lanes, shapes, params, ...) are parsed from its stretch of the text
+// when a lookup first needs them (net_source.hpp); light programs and roundabouts are read at load.
+// A run reads the elements of its route, a fraction of a city net. Every answer, defects included,
+// is the one a reading of the whole file in order gives: a lookup reads everything its answer
+// depends on (net_on_demand.cpp). The whole-net queries (edges(), defects()) read the whole net.
+// Lookups may be called from several threads (a lock while elements are read). To share one index
+// between the runs of a process: load_shared (net_index_cache.hpp).
 //
 // Loading rule: whatever SUMO 1.15 loads, NetIndex loads. Only a file that is not a net at all (not
 // XML, no <net> root, unreadable, a bad `lefthand`) throws NetError. A value signalsim reads that
@@ -10,11 +20,12 @@
 // a NetDefect against its element, with its line; build_route refuses a route that uses the element.
 #pragma once
 
+#include <functional>
 #include <map>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
 #include "core/polyline.hpp"
@@ -118,13 +129,27 @@ class NetIndex;
 /// on such an edge or enters it (seen on DLR's Doerpfeldstr net; plain `sumo` aborts too).
 std::string sumo_cannot_drive(const NetIndex& net, const NetEdge& edge);
 
+struct NetData;
+
+/// How NetIndex::load reads the elements: when a lookup needs them (a run), or all at load (for a
+/// whole-net use such as `inspect` or `generate`: the same index, without the scan for on demand).
+enum class NetReading { OnDemand, Whole };
+
 class NetIndex {
  public:
   /// Reads `path` (gzip detected by its magic bytes, not its name). Throws NetError.
-  static NetIndex load(const std::string& path);
+  static NetIndex load(const std::string& path, NetReading reading = NetReading::OnDemand);
+  /// The index of `path` from the process's NetIndexCache (net_index_cache.hpp): loaded once per
+  /// process while the file is unchanged, shared by every run on it. Throws NetError as load.
+  static std::shared_ptr<const NetIndex> load_shared(const std::string& path);
 
-  const std::string& path() const { return path_; }
-  bool lefthand() const { return lefthand_; }
+  NetIndex();  ///< an empty net
+  NetIndex(NetIndex&&) noexcept;
+  NetIndex& operator=(NetIndex&&) noexcept;
+  ~NetIndex();
+
+  const std::string& path() const;
+  bool lefthand() const;
 
   const NetEdge* edge(const std::string& id) const;
   const NetLane* lane(const std::string& id) const;
@@ -134,41 +159,31 @@ class NetIndex {
 
   /// Connections leaving a (normal or internal) lane, in file order.
   const std::vector<NetConnection>& connections_from_lane(const std::string& lane_id) const;
-  /// The connection whose via is this internal lane, if any.
+  /// The connection whose via is this internal lane, if any (the first in the file).
   const NetConnection* connection_via(const std::string& internal_lane_id) const;
 
-  const std::vector<NetRoundabout>& roundabouts() const { return roundabouts_; }
+  const std::vector<NetRoundabout>& roundabouts() const;
   /// Index into roundabouts() of the roundabout listing this (normal) edge, if any.
   std::optional<std::size_t> roundabout_of_edge(const std::string& edge_id) const;
 
-  const std::vector<NetTlLogic>& tl_logics() const { return tl_logics_; }
+  /// Every program, in file order (several may share an id).
+  const std::vector<NetTlLogic>& tl_logics() const;
+  /// The first program in the file with this id.
   const NetTlLogic* tl_logic(const std::string& id) const;
 
-  std::size_t edge_count() const { return edges_.size(); }
+  /// Edges with an id (a repeated id counted once), internal ones included.
+  std::size_t edge_count() const;
   /// Every edge, internal ones included, in file order (for whole-net indexes such as generate's).
-  const std::vector<NetEdge>& edges() const { return edges_; }
+  /// Reads the whole net.
+  const std::vector<std::reference_wrapper<const NetEdge>>& edges() const;
 
-  /// Every defect found while loading, in file order.
-  const std::vector<NetDefect>& defects() const { return defects_; }
+  /// Every defect in the net, in file order. Reads the whole net.
+  const std::vector<NetDefect>& defects() const;
   /// The first defect that affects routes recorded against this element, or null.
   const NetDefect* defect(NetElement kind, const std::string& id) const;
 
  private:
-  friend class NetLoader;
-  std::string path_;
-  bool lefthand_ = false;
-  std::vector<NetEdge> edges_;
-  std::unordered_map<std::string, std::size_t> edge_by_id_;
-  std::unordered_map<std::string, std::pair<std::size_t, std::size_t>> lane_by_id_;  // edge, lane
-  std::unordered_map<std::string, NetJunction> junctions_;
-  std::unordered_map<std::string, std::vector<NetConnection>> connections_by_from_lane_;
-  std::unordered_map<std::string, NetConnection> connection_by_via_;
-  std::vector<NetRoundabout> roundabouts_;
-  std::unordered_map<std::string, std::size_t> roundabout_by_edge_;
-  std::vector<NetTlLogic> tl_logics_;
-  std::unordered_map<std::string, std::size_t> tl_logic_by_id_;
-  std::vector<NetDefect> defects_;
-  std::unordered_map<std::string, std::size_t> defect_by_element_;  // defect_key(kind, id) -> first
+  std::unique_ptr<NetData> data_;
 };
 
 }  // namespace signalsim::sumo

@@ -1,13 +1,15 @@
-// NetIndex::load: reads a SUMO 1.15 .net.xml into a NetIndex (docs/behaviour.md §S2: roundabouts, junction
-// types and <stopOffset> have no libsumo API, so the file is read directly).
+// NetIndex::load and NetLoader: reads a SUMO 1.15 .net.xml into a NetIndex (docs/behaviour.md §S2: roundabouts,
+// junction types and <stopOffset> have no libsumo API, so the file is read directly).
 //
 // Elements read (children of <net>): <edge> with its <lane>s, <param>s and <stopOffset>s; <junction>;
 // <connection>; <roundabout>; <tlLogic> with its <phase>s. Everything else (<location>, <type>,
 // <request>, <neigh>, ...) is skipped. <location> is irrelevant: signalsim works in net coordinates.
+// load parses the file, reads <net>, the light programs and roundabouts, and scans where the other
+// elements are (NetSource); those are read when a lookup needs them (net_on_demand.cpp).
 //
 // The loading rule (net_index.hpp): a value signalsim reads that cannot be used as written is a
-// NetDefect against its element, never an exception; one pass over the elements, one more over the
-// text for the defects' lines, so loading stays linear in the file.
+// NetDefect against its element, never an exception; each element is read once, so loading stays
+// linear in the file.
 #include <pugixml.hpp>
 
 #include <algorithm>
@@ -15,69 +17,13 @@
 #include <unordered_map>
 #include <utility>
 
+#include "sumo/net_data.hpp"
 #include "sumo/net_file.hpp"
-#include "sumo/net_index.hpp"
+#include "sumo/net_loader.hpp"
 #include "sumo/net_xml_reading.hpp"
 #include "sumo/number_parsing.hpp"
 
 namespace signalsim::sumo {
-namespace {
-
-/// The offset of the first definition of a repeated id. Repeated ids are rare (SUMO refuses them),
-/// so the table of first definitions is built only at the first one: one pass over the document,
-/// and the load stays linear however many ids repeat.
-class FirstDefinitions {
- public:
-  std::ptrdiff_t of(pugi::xml_node root, const std::string& kind, const std::string& key) {
-    if (!built_) build(root);
-    const auto it = first_.find(kind + "\n" + key);
-    return it == first_.end() ? -1 : it->second;
-  }
-
- private:
-  void build(pugi::xml_node root) {
-    built_ = true;
-    for (pugi::xml_node n : root.children()) {
-      const std::string name = n.name();
-      if (name == "edge" || name == "junction") first_.emplace(name + "\n" + n.attribute("id").value(), n.offset_debug());
-      if (name == "tlLogic") {
-        first_.emplace(name + "\n" + n.attribute("id").value() + "\n" + n.attribute("programID").value(),
-                       n.offset_debug());
-      }
-      if (name != "edge") continue;
-      for (pugi::xml_node lane : n.children("lane"))
-        first_.emplace(std::string("lane\n") + lane.attribute("id").value(), lane.offset_debug());
-    }
-  }
-  bool built_ = false;
-  std::unordered_map<std::string, std::ptrdiff_t> first_;
-};
-
-}  // namespace
-
-class NetLoader {
- public:
-  NetLoader(NetIndex& net, DefectLog& log) : net_(net), log_(log) {}
-
-  void edge(pugi::xml_node node);
-  void junction(pugi::xml_node node);
-  void connection(pugi::xml_node node);
-  void roundabout(pugi::xml_node node);
-  void tl_logic(pugi::xml_node node);
-
- private:
-  std::map<std::string, std::string> params(pugi::xml_node parent, const std::string& owner_what,
-                                            const DefectOwner& owner);
-  std::optional<double> stop_offset(pugi::xml_node parent, const std::string& owner_what, const DefectOwner& owner);
-  NetLane lane(pugi::xml_node node, const NetEdge& edge, const DefectOwner& edge_owner);
-  std::vector<std::size_t> lane_order(const XmlElement& e, const NetEdge& edge,
-                                      const std::vector<std::optional<int>>& indices);
-
-  NetIndex& net_;
-  DefectLog& log_;
-  FirstDefinitions first_;
-};
-
 namespace {
 
 bool is(pugi::xml_node node, const char* name) { return std::strcmp(node.name(), name) == 0; }
@@ -107,7 +53,8 @@ std::map<std::string, std::string> NetLoader::params(pugi::xml_node parent, cons
     out[*key] = param.text("value");
     // The one param signalsim reads as a number (docs/behaviour.md §T4.1: a lanelet's own search distance).
     if (*key == "turn_signal_distance" && !parse_double(out[*key]))
-      log_.add(owner, owner_what, "param 'turn_signal_distance' is not a number: '" + out[*key] + "'", p.offset_debug());
+      log_.add(owner, owner_what, "param 'turn_signal_distance' is not a number: '" + out[*key] + "'",
+               log_.fragment_base() + p.offset_debug());
   }
   return out;
 }
@@ -181,8 +128,8 @@ void NetLoader::edge(pugi::xml_node node) {
   const DefectOwner self = owner(NetElement::Edge, edge.id);
   const XmlElement e(node, what, self, log_);
   if (edge.id.empty()) return e.defect("attribute 'id' is missing");
-  if (net_.edge_by_id_.count(edge.id) != 0) {
-    return e.defect("another edge has this id; this one is ignored", true, first_.of(node.parent(), "edge", edge.id));
+  if (net_.edge_by_id.count(edge.id) != 0) {
+    return e.defect("another edge has this id; this one is ignored", true, first_.of("edge", edge.id));
   }
   edge.is_internal = e.text("function") == "internal";
   edge.from_junction = e.text("from");
@@ -205,18 +152,19 @@ void NetLoader::edge(pugi::xml_node node) {
     edge.lanes = std::move(lanes);
   }
 
-  const std::size_t edge_pos = net_.edges_.size();
-  net_.edge_by_id_.emplace(edge.id, edge_pos);
+  const std::size_t edge_pos = net_.edges.size();
+  net_.edge_by_id.emplace(edge.id, edge_pos);
   for (std::size_t i = 0; i < edge.lanes.size(); ++i) {
     NetLane& lane = edge.lanes[i];
     lane.index = static_cast<int>(i);
     if (lane.id.empty()) continue;
-    if (const auto [first, fresh] = net_.lane_by_id_.emplace(lane.id, std::make_pair(edge_pos, i)); !fresh) {
+    if (const auto [first, fresh] = net_.lane_by_id.emplace(lane.id, std::make_pair(edge_pos, i)); !fresh) {
       XmlElement(nodes[order[i]], describe("lane", lane.id), owner(NetElement::Lane, lane.id), log_)
-          .defect("another lane has this id", true, first_.of(node.parent(), "lane", lane.id));
+          .defect("another lane has this id", true, first_.of("lane", lane.id));
     }
   }
-  net_.edges_.push_back(std::move(edge));
+  net_.edges.push_back(std::move(edge));
+  net_.edge_offsets.push_back(e.offset());
 }
 
 void NetLoader::junction(pugi::xml_node node) {
@@ -227,11 +175,11 @@ void NetLoader::junction(pugi::xml_node node) {
   junction.type = j.text("type");
   junction.x = j.number("x", 0.0);
   junction.y = j.number("y", 0.0);
-  if (net_.junctions_.count(junction.id) != 0) {
+  if (net_.junctions.count(junction.id) != 0) {
     return j.defect("another junction has this id; this one is ignored", true,
-                    first_.of(node.parent(), "junction", junction.id));
+                    first_.of("junction", junction.id));
   }
-  net_.junctions_.emplace(junction.id, std::move(junction));
+  net_.junctions.emplace(junction.id, std::move(junction));
 }
 
 // A connection's defects go against its from-lane: a route reads every connection leaving the
@@ -269,8 +217,12 @@ void NetLoader::connection(pugi::xml_node node) {
     if (const auto index = parse_int(link)) conn.link_index = *index;
     else c.defect(std::string("attribute 'linkIndex' is not an integer: '") + link + "'", !conn.tl.empty());
   }
-  if (!conn.via.empty()) net_.connection_by_via_.emplace(conn.via, conn);
-  net_.connections_by_from_lane_[conn.from_edge + "_" + std::to_string(conn.from_lane)].push_back(std::move(conn));
+  if (!conn.via.empty()) {
+    // The first in the file: connections may be read out of file order (on demand).
+    const auto [it, fresh] = net_.connection_by_via.try_emplace(conn.via, c.offset(), conn);
+    if (!fresh && c.offset() < it->second.first) it->second = {c.offset(), conn};
+  }
+  net_.connections_by_from_lane[conn.from_edge + "_" + std::to_string(conn.from_lane)].push_back(std::move(conn));
 }
 
 void NetLoader::roundabout(pugi::xml_node node) {
@@ -279,8 +231,8 @@ void NetLoader::roundabout(pugi::xml_node node) {
   ra.nodes = r.list("nodes");
   ra.edges = r.list("edges");
   if (ra.edges.empty()) return r.defect("attribute 'edges' is missing");
-  for (const std::string& e : ra.edges) net_.roundabout_by_edge_.emplace(e, net_.roundabouts_.size());
-  net_.roundabouts_.push_back(std::move(ra));
+  for (const std::string& e : ra.edges) net_.roundabout_by_edge.emplace(e, net_.roundabouts.size());
+  net_.roundabouts.push_back(std::move(ra));
 }
 
 void NetLoader::tl_logic(pugi::xml_node node) {
@@ -298,57 +250,70 @@ void NetLoader::tl_logic(pugi::xml_node node) {
     const auto state = ph.required_text("state");
     logic.phases.push_back({duration.value_or(0.0), state.value_or("")});
   }
-  if (net_.tl_logic_by_id_.count(logic.id) != 0) {
+  if (net_.tl_logic_by_id.count(logic.id) != 0) {
     // Several programs may share an id, not an id and a programID.
-    const std::ptrdiff_t first = first_.of(node.parent(), "tlLogic", logic.id + "\n" + logic.program_id);
+    const std::ptrdiff_t first = first_.of("tlLogic", logic.id + "\n" + logic.program_id);
     if (first != t.offset()) {
       return t.defect("another tlLogic has this id and programID '" + logic.program_id + "'; this one is ignored",
                       true, first);
     }
   }
   // Several programs may share an id: tl_logic(id) returns the first one in the file.
-  net_.tl_logic_by_id_.emplace(logic.id, net_.tl_logics_.size());
-  net_.tl_logics_.push_back(std::move(logic));
+  net_.tl_logic_by_id.emplace(logic.id, net_.tl_logics.size());
+  net_.tl_logics.push_back(std::move(logic));
 }
 
-NetIndex NetIndex::load(const std::string& path) {
-  // The buffer must outlive the document (parsed in place). Parsing in place overwrites some
-  // characters (ends of names and values), so the newlines are found first, for the defects' lines.
+NetIndex NetIndex::load(const std::string& path, NetReading reading) {
+  // For the defects' lines: a whole reading parses in place, which overwrites some characters (ends
+  // of names and values), so the newlines are found first; on demand the text stays as read.
   std::string bytes = read_net_file(path);
-  const std::vector<std::size_t> newlines = newline_offsets(bytes);
-  pugi::xml_document doc;
-  const pugi::xml_parse_result parsed = doc.load_buffer_inplace(bytes.data(), bytes.size());
-  if (!parsed) {
+  std::vector<std::size_t> newlines;
+  if (reading == NetReading::Whole) newlines = newline_offsets(bytes);
+  auto source = std::make_unique<NetSource>(std::move(bytes), reading == NetReading::OnDemand);
+  if (const pugi::xml_parse_result parsed = source->parsed(); !parsed) {
     throw NetError(path + ": not XML: " + parsed.description() + " at offset " + std::to_string(parsed.offset));
   }
-  const pugi::xml_node root = doc.document_element();
+  const pugi::xml_node root = source->root();
   if (!is(root, "net")) {
     throw NetError(path + ": no <net> root element (found <" + std::string(root.name()) + ">)");
   }
 
-  NetIndex net;
-  net.path_ = path;
+  NetIndex index;
+  NetData& net = *index.data_;
+  net.path = path;
   // The driving side changes every route: a value that is not a boolean is fatal (as in SUMO).
   if (const pugi::xml_attribute lefthand = root.attribute("lefthand")) {
     const auto value = parse_sumo_bool(lefthand.value());
     if (!value) throw NetError(path + ": <net>: attribute 'lefthand' is not a boolean: '" + lefthand.value() + "'");
-    net.lefthand_ = *value;
+    net.lefthand = *value;
   }
 
-  DefectLog log;
-  NetLoader loader(net, log);
-  for (pugi::xml_node node : root.children()) {
-    if (node.type() != pugi::node_element) continue;
-    if (is(node, "edge")) loader.edge(node);
-    else if (is(node, "junction")) loader.junction(node);
-    else if (is(node, "connection")) loader.connection(node);
-    else if (is(node, "roundabout")) loader.roundabout(node);
-    else if (is(node, "tlLogic")) loader.tl_logic(node);
+  net.log = reading == NetReading::Whole ? DefectLog(std::move(newlines)) : DefectLog(&source->text());
+  const bool on_demand = reading == NetReading::OnDemand && source->scan();
+  net.source = std::move(source);
+  NetLoader loader(net);
+  if (!on_demand) {  // every element from the document, in file order
+    for (pugi::xml_node node : root.children()) {
+      if (node.type() != pugi::node_element) continue;
+      if (is(node, "edge")) loader.edge(node);
+      else if (is(node, "junction")) loader.junction(node);
+      else if (is(node, "connection")) loader.connection(node);
+      else if (is(node, "roundabout")) loader.roundabout(node);
+      else if (is(node, "tlLogic")) loader.tl_logic(node);
+    }
+    net.edge_count = net.edge_by_id.size();
+    net.finish_whole_net();
+    return index;
   }
-  std::vector<std::pair<std::pair<NetElement, std::string>, std::size_t>> keys;
-  net.defects_ = log.finish(newlines, keys);
-  for (const auto& [element, index] : keys) net.defect_by_element_.emplace(defect_key(element.first, element.second), index);
-  return net;
+  // Few and read whole by their users (approach lights, generate): read now, from the document.
+  for (pugi::xml_node node : net.source->lights_and_roundabouts) {
+    if (is(node, "roundabout")) loader.roundabout(node);
+    else loader.tl_logic(node);
+  }
+  net.source->drop_document();  // the rest is parsed again from the text when read
+  net.edge_count = net.source->edge_count;
+  net.whole = false;
+  return index;
 }
 
 }  // namespace signalsim::sumo

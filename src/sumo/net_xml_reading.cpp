@@ -50,14 +50,47 @@ std::optional<bool> parse_sumo_bool(const std::string& text) {
 
 void DefectLog::add(const DefectOwner& owner, std::string element, std::string reason, std::ptrdiff_t offset,
                     bool affects_routes, std::ptrdiff_t earlier) {
-  Pending p;
-  p.defect.element = std::move(element);
-  p.defect.reason = std::move(reason);
-  p.defect.affects_routes = affects_routes;
-  p.owner = owner;
-  p.offset = offset;
-  p.earlier = earlier;
-  pending_.push_back(std::move(p));
+  Recorded r;
+  r.defect.element = std::move(element);
+  r.defect.reason = std::move(reason);
+  r.defect.affects_routes = affects_routes;
+  r.defect.line = line_of(offset);
+  if (earlier >= 0) r.defect.reason += " (first defined at line " + std::to_string(line_of(earlier)) + ")";
+  r.offset = offset;
+  recorded_.push_back(std::move(r));
+  if (!owner || !affects_routes) return;
+  // Elements may be read out of file order (on demand): the first is the one with the lowest
+  // offset; of one element's defects, the first recorded.
+  const auto [it, fresh] = first_against_.emplace(defect_key(owner->first, owner->second), recorded_.size() - 1);
+  if (!fresh && offset < recorded_[it->second].offset) it->second = recorded_.size() - 1;
+}
+
+const NetDefect* DefectLog::first_against(NetElement kind, const std::string& id) const {
+  if (first_against_.empty()) return nullptr;
+  const auto it = first_against_.find(defect_key(kind, id));
+  return it == first_against_.end() ? nullptr : &recorded_[it->second].defect;
+}
+
+std::vector<NetDefect> DefectLog::in_file_order() const {
+  std::vector<std::size_t> order(recorded_.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return recorded_[a].offset < recorded_[b].offset; });
+  std::vector<NetDefect> out;
+  out.reserve(order.size());
+  for (std::size_t i : order) out.push_back(recorded_[i].defect);
+  return out;
+}
+
+// 1 + the newlines before the offset; 0 when pugixml gave no offset.
+int DefectLog::line_of(std::ptrdiff_t offset) const {
+  if (offset < 0) return 0;
+  if (!have_newlines_ && text_ != nullptr) {
+    newlines_ = newline_offsets(*text_);
+    have_newlines_ = true;
+  }
+  return 1 + static_cast<int>(std::lower_bound(newlines_.begin(), newlines_.end(), static_cast<std::size_t>(offset)) -
+                              newlines_.begin());
 }
 
 std::vector<std::size_t> newline_offsets(const std::string& text) {
@@ -65,34 +98,6 @@ std::vector<std::size_t> newline_offsets(const std::string& text) {
   for (const char* p = text.data(); (p = static_cast<const char*>(std::memchr(p, '\n', text.data() + text.size() - p)));
        ++p)
     out.push_back(static_cast<std::size_t>(p - text.data()));
-  return out;
-}
-
-std::vector<NetDefect> DefectLog::finish(
-    const std::vector<std::size_t>& newlines,
-    std::vector<std::pair<std::pair<NetElement, std::string>, std::size_t>>& keys) {
-  // 1 + the newlines before the offset; 0 when pugixml gave no offset.
-  const auto line_of = [&](std::ptrdiff_t offset) {
-    if (offset < 0) return 0;
-    return 1 + static_cast<int>(std::lower_bound(newlines.begin(), newlines.end(), static_cast<std::size_t>(offset)) -
-                                newlines.begin());
-  };
-
-  // File order (the elements are visited in file order already; a stable sort keeps that).
-  std::vector<std::size_t> order(pending_.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(),
-                   [&](std::size_t a, std::size_t b) { return pending_[a].offset < pending_[b].offset; });
-  std::vector<NetDefect> out;
-  out.reserve(pending_.size());
-  for (std::size_t i : order) {
-    Pending& p = pending_[i];
-    p.defect.line = line_of(p.offset);
-    if (p.earlier >= 0) p.defect.reason += " (first defined at line " + std::to_string(line_of(p.earlier)) + ")";
-    if (p.owner && p.defect.affects_routes) keys.emplace_back(*p.owner, out.size());
-    out.push_back(std::move(p.defect));
-  }
-  pending_.clear();
   return out;
 }
 

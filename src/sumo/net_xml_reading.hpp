@@ -7,8 +7,10 @@
 #include <pugixml.hpp>
 
 #include <cstddef>
+#include <deque>
 #include <optional>
 #include <string>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -20,27 +22,49 @@ namespace signalsim::sumo {
 /// The element a defect is recorded against: its kind and id. No owner: listed only.
 using DefectOwner = std::optional<std::pair<NetElement, std::string>>;
 
-/// Defects as they are found, with byte offsets; lines are assigned in one pass at the end.
+/// The defects of one net as its elements are read (all at load, or each element the first time a
+/// lookup needs it, net_index.hpp): each gets its line when it is recorded.
 class DefectLog {
  public:
+  DefectLog() = default;
+  /// `newlines`: the sorted offsets of the text's '\n' (see newline_offsets).
+  explicit DefectLog(std::vector<std::size_t> newlines) : newlines_(std::move(newlines)), have_newlines_(true) {}
+  /// The newlines are found in `text` (which must stay as it is) when the first defect comes: a net
+  /// without defects never needs them.
+  explicit DefectLog(const std::string* text) : text_(text) {}
+
   /// `offset`: of the element in the buffer; `earlier`: of a first definition (a repeated id), or -1.
   void add(const DefectOwner& owner, std::string element, std::string reason, std::ptrdiff_t offset,
            bool affects_routes = true, std::ptrdiff_t earlier = -1);
 
-  /// Lines from `newlines` (the sorted offsets of the text's '\n', see newline_offsets).
-  /// Returns the defects in file order; `keys` gets (owner, index into the result) per owned defect
-  /// that affects routes.
-  std::vector<NetDefect> finish(const std::vector<std::size_t>& newlines,
-                                std::vector<std::pair<std::pair<NetElement, std::string>, std::size_t>>& keys);
+  /// The first defect in file order recorded against this element that affects routes, or null.
+  const NetDefect* first_against(NetElement kind, const std::string& id) const;
+  /// Every defect recorded, in file order (of equal offsets, in the order recorded).
+  std::vector<NetDefect> in_file_order() const;
+  /// No more defects come (the whole net is read): the line index is freed.
+  void seal() {
+    newlines_ = {};
+    text_ = nullptr;
+  }
+
+  /// The offset in the text of offset 0 of the nodes being read: an element parsed again on its
+  /// own (NetSource) has offsets from its start.
+  void set_fragment_base(std::ptrdiff_t base) { fragment_base_ = base; }
+  std::ptrdiff_t fragment_base() const { return fragment_base_; }
 
  private:
-  struct Pending {
+  int line_of(std::ptrdiff_t offset) const;
+
+  struct Recorded {
     NetDefect defect;
-    DefectOwner owner;
     std::ptrdiff_t offset = 0;
-    std::ptrdiff_t earlier = -1;
   };
-  std::vector<Pending> pending_;
+  mutable std::vector<std::size_t> newlines_;
+  mutable bool have_newlines_ = false;
+  const std::string* text_ = nullptr;
+  std::ptrdiff_t fragment_base_ = 0;
+  std::deque<Recorded> recorded_;                                 // in the order recorded
+  std::unordered_map<std::string, std::size_t> first_against_;  // defect_key -> the first in file order
 };
 
 class XmlElement {
@@ -67,7 +91,8 @@ class XmlElement {
 
   /// Records `reason` against this element.
   void defect(const std::string& reason, bool affects_routes = true, std::ptrdiff_t earlier = -1) const;
-  std::ptrdiff_t offset() const { return node_.offset_debug(); }
+  /// The element's offset in the text.
+  std::ptrdiff_t offset() const { return node_.offset_debug() + log_->fragment_base(); }
   const std::string& what() const { return what_; }
 
  private:
@@ -77,7 +102,7 @@ class XmlElement {
   DefectLog* log_;
 };
 
-/// The offsets of every '\n' in `text`, in order (taken before pugixml parses it in place).
+/// The offsets of every '\n' in `text`, in order (taken before pugixml may parse it in place).
 std::vector<std::size_t> newline_offsets(const std::string& text);
 
 /// "<kind> '<id>'" for messages; "<kind> without id" when `id` is empty.
