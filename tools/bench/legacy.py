@@ -1,31 +1,25 @@
-#!/usr/bin/python3
-"""signalsim's benchmarks, rerunnable by anyone with the project's Debian packages (docs/performance.md).
+"""The benchmarks tools/bench had before the side-by-side comparison, kept as options of tools/bench/run:
 
-  tools/bench [--runs N] [--only NAME,...] [--list]
-
-Builds signalsim (tools/build_signalsim), then prints a table of
   micro      Google Benchmark: one decider step and one speed-planning step on 100 .. 100 000 lanelets
-  embedded   one bundled scenario as a whole process (libsumo in-process)
+  embedded   intersection_left as a whole process (libsumo in-process)
   gui        the same run in sumo-gui under an Xvfb started here (--gui), when Xvfb is installed
   connect    the same run attached (--connect) to a sumo started here on 127.0.0.1, per run
   routes     a Bologna ego with the net's 8 622-vehicle demand as route files (-r, `routes:`)
   additional the same demand given as additional files (everything loaded at start)
-Whole-process figures are the median (and min-max) wall time of N runs (default 5) after one
-warm-up run, timed from outside with time.perf_counter; every service started here is stopped by its
-PID. Numbers depend on the machine: compare rows of one call, not across machines.
+
+Each prints its row at once: the median wall and CPU time of N runs after one warm-up run (min-max of
+the wall time in brackets; connect's CPU includes its sumo server's). Every service started here is stopped by its process id.
 """
-import argparse
 import os
 import shutil
 import socket
 import statistics
 import subprocess
-import sys
-import tempfile
 import time
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-BIN = os.path.join(ROOT, "build", "src", "app", "signalsim")
+from measure import children_cpu, run_child
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 SCENARIO = os.path.join(ROOT, "scenarios", "intersection_left.yaml")
 ACOSTA = os.path.join(ROOT, "sumo_nets", "bologna_acosta")
 
@@ -37,42 +31,47 @@ def free_port():
 
 
 def timed(command, runs, env=None, before=None, after=None):
-    """Median, min and max wall seconds of `command` over `runs` runs (one warm-up run first). With
-    `before`, each run first calls it (not timed) and `command` is a function of what it returned."""
-    times = []
+    """Samples of `command` over `runs` runs after one warm-up run. With `before`, each run first calls
+    it (not timed) and `command` is a function of what it returned; `after` gets that state back, and
+    the CPU time of what it waits for (a server `before` started) counts in the run's."""
+    samples = []
     for i in range(runs + 1):
         state = before() if before else None
         argv = command(state) if before else command
-        start = time.perf_counter()
-        result = subprocess.run(argv, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
-        elapsed = time.perf_counter() - start
-        if after:
-            after(state)
-        if result.returncode not in (0, 1):
-            raise RuntimeError(" ".join(command) + ": exit code %d: %s" % (result.returncode, result.stderr.strip()))
+        cpu_before = children_cpu()
+        try:
+            sample = run_child(argv, env=env, ok_codes=(0, 1))
+        finally:
+            if after:
+                after(state)
+        sample.cpu = children_cpu() - cpu_before
         if i > 0:
-            times.append(elapsed)
-    return statistics.median(times), min(times), max(times)
+            samples.append(sample)
+    return samples
 
 
-def row(name, what, figures):
-    median, low, high = figures
-    print("%-10s  %-58s  %7.3f s  (%.3f-%.3f)" % (name, what, median, low, high), flush=True)
+def row(name, what, samples):
+    walls = [s.wall for s in samples]
+    print("%-10s  %-58s  %7.3f s wall (%.3f-%.3f)  %7.3f s CPU" % (
+        name, what, statistics.median(walls), min(walls), max(walls), statistics.median(s.cpu for s in samples)),
+        flush=True)
 
 
-def bench_micro(_runs, _work):
+def bench_micro(_runs, _work, _binary, env):
     binary = os.path.join(ROOT, "build", "bench", "signalsim_bench")
-    out = subprocess.run([binary, "--benchmark_min_time=0.2"], capture_output=True, text=True, check=True).stdout
+    out = subprocess.run([binary, "--benchmark_min_time=0.2"], capture_output=True, text=True, check=True,
+                         env=env).stdout
     for line in out.splitlines():
         if line.startswith("BM_"):
             print("micro       " + line, flush=True)
 
 
-def bench_embedded(runs, work):
-    row("embedded", "intersection_left, 320 steps", timed([BIN, "run", SCENARIO, "--out", work + "/e", "--quiet"], runs))
+def bench_embedded(runs, work, binary, env):
+    row("embedded", "intersection_left, 320 steps",
+        timed([binary, "run", SCENARIO, "--out", work + "/e", "--quiet"], runs, env))
 
 
-def bench_gui(runs, work):
+def bench_gui(runs, work, binary, env):
     if shutil.which("Xvfb") is None:
         print("gui         skipped: Xvfb is not installed (apt-get install xvfb)")
         return
@@ -80,36 +79,42 @@ def bench_gui(runs, work):
     xvfb = subprocess.Popen(["Xvfb", "-displayfd", str(display_file.fileno()), "-nolisten", "tcp"],
                             pass_fds=[display_file.fileno()], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     try:
+        number = ""
         for _ in range(100):
             display_file.seek(0)
             number = display_file.read().strip()
             if number:
                 break
             time.sleep(0.05)
-        env = dict(os.environ, DISPLAY=":" + number)
+        gui_env = dict(env, DISPLAY=":" + number)
         row("gui", "intersection_left in sumo-gui (start, connect, quit)",
-            timed([BIN, "run", SCENARIO, "--out", work + "/g", "--quiet", "--gui"], runs, env=env))
+            timed([binary, "run", SCENARIO, "--out", work + "/g", "--quiet", "--gui"], runs, env=gui_env))
     finally:
         xvfb.terminate()
         xvfb.wait()
+        display_file.close()
 
 
-def bench_connect(runs, work):
+def bench_connect(runs, work, binary, env):
     net = os.path.join(ROOT, "sumo_nets", "cross", "cross.net.xml")
 
     def start_server():  # a fresh server per run; it ends when signalsim, its only client, leaves
         port = free_port()
         server = subprocess.Popen(["sumo", "-n", net, "--remote-port", str(port), "--step-length", "0.1",
-                                   "--seed", "1", "--no-step-log", "true"],
+                                   "--seed", "1", "--no-step-log", "true"], env=env,
                                   stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
         return port, server
 
     def stop_server(state):
-        state[1].wait(timeout=30)
+        try:
+            state[1].wait(timeout=30)
+        except subprocess.TimeoutExpired:
+            state[1].kill()
+            state[1].wait()
 
     row("connect", "intersection_left attached to a sumo on 127.0.0.1",
-        timed(lambda state: [BIN, "run", SCENARIO, "--out", work + "/c", "--quiet", "--connect",
-                             "127.0.0.1:%d" % state[0]], runs, before=start_server, after=stop_server))
+        timed(lambda state: [binary, "run", SCENARIO, "--out", work + "/c", "--quiet", "--connect",
+                             "127.0.0.1:%d" % state[0]], runs, env, before=start_server, after=stop_server))
 
 
 def write_acosta_scenario(work, key):
@@ -128,43 +133,17 @@ def write_acosta_scenario(work, key):
     return path
 
 
-def bench_routes(runs, work):
+def bench_routes(runs, work, binary, env):
     scenario = write_acosta_scenario(work, "routes")
     row("routes", "bologna/acosta ego, its demand as route files (-r)",
-        timed([BIN, "run", scenario, "--out", work + "/r", "--quiet"], runs))
+        timed([binary, "run", scenario, "--out", work + "/r", "--quiet"], runs, env))
 
 
-def bench_additional(runs, work):
+def bench_additional(runs, work, binary, env):
     scenario = write_acosta_scenario(work, "additional")
     row("additional", "bologna/acosta ego, its demand as additional files (-a)",
-        timed([BIN, "run", scenario, "--out", work + "/a", "--quiet"], runs))
+        timed([binary, "run", scenario, "--out", work + "/a", "--quiet"], runs, env))
 
 
 BENCHES = {"micro": bench_micro, "embedded": bench_embedded, "gui": bench_gui, "connect": bench_connect,
            "routes": bench_routes, "additional": bench_additional}
-
-
-def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--runs", type=int, default=5)
-    parser.add_argument("--only", default=",".join(BENCHES))
-    parser.add_argument("--list", action="store_true")
-    args = parser.parse_args()
-    if args.list:
-        print("\n".join(BENCHES))
-        return 0
-    names = args.only.split(",")
-    unknown = [n for n in names if n not in BENCHES]
-    if unknown:
-        print("tools/bench: unknown benchmark %s (known: %s)" % (", ".join(unknown), ", ".join(BENCHES)), file=sys.stderr)
-        return 2
-    subprocess.run([os.path.join(ROOT, "tools", "build_signalsim")], check=True, stdout=subprocess.DEVNULL)
-    os.environ.setdefault("SUMO_HOME", "/usr/share/sumo")
-    with tempfile.TemporaryDirectory() as work:
-        for name in names:
-            BENCHES[name](args.runs, work)
-    return 0
-
-
-if __name__ == "__main__":
-    sys.exit(main())
