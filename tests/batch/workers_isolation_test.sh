@@ -9,6 +9,9 @@
 # the others a fraction of a second).
 # usage: workers_isolation_test.sh SIGNALSIM_BINARY SOURCE_DIR
 set -u
+# Under AddressSanitizer (tools/test_sanitized) ASan's own SIGSEGV handler would turn the kill -SEGV
+# below into a report and exit code 1: the signal must reach the worker as it does in a normal build.
+export ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}handle_segv=0"
 bin=$1
 src=$2
 work=$(mktemp -d)
