@@ -1,5 +1,7 @@
+// Worker processes for batch runs, one process per run (process_pool.hpp).
 #include "batch/process_pool.hpp"
 
+#include "batch/child_start.hpp"
 #include "batch/interrupt_guard.hpp"
 #include "report/exit_codes.hpp"
 
@@ -49,9 +51,7 @@ pid_t spawn(const std::vector<std::string>& argv, int err_fd, bool own_group) {
   }
   // Child: only async-signal-safe calls from here on.
   if (own_group) {
-    setpgid(0, 0);
-    prctl(PR_SET_PDEATHSIG, SIGKILL);  // never outlive the batch
-    if (getppid() != parent) _exit(127);
+    join_own_group_tied_to(parent);
     const int null_fd = open("/dev/null", O_RDWR | O_CLOEXEC);  // the dup2 copies stay open
     if (null_fd >= 0) {
       dup2(null_fd, STDIN_FILENO);
@@ -59,12 +59,7 @@ pid_t spawn(const std::vector<std::string>& argv, int err_fd, bool own_group) {
     }
   }
   if (err_fd >= 0) dup2(err_fd, STDERR_FILENO);
-  execv(args[0], args.data());
-  const char* msg = "signalsim: cannot start worker: ";
-  (void)!write(STDERR_FILENO, msg, std::strlen(msg));
-  (void)!write(STDERR_FILENO, args[0], std::strlen(args[0]));
-  (void)!write(STDERR_FILENO, "\n", 1);
-  _exit(127);
+  exec_worker_or_exit(args.data());
 }
 
 void drain(Worker& w) {

@@ -1,6 +1,7 @@
 // A persistent worker process and its three pipes (worker_process.hpp).
 #include "batch/worker_process.hpp"
 
+#include "batch/child_start.hpp"
 #include <fcntl.h>
 #include <poll.h>
 #include <sys/prctl.h>
@@ -58,9 +59,7 @@ WorkerProcess::WorkerProcess(const std::string& program) {
   if (pid == 0) {
     // Child: only async-signal-safe calls from here on. The pipes' own descriptors close on exec;
     // the dup2 copies stay.
-    setpgid(0, 0);
-    prctl(PR_SET_PDEATHSIG, SIGKILL);  // never outlive the batch
-    if (getppid() != parent) _exit(127);
+    join_own_group_tied_to(parent);
     // Every source above the standard descriptors first, so no dup2 below overwrites another's
     // source (a batch started with its stdin closed has pipes on 0, 1 or 2).
     const int from_requests = fcntl(requests[0], F_DUPFD_CLOEXEC, 10);
@@ -73,12 +72,7 @@ WorkerProcess::WorkerProcess(const std::string& program) {
     if (null_fd >= 0) dup2(null_fd, STDOUT_FILENO);
     dup2(from_errors, STDERR_FILENO);
     dup2(to_replies, kWorkerReplyFd);
-    execv(args[0], const_cast<char* const*>(args));
-    const char* msg = "signalsim: cannot start worker: ";
-    (void)!write(STDERR_FILENO, msg, std::strlen(msg));
-    (void)!write(STDERR_FILENO, args[0], std::strlen(args[0]));
-    (void)!write(STDERR_FILENO, "\n", 1);
-    _exit(127);
+    exec_worker_or_exit(const_cast<char* const*>(args));
   }
   const int fork_errno = errno;
   close(requests[0]);
