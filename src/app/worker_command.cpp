@@ -6,7 +6,8 @@
 // would have fresh: the notes printed, the working directory. libsumo is closed at the end of each
 // run (sumo/session_embedded.cpp) and starts again with the next; after a run whose SUMO failed to
 // start the worker ends (sumo::embedded_sumo_reusable), and the batch starts another. SIGINT/SIGTERM
-// stop the run under way as they stop `run` (its reply says 130 or 143) and end the worker.
+// stop the run under way as they stop `run` (its reply says 130 or 143) and end the worker. The
+// batch commands usually fork into serve() rather than exec this command (worker_process.hpp).
 #include <fcntl.h>
 #include <unistd.h>
 
@@ -17,6 +18,7 @@
 #include <optional>
 
 #include "app/command.hpp"
+#include "batch/worker_process.hpp"
 #include "batch/worker_protocol.hpp"
 #include "scenario/notes.hpp"
 #include "sumo/interruption.hpp"
@@ -116,6 +118,7 @@ int serve() {
 Command add_worker_command(CLI::App& app) {
   CLI::App* sub = app.add_subcommand("worker", "A persistent worker of batch, sweep, check and compare (internal)");
   sub->group("");  // hidden from --help: the batch commands start it
+  set_worker_entry(&serve);  // the batch commands fork into it (batch/worker_process.hpp)
   return {sub, [] { return serve(); }};
 }
 

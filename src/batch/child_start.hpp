@@ -1,6 +1,6 @@
 // The child's side of starting a batch's worker process, between fork and exec: shared by
 // process_pool (one process per run) and worker_process (persistent workers). Only
-// async-signal-safe calls: the parent may hold locks another of its threads took.
+// async-signal-safe calls until exec: the parent may hold locks another of its threads took.
 #pragma once
 
 #include <sys/prctl.h>

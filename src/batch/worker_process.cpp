@@ -1,7 +1,6 @@
 // A persistent worker process and its three pipes (worker_process.hpp).
 #include "batch/worker_process.hpp"
 
-#include "batch/child_start.hpp"
 #include <fcntl.h>
 #include <poll.h>
 #include <sys/prctl.h>
@@ -12,13 +11,39 @@
 #include <cerrno>
 #include <csignal>
 #include <cstring>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
 #include <stdexcept>
 
+#include "batch/child_start.hpp"
 
 namespace signalsim {
 namespace {
 
 constexpr std::size_t kMaxStderr = 64 * 1024;  // per run, as for one process per run
+
+int (*worker_entry)() = nullptr;
+
+// A fork may run more than async-signal-safe code only when no other thread could have held a lock.
+bool single_threaded() {
+  std::ifstream status("/proc/self/status");
+  for (std::string line; std::getline(status, line);)
+    if (line.rfind("Threads:", 0) == 0) return std::stoi(line.substr(8)) == 1;
+  return false;
+}
+
+// In the forked child, its descriptors set: what exec would have done, then the worker's loop.
+[[noreturn]] void serve_in_fork(int (*entry)()) {
+  // The batch's own descriptors (other workers' pipes, results.csv, the output lock) all close on
+  // exec; without one they are closed here, or a worker would hold another's pipe open.
+  close_range(kWorkerReplyFd + 1, ~0U, 0);
+  // The handlers signalsim installs go back to the default, as exec puts them (ignored ones stay
+  // ignored, as through exec); the worker installs its own.
+  for (const int signal : {SIGINT, SIGTERM, SIGALRM}) std::signal(signal, SIG_DFL);
+  std::exit(entry());  // the exit of `signalsim worker`'s main: its streams flushed, static objects ended
+}
+
 
 void close_fd(int& fd) {
   if (fd >= 0) close(fd);
@@ -43,6 +68,8 @@ void read_now(int& fd, std::string& out, std::size_t limit) {
 
 }  // namespace
 
+void set_worker_entry(int (*entry)()) { worker_entry = entry; }
+
 WorkerProcess::WorkerProcess(const std::string& program) {
   int requests[2] = {-1, -1}, replies[2] = {-1, -1}, errors[2] = {-1, -1};
   if (pipe2(requests, O_CLOEXEC) != 0 || pipe2(replies, O_CLOEXEC) != 0 || pipe2(errors, O_CLOEXEC) != 0) {
@@ -55,10 +82,16 @@ WorkerProcess::WorkerProcess(const std::string& program) {
   }
   const char* args[] = {program.c_str(), "worker", nullptr};
   const pid_t parent = getpid();
+  int (*const entry)() = worker_entry && single_threaded() ? worker_entry : nullptr;
+  if (entry) {  // what the parent has buffered must not be written twice
+    std::cout.flush();
+    std::cerr.flush();
+    std::fflush(nullptr);
+  }
   const pid_t pid = fork();
   if (pid == 0) {
-    // Child: only async-signal-safe calls from here on. The pipes' own descriptors close on exec;
-    // the dup2 copies stay.
+    // Child: only async-signal-safe calls until exec or, with one thread, serve_in_fork. The pipes'
+    // own descriptors close on exec (or in serve_in_fork); the dup2 copies stay.
     join_own_group_tied_to(parent);
     // Every source above the standard descriptors first, so no dup2 below overwrites another's
     // source (a batch started with its stdin closed has pipes on 0, 1 or 2).
@@ -72,6 +105,7 @@ WorkerProcess::WorkerProcess(const std::string& program) {
     if (null_fd >= 0) dup2(null_fd, STDOUT_FILENO);
     dup2(from_errors, STDERR_FILENO);
     dup2(to_replies, kWorkerReplyFd);
+    if (entry) serve_in_fork(entry);
     exec_worker_or_exit(const_cast<char* const*>(args));
   }
   const int fork_errno = errno;

@@ -1,6 +1,9 @@
 // One persistent worker of a batch: `signalsim worker` (app/worker_command.cpp) started with three
 // pipes - its stdin for requests, its stderr, and file descriptor 3 for replies (worker_protocol.hpp) -
 // in its own process group, dying with the batch (PR_SET_PDEATHSIG), stdout on /dev/null.
+// Where the program registered its worker loop (set_worker_entry) and the batch has one thread, the
+// worker is a fork of the batch that runs that loop, not a new process image: exec and the dynamic
+// linking of libsumo's ~220 libraries cost about 0.1 s of CPU a worker, more than five small runs.
 // Reading never blocks: the pool polls fds() and calls read_available().
 #pragma once
 
@@ -16,9 +19,14 @@ struct pollfd;
 
 namespace signalsim {
 
+/// The worker's loop (`signalsim worker`'s own function), run in a fork of the batch instead of
+/// exec'ing `program worker`. Without one, every worker is exec'd.
+void set_worker_entry(int (*entry)());
+
 class WorkerProcess {
  public:
-  /// Starts `program worker`. Throws std::runtime_error when no pipe or process can be made.
+  /// Starts `program worker` (or forks into the registered worker loop). Throws std::runtime_error
+  /// when no pipe or process can be made.
   explicit WorkerProcess(const std::string& program);
   /// Kills the whole process group (SIGKILL) unless the worker has ended, and reaps it.
   ~WorkerProcess();

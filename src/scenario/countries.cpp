@@ -25,7 +25,7 @@ std::vector<std::string> known_codes() {
 }
 
 Country read_country(const fs::path& path) {
-  const YAML::Node root = load_yaml_file(path.string(), "country file");
+  const YAML::Node root = load_shared_yaml_file(path.string(), "country file");
   YamlFields fields(root, path.string(), "");
   Country c;
   c.path = path.string();

@@ -124,7 +124,7 @@ void ParameterSet::check_consistency(const std::string& file) const {
 }
 
 void ParameterSet::apply_file(const std::string& path, bool strict) {
-  apply(load_yaml_file(path, "parameter file"), ParameterOrigin{path, "", true, strict});
+  apply(load_shared_yaml_file(path, "parameter file"), ParameterOrigin{path, "", true, strict});
 }
 
 double ParameterSet::number(const std::string& name) const {

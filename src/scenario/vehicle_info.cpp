@@ -21,7 +21,7 @@ constexpr double kMaxDimension = 30.0;  // [m] as ego.length's upper bound
 }  // namespace
 
 VehicleInfo load_vehicle_info(const std::string& path, bool strict) {
-  const std::vector<FlatParameter> flat = document_parameters(load_yaml_file(path, "vehicle_info file"), path);
+  const std::vector<FlatParameter> flat = document_parameters(load_shared_yaml_file(path, "vehicle_info file"), path);
   VehicleInfo info;
   info.file = path;
   std::map<std::string, double*> fields = {

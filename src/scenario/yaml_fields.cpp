@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <map>
 #include <sstream>
 #include <stdexcept>
 
@@ -12,20 +13,51 @@
 
 namespace signalsim {
 
-YAML::Node load_yaml_file(const std::string& path, const std::string& what) {
+namespace {
+
+std::string read_yaml_text(const std::string& path, const std::string& what) {
   if (!std::filesystem::is_regular_file(path)) throw InputError(path, 0, what + " not found");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, 0, "cannot read the " + what);
   std::stringstream bytes;
   bytes << in.rdbuf();
-  const std::string text = bytes.str();
+  std::string text = bytes.str();
   // Every string of the file may end up in summary.json (UTF-8 JSON): check the text now, at its line.
   if (const auto bad = find_invalid_utf8(text)) throw InputError(path, bad->line, describe_invalid_utf8(text, *bad) + "; save the file as UTF-8");
+  return text;
+}
+
+YAML::Node parse_yaml_text(const std::string& text, const std::string& path) {
   try {
     return YAML::Load(text);
   } catch (const YAML::Exception& e) {
     throw InputError(path, e.mark.line + 1, "malformed YAML: " + e.msg);
   }
+}
+
+}  // namespace
+
+YAML::Node load_yaml_file(const std::string& path, const std::string& what) {
+  return parse_yaml_text(read_yaml_text(path, what), path);
+}
+
+YAML::Node load_shared_yaml_file(const std::string& path, const std::string& what) {
+  // A batch's parent and each of its workers read every scenario's parameter files: yaml-cpp's
+  // parse of autoware_defaults.yaml is most of a scenario's load. A hit needs the same bytes, so an
+  // edited file is parsed again; a few files are kept (a sweep over many parameter files would
+  // otherwise hold them all). (YAML::Clone would lose the marks, the lines errors name.)
+  struct Parsed {
+    std::string text;
+    YAML::Node root;
+  };
+  static std::map<std::string, Parsed> parsed;
+  constexpr std::size_t kKept = 16;
+  std::string text = read_yaml_text(path, what);
+  if (const auto hit = parsed.find(path); hit != parsed.end() && hit->second.text == text) return hit->second.root;
+  YAML::Node root = parse_yaml_text(text, path);
+  if (parsed.size() >= kKept) parsed.clear();
+  parsed[path] = Parsed{std::move(text), root};
+  return root;
 }
 
 int yaml_line(const YAML::Node& node) { return node && node.Mark().line >= 0 ? node.Mark().line + 1 : 0; }

@@ -70,6 +70,10 @@ int yaml_line(const YAML::Node& node);
 /// <reason>" at the parser's line for a syntax error.
 YAML::Node load_yaml_file(const std::string& path, const std::string& what);
 
+/// load_yaml_file for a file read many times in a process (parameter, country and vehicle_info
+/// files): the same file with the same bytes gives the same tree, which callers must only read.
+YAML::Node load_shared_yaml_file(const std::string& path, const std::string& what);
+
 /// Throws InputError at the second occurrence of a key in a mapping (`where` prefixes the key).
 void reject_duplicate_keys(const YAML::Node& mapping, const std::string& file, const std::string& where);
 

@@ -22,6 +22,7 @@ ulimit -c 0  # the SIGSEGV of (1) leaves no core file
 sweep=$src/tests/batch/data/sweep_crash.yaml
 
 workers() { pgrep -P "$pid"; }  # the sweep's children: its workers
+pipes_of() { ls -l "/proc/$1/fd" 2>/dev/null | grep -o 'pipe:\[[0-9]*\]' | sort -u; }
 # Waits until run $2 of output folder $1 has started (its run directory exists).
 wait_run() {
   local i
@@ -83,6 +84,19 @@ for sig in INT TERM; do
   wait_run "$out" 5 || fail "$sig: run 5 never started"
   sleep 0.5
   seen=$(workers)
+  if [ "$sig" = INT ]; then
+    # The workers are forks of the sweep (not an exec of `signalsim worker`), and neither holds a
+    # pipe of the other's (a fork keeps every descriptor the batch has open; exec would close them).
+    set -- $seen
+    [ $# -eq 2 ] || fail "--jobs 2: workers '$seen', not two"
+    for w in "$@"; do
+      [ "$(tr '\0' ' ' < /proc/$w/cmdline)" = "$(tr '\0' ' ' < /proc/$pid/cmdline)" ] ||
+        fail "worker $w is not a fork of the sweep: $(tr '\0' ' ' < /proc/$w/cmdline)"
+    done
+    shared=$(comm -12 <(pipes_of "$1") <(pipes_of "$2"))
+    [ -z "$shared" ] || fail "workers $1 and $2 share pipes: $shared"
+    echo "ok   --jobs 2: two workers forked from the sweep, no pipe shared between them"
+  fi
   kill -$sig "$pid"
   wait "$pid"
   code=$?
