@@ -44,7 +44,6 @@ bool single_threaded() {
   std::exit(entry());  // the exit of `signalsim worker`'s main: its streams flushed, static objects ended
 }
 
-
 void close_fd(int& fd) {
   if (fd >= 0) close(fd);
   fd = -1;
