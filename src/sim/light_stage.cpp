@@ -1,5 +1,7 @@
 #include "sim/light_stage.hpp"
 
+#include <utility>
+
 namespace signalsim {
 namespace {
 
@@ -68,15 +70,18 @@ std::vector<LightStep> TrafficLightStage::step(double now, double s_front, doubl
                          : '?';
     // docs/behaviour.md §S3: an 'o'/'O' link is not regulating: no judge, SUMO's right of way applies.
     if (const auto truth = sumo::signal_elements(state, t.light)) {
-      const auto observation = t.perception.observe(*truth, front_to_line, now);
+      auto observation = t.perception.observe(*truth, front_to_line, now);
       if (observation) step.observed = sumo::describe_elements(observation->elements);
-      if (!t.judge) t.judge.emplace(judge_params_);
+      if (!t.judge) {
+        t.judge.emplace(judge_params_);
+        t.judge->set_explain(false);  // no output has the reason line
+      }
       TrafficLightJudgeInput in;
       in.now = now;
       in.distance_to_stop_point = distance_to_stop_point(front_to_line, judge_params_.stop_margin);
       in.velocity = speed;
       in.acceleration = accel;
-      in.observation = observation;
+      in.observation = std::move(observation);  // not used again
       in.is_vehicle_stopped = is_vehicle_stopped(speed);
       in.turn_direction = sumo::judge_turn_direction(t.light.direction);
       in.is_turn_lane = t.light.direction == TurnDirection::Left || t.light.direction == TurnDirection::Right;

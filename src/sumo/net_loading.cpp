@@ -4,8 +4,9 @@
 // Elements read (children of <net>): <edge> with its <lane>s, <param>s and <stopOffset>s; <junction>;
 // <connection>; <roundabout>; <tlLogic> with its <phase>s. Everything else (<location>, <type>,
 // <request>, <neigh>, ...) is skipped. <location> is irrelevant: signalsim works in net coordinates.
-// load parses the file, reads <net>, the light programs and roundabouts, and scans where the other
-// elements are (NetSource); those are read when a lookup needs them (net_on_demand.cpp).
+// load reads <net>, the light programs and roundabouts, and scans where the other elements are
+// (NetSource, without parsing the whole file); those are read when a lookup needs them
+// (net_on_demand.cpp). A whole reading parses the file and reads every element at once.
 //
 // The loading rule (net_index.hpp): a value signalsim reads that cannot be used as written is a
 // NetDefect against its element, never an exception; each element is read once, so loading stays
@@ -263,36 +264,41 @@ void NetLoader::tl_logic(pugi::xml_node node) {
   net_.tl_logics.push_back(std::move(logic));
 }
 
-NetIndex NetIndex::load(const std::string& path, NetReading reading) {
-  // For the defects' lines: a whole reading parses in place, which overwrites some characters (ends
-  // of names and values), so the newlines are found first; on demand the text stays as read.
-  std::string bytes = read_net_file(path);
-  std::vector<std::size_t> newlines;
-  if (reading == NetReading::Whole) newlines = newline_offsets(bytes);
-  auto source = std::make_unique<NetSource>(std::move(bytes), reading == NetReading::OnDemand);
-  if (const pugi::xml_parse_result parsed = source->parsed(); !parsed) {
-    throw NetError(path + ": not XML: " + parsed.description() + " at offset " + std::to_string(parsed.offset));
-  }
-  const pugi::xml_node root = source->root();
-  if (!is(root, "net")) {
-    throw NetError(path + ": no <net> root element (found <" + std::string(root.name()) + ">)");
-  }
+namespace {
 
-  NetIndex index;
-  NetData& net = *index.data_;
+void read_root(const std::string& path, std::string_view name, const std::optional<std::string>& lefthand,
+               NetData& net) {
+  if (name != "net") throw NetError(path + ": no <net> root element (found <" + std::string(name) + ">)");
   net.path = path;
   // The driving side changes every route: a value that is not a boolean is fatal (as in SUMO).
-  if (const pugi::xml_attribute lefthand = root.attribute("lefthand")) {
-    const auto value = parse_sumo_bool(lefthand.value());
-    if (!value) throw NetError(path + ": <net>: attribute 'lefthand' is not a boolean: '" + lefthand.value() + "'");
+  if (lefthand) {
+    const auto value = parse_sumo_bool(*lefthand);
+    if (!value) throw NetError(path + ": <net>: attribute 'lefthand' is not a boolean: '" + *lefthand + "'");
     net.lefthand = *value;
   }
+}
 
-  net.log = reading == NetReading::Whole ? DefectLog(std::move(newlines)) : DefectLog(&source->text());
-  const bool on_demand = reading == NetReading::OnDemand && source->scan();
-  net.source = std::move(source);
-  NetLoader loader(net);
-  if (!on_demand) {  // every element from the document, in file order
+}  // namespace
+
+NetIndex NetIndex::load(const std::string& path, NetReading reading) {
+  // Every element read at load from the document, in file order.
+  const auto load_whole = [&path](std::string text) {
+    // For the defects' lines: parsing in place overwrites some characters (ends of names and values),
+    // so the newlines are found first.
+    std::vector<std::size_t> newlines = newline_offsets(text);
+    auto source = std::make_unique<NetSource>(std::move(text));
+    if (const pugi::xml_parse_result parsed = source->parse_in_place(); !parsed) {
+      throw NetError(path + ": not XML: " + parsed.description() + " at offset " + std::to_string(parsed.offset));
+    }
+    const pugi::xml_node root = source->root();
+    std::optional<std::string> lefthand;
+    if (const pugi::xml_attribute a = root.attribute("lefthand")) lefthand = a.value();
+    NetIndex index;
+    NetData& net = *index.data_;
+    read_root(path, root.name(), lefthand, net);
+    net.log = DefectLog(std::move(newlines));
+    net.source = std::move(source);
+    NetLoader loader(net);
     for (pugi::xml_node node : root.children()) {
       if (node.type() != pugi::node_element) continue;
       if (is(node, "edge")) loader.edge(node);
@@ -304,13 +310,25 @@ NetIndex NetIndex::load(const std::string& path, NetReading reading) {
     net.edge_count = net.edge_by_id.size();
     net.finish_whole_net();
     return index;
-  }
-  // Few and read whole by their users (approach lights, generate): read now, from the document.
-  for (pugi::xml_node node : net.source->lights_and_roundabouts) {
+  };
+  std::string bytes = read_net_file(path);
+  if (reading == NetReading::Whole) return load_whole(std::move(bytes));
+  auto source = std::make_unique<NetSource>(std::move(bytes));
+  // A text the tag scan does not read exactly: pugixml's parse, and its description of an error.
+  if (!source->scan()) return load_whole(std::move(*source).take_text());
+  NetIndex index;
+  NetData& net = *index.data_;
+  read_root(path, source->root_name, source->root_lefthand, net);
+  net.log = DefectLog(&source->text());
+  net.source = std::move(source);
+  // Few and read whole by their users (approach lights, generate): read now.
+  NetLoader loader(net);
+  net.source->each_light_or_roundabout([&](pugi::xml_node node, std::ptrdiff_t base) {
+    net.log.set_fragment_base(base);
     if (is(node, "roundabout")) loader.roundabout(node);
     else loader.tl_logic(node);
-  }
-  net.source->drop_document();  // the rest is parsed again from the text when read
+  });
+  net.log.set_fragment_base(0);
   net.edge_count = net.source->edge_count;
   net.whole = false;
   return index;

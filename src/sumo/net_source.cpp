@@ -1,15 +1,16 @@
-// NetSource: the net's text, its parsed document until the scan is done, and where its elements
-// are (see the header).
+// NetSource: the net's text, its document for a whole reading, and where its elements are (see the
+// header).
 #include "sumo/net_source.hpp"
+
+#include "sumo/xml_tag_scan.hpp"
 
 #include <algorithm>
 #include <cstring>
+#include <functional>
 #include <utility>
 
 namespace signalsim::sumo {
 namespace {
-
-std::string_view id_of(pugi::xml_node node, const char* attribute) { return node.attribute(attribute).value(); }
 
 /// Whether `lane_id` is "<edge_id>_<suffix without '_'>".
 bool names_edge(std::string_view lane_id, std::string_view edge_id) {
@@ -24,7 +25,7 @@ std::ptrdiff_t FirstDefinitions::of(const std::string& kind, const std::string& 
   if (!built_) {
     if (source_.root_) {
       build(source_.root_);
-    } else {  // the document is freed: the text again, once
+    } else {  // read on demand: the text parsed, once
       pugi::xml_document doc;
       doc.load_buffer(source_.text_.data(), source_.text_.size());
       build(doc.document_element());
@@ -68,15 +69,15 @@ void ViaList::add(std::string_view lane, std::string_view from_edge) {
   if (last.lane != lane || last.from_edge != from_edge) more.push_back({lane, from_edge});
 }
 
-std::string_view IdStore::keep(const char* text) {
-  const std::size_t n = std::strlen(text);
+std::string_view IdStore::keep(std::string_view text) {
+  const std::size_t n = text.size();
   if (used_ + n > size_) {
     size_ = std::max<std::size_t>(n, 1u << 16);
     blocks_.push_back(std::make_unique<char[]>(size_));
     used_ = 0;
   }
   char* at = blocks_.back().get() + used_;
-  std::memcpy(at, text, n);
+  if (n != 0) std::memcpy(at, text.data(), n);
   used_ += n;
   return {at, n};
 }
@@ -89,15 +90,10 @@ ParsedElement::ParsedElement(const std::string& text, std::size_t begin, std::si
 
 // ---- NetSource -------------------------------------------------------------------------------------
 
-NetSource::NetSource(std::string bytes, bool on_demand) : text_(std::move(bytes)) {
-  parsed_ = on_demand ? doc_.load_buffer(text_.data(), text_.size()) : doc_.load_buffer_inplace(text_.data(), text_.size());
-  if (parsed_) root_ = doc_.document_element();
-}
-
-void NetSource::drop_document() {
-  lights_and_roundabouts.clear();
-  root_ = {};
-  doc_.reset();
+pugi::xml_parse_result NetSource::parse_in_place() {
+  const pugi::xml_parse_result parsed = doc_.load_buffer_inplace(text_.data(), text_.size());
+  if (parsed) root_ = doc_.document_element();
+  return parsed;
 }
 
 EdgeEntry* NetSource::edge_entry(std::string_view id) {
@@ -140,10 +136,10 @@ ViaList* NetSource::via_list(std::string_view lane_id, bool create) {
   return it == vias_elsewhere_.end() ? nullptr : &it->second;
 }
 
-void NetSource::add(Kind kind, ElementGroup& group, pugi::xml_node node) {
+void NetSource::add(Kind kind, ElementGroup& group, std::size_t begin) {
   const auto index = static_cast<std::uint32_t>(elements_.size());
   Element e;
-  e.begin = static_cast<std::size_t>(node.offset_debug() - 1);  // its '<'
+  e.begin = begin;  // its '<'
   e.end = text_.size();  // until the next element's start is known
   e.kind = kind;
   e.group = &group;
@@ -153,74 +149,110 @@ void NetSource::add(Kind kind, ElementGroup& group, pugi::xml_node node) {
   group.tail = index;
 }
 
-bool NetSource::scan() {
-  // Offsets are those of the text only for UTF-8 (pugixml converts other encodings first).
-  if (parsed_.encoding != pugi::encoding_utf8) return false;
-  // A net has an <edge> for about every 600 bytes (Bad Hersfeld 660, bologna 900): a first guess
-  // (a visit of every element costs as much as the hashing it saves).
-  edges.reserve(text_.size() / 600);
-  // netconvert writes an edge's connections one after another: the entry of the last from-edge is kept.
-  std::string_view last_from;
-  EdgeEntry* last_from_entry = nullptr;
-  bool previous_recorded = false;  // whether the previous child element is in elements_
-  for (pugi::xml_node node = root_.first_child(); node; node = node.next_sibling()) {
-    if (node.type() != pugi::node_element) continue;
-    const std::ptrdiff_t at = node.offset_debug() - 1;
-    if (at < 0 || text_[static_cast<std::size_t>(at)] != '<') return false;
-    if (previous_recorded) elements_.back().end = static_cast<std::size_t>(at);
-    const std::size_t recorded = elements_.size();
-    const char* name = node.name();
-    if (std::strcmp(name, "edge") == 0) {
-      const char* id = node.attribute("id").value();
-      if (*id == '\0') {
-        add(Kind::Edge, edges_without_id, node);
-      } else {
-        auto entry = edges.find(id);
-        if (entry == edges.end()) entry = edges.try_emplace(ids_.keep(id)).first;
-        ElementGroup& group = entry->second.edge;
-        const bool first = group.head == ElementGroup::kNone;
-        add(Kind::Edge, group, node);
-        if (first) {  // a repeated edge is ignored whole, its lanes too
-          ++edge_count;
-          for (pugi::xml_node lane : node.children("lane")) {
-            const std::string_view lane_id = id_of(lane, "id");
-            if (!lane_id.empty() && !names_edge(lane_id, entry->first))
-              lanes_elsewhere_[ids_.keep(lane_id.data())].add(entry->first);
-          }
-        }
-      }
-    } else if (std::strcmp(name, "connection") == 0) {
-      const char* from = node.attribute("from").value();
-      if (*from == '\0') {
-        add(Kind::Connection, connections_without_from, node);
-      } else {
-        if (last_from_entry == nullptr || last_from != from) {
-          auto entry = edges.find(from);
-          if (entry == edges.end()) entry = edges.try_emplace(ids_.keep(from)).first;
-          last_from = entry->first;
-          last_from_entry = &entry->second;
-        }
-        add(Kind::Connection, last_from_entry->connections, node);
-        if (const char* via = node.attribute("via").value(); *via != '\0') {
-          const std::string_view kept = ids_.keep(via);
-          via_list(kept, true)->add(kept, last_from);
-        }
-      }
-    } else if (std::strcmp(name, "junction") == 0) {
-      const char* id = node.attribute("id").value();
-      if (*id == '\0') {
-        add(Kind::Junction, junctions_without_id, node);
-      } else {
-        auto entry = junctions.find(id);
-        if (entry == junctions.end()) entry = junctions.try_emplace(ids_.keep(id)).first;
-        add(Kind::Junction, entry->second, node);
-      }
-    } else if (std::strcmp(name, "tlLogic") == 0 || std::strcmp(name, "roundabout") == 0) {
-      lights_and_roundabouts.push_back(node);
+/// What scan() keeps of each start tag: the root's, its children's, an edge's lanes.
+class NetSource::TagVisitor : public StartTagVisitor {
+ public:
+  explicit TagVisitor(NetSource& source) : s_(source) {}
+
+  void start(const StartTag& tag) override {
+    if (tag.depth == 0) return root(tag);
+    if (tag.depth == 2) {
+      if (lanes_of_ != nullptr && tag.name == "lane") lane(tag);
+      return;
     }
-    previous_recorded = elements_.size() > recorded;
+    // A child of the root: it ends the previous child's stretch.
+    if (previous_ != kNone) s_.elements_[previous_].end = tag.begin;
+    if (previous_light_) s_.lights_and_roundabouts_.back().second = tag.begin;
+    previous_ = kNone;
+    previous_light_ = false;
+    lanes_of_ = nullptr;
+    const std::size_t recorded = s_.elements_.size();
+    if (tag.name == "edge") edge(tag);
+    else if (tag.name == "connection") connection(tag);
+    else if (tag.name == "junction") junction(tag);
+    else if (tag.name == "tlLogic" || tag.name == "roundabout") {
+      s_.lights_and_roundabouts_.emplace_back(tag.begin, s_.text_.size());
+      previous_light_ = true;
+    }
+    if (s_.elements_.size() > recorded) previous_ = static_cast<std::uint32_t>(recorded);
   }
-  return true;
+
+ private:
+  static constexpr std::uint32_t kNone = ElementGroup::kNone;
+
+  std::string_view value(const StartTag& tag, std::string_view name) {
+    return attribute_value(tag, name, scratch_);
+  }
+
+  /// `id` where it lasts as long as the source: in the text when it was read as it is written
+  /// there (the text never changes on demand), else a copy in the id store.
+  std::string_view lasting(std::string_view id) {
+    const char* text = s_.text_.data();
+    const std::less<const char*> before;
+    return !before(id.data(), text) && before(id.data(), text + s_.text_.size()) ? id : s_.ids_.keep(id);
+  }
+
+  void root(const StartTag& tag) {
+    s_.root_name = std::string(tag.name);
+    if (raw_attribute(tag, "lefthand")) s_.root_lefthand = std::string(value(tag, "lefthand"));
+  }
+
+  void edge(const StartTag& tag) {
+    const std::string_view id = value(tag, "id");
+    if (id.empty()) return s_.add(Kind::Edge, s_.edges_without_id, tag.begin);
+    const auto entry = s_.edges.try_emplace(lasting(id)).first;
+    ElementGroup& group = entry->second.edge;
+    const bool first = group.head == ElementGroup::kNone;
+    s_.add(Kind::Edge, group, tag.begin);
+    if (!first) return;  // a repeated edge is ignored whole, its lanes too
+    ++s_.edge_count;
+    lanes_of_ = &entry->first;
+  }
+
+  void lane(const StartTag& tag) {
+    const std::string_view lane_id = value(tag, "id");
+    if (!lane_id.empty() && !names_edge(lane_id, *lanes_of_))
+      s_.lanes_elsewhere_[lasting(lane_id)].add(*lanes_of_);
+  }
+
+  void connection(const StartTag& tag) {
+    const std::string_view from = value(tag, "from");
+    if (from.empty()) return s_.add(Kind::Connection, s_.connections_without_from, tag.begin);
+    // netconvert writes an edge's connections one after another: the entry of the last from-edge is kept.
+    if (last_from_entry_ == nullptr || last_from_ != from) {
+      const auto entry = s_.edges.try_emplace(lasting(from)).first;
+      last_from_ = entry->first;
+      last_from_entry_ = &entry->second;
+    }
+    s_.add(Kind::Connection, last_from_entry_->connections, tag.begin);
+    if (const std::string_view via = value(tag, "via"); !via.empty()) {
+      const std::string_view kept = lasting(via);
+      s_.via_list(kept, true)->add(kept, last_from_);
+    }
+  }
+
+  void junction(const StartTag& tag) {
+    const std::string_view id = value(tag, "id");
+    if (id.empty()) return s_.add(Kind::Junction, s_.junctions_without_id, tag.begin);
+    const auto entry = s_.junctions.try_emplace(lasting(id)).first;
+    s_.add(Kind::Junction, entry->second, tag.begin);
+  }
+
+  NetSource& s_;
+  std::string scratch_;  // a decoded attribute value
+  std::uint32_t previous_ = kNone;  // the previous child of the root, when it is in elements_
+  bool previous_light_ = false;     // ... when it is a light or a roundabout
+  const std::string_view* lanes_of_ = nullptr;  // the edge whose lanes are being visited (its first <edge>)
+  std::string_view last_from_;
+  EdgeEntry* last_from_entry_ = nullptr;
+};
+
+bool NetSource::scan() {
+  // A net has an <edge> for about every 450 to 900 bytes (a netgenerate grid 456, Bad Hersfeld
+  // 660, bologna 900): a first guess (a visit of every element costs as much as the hashing it saves).
+  edges.reserve(text_.size() / 500);
+  TagVisitor visitor(*this);
+  return scan_start_tags(text_, visitor);
 }
 
 }  // namespace signalsim::sumo

@@ -2,12 +2,13 @@
 // reads an element's values only when a lookup first needs them (net_index.hpp: the run of a route
 // on a city net reads its few hundred elements, not the 200 000 of the file).
 //
-// At load the text is parsed whole (so a file that is not XML fails at once), and the scan visits
-// every child of <net> once, reading only ids (an element's `id`, a connection's `from` and `via`,
-// lane ids); then the document is freed (it is twice the size of the text) and an element is parsed
-// again from its stretch of the text when it is read. The groups the scan builds are what one
-// lookup must read for its answer to be the one a reading of the whole file gives (see
-// net_on_demand.cpp):
+// For a whole reading the text is parsed in place into a document. On demand no document is built
+// (it would be twice the size of the text): scan() reads the start tags (xml_tag_scan.hpp), which
+// checks the structure of the whole text, keeping only ids (an element's `id`, a connection's
+// `from` and `via`, lane ids) and where each element's stretch of the text is; an element is parsed
+// from its stretch when it is read. A text the tag scan declines is read whole. The groups the scan
+// builds are what one lookup must read for its answer to be the one a reading of the whole file
+// gives (see net_on_demand.cpp):
 //   - every <edge> with one id (a repeated id is a defect of the later ones),
 //   - every <junction> with one id,
 //   - every <connection> with one `from` (its defects go against its from-lane or from-edge),
@@ -24,9 +25,11 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace signalsim::sumo {
@@ -35,7 +38,7 @@ class NetSource;
 
 /// The offset of the first definition of a repeated id. Repeated ids are rare (SUMO refuses them),
 /// so the table of first definitions is built only at the first one: one pass over the document
-/// (parsed again when it was freed), and the load stays linear however many ids repeat.
+/// (parsed for it when there is none), and the load stays linear however many ids repeat.
 class FirstDefinitions {
  public:
   explicit FirstDefinitions(const NetSource& source) : source_(source) {}
@@ -92,10 +95,11 @@ struct EdgeEntry {
   ViaList vias;
 };
 
-/// Copies of the ids the scan keeps (decoded attribute values), in blocks that never move.
+/// Copies of the ids the scan keeps that are not in the text as written (decoded attribute values),
+/// in blocks that never move.
 class IdStore {
  public:
-  std::string_view keep(const char* text);
+  std::string_view keep(std::string_view text);
 
  private:
   std::vector<std::unique_ptr<char[]>> blocks_;
@@ -114,26 +118,28 @@ class ParsedElement {
 
 class NetSource {
  public:
-  /// Parses `bytes`: in place when `on_demand` is false (the elements are read from this document
-  /// at load), else a copy, the text kept to parse elements again. parsed() says whether it worked.
-  NetSource(std::string bytes, bool on_demand);
+  explicit NetSource(std::string bytes) : text_(std::move(bytes)) {}
   NetSource(const NetSource&) = delete;
   NetSource& operator=(const NetSource&) = delete;
 
-  pugi::xml_parse_result parsed() const { return parsed_; }
-  /// The document's root; null once the document is freed.
+  /// A whole reading: parses the text in place (so it changes) into a document.
+  pugi::xml_parse_result parse_in_place();
+  /// The document's root (after parse_in_place).
   pugi::xml_node root() const { return root_; }
   /// The file's text as read (on demand; parsed in place, and so changed, for a whole reading).
   const std::string& text() const { return text_; }
+  /// The text, taken out (a scan declined it: it is read whole).
+  std::string take_text() && { return std::move(text_); }
 
-  /// Records where every <edge>, <junction> and <connection> is (ids only, nothing else read).
-  /// False when the elements cannot be parsed again from the text (a file that is not UTF-8, whose
-  /// offsets are not those of the text): then the whole net must be read from the document.
+  /// On demand: records where every <edge>, <junction>, <connection>, <tlLogic> and <roundabout>
+  /// is (ids only, nothing else read), and the root's name and `lefthand`. False when the tag scan
+  /// declines the text: then it must be read whole.
   bool scan();
-  /// Frees the document (after scan and the reading at load).
-  void drop_document();
+  /// The root element's name and its `lefthand` attribute (nullopt: none), after scan.
+  std::string root_name;
+  std::optional<std::string> root_lefthand;
 
-  /// Keys are views into the IdStore. An entry may have no <edge> (connections from an edge the
+  /// Keys are views into the text or the IdStore. An entry may have no <edge> (connections from an edge the
   /// net lacks): see `edge_count`.
   std::unordered_map<std::string_view, EdgeEntry> edges;
   std::unordered_map<std::string_view, ElementGroup> junctions;
@@ -141,8 +147,15 @@ class NetSource {
   ElementGroup edges_without_id, junctions_without_id, connections_without_from;
   /// Edge ids with an <edge> element.
   std::size_t edge_count = 0;
-  /// The <tlLogic> and <roundabout> elements in file order (read at load, from the document).
-  std::vector<pugi::xml_node> lights_and_roundabouts;
+  /// Calls `f(node, base)` for the <tlLogic> and <roundabout> elements in file order (read at
+  /// load), each parsed from its stretch (`base` as for each_element).
+  template <typename F>
+  void each_light_or_roundabout(F&& f) const {
+    for (const auto& [begin, end] : lights_and_roundabouts_) {
+      const ParsedElement parsed(text_, begin, end);
+      f(parsed.node(), static_cast<std::ptrdiff_t>(begin));
+    }
+  }
 
   /// The entry of an edge with an <edge> element, or null.
   EdgeEntry* edge_entry(std::string_view id);
@@ -193,7 +206,8 @@ class NetSource {
     Kind kind = Kind::Edge;
     ElementGroup* group = nullptr;  // the maps' values do not move
   };
-  void add(Kind kind, ElementGroup& group, pugi::xml_node node);
+  class TagVisitor;
+  void add(Kind kind, ElementGroup& group, std::size_t begin);
   /// The edge a lane id names ("<edge>_<suffix without '_'>") when that edge has such a lane, or "".
   std::string_view edge_named_by(std::string_view lane_id);
   /// Where the connections through `lane_id` are listed: the entry of the edge it names, else a
@@ -201,9 +215,9 @@ class NetSource {
   ViaList* via_list(std::string_view lane_id, bool create);
 
   std::string text_;  // the file's text; parsed in place (whole reading) or kept as it is (on demand)
-  pugi::xml_document doc_;
-  pugi::xml_parse_result parsed_;
+  pugi::xml_document doc_;  // a whole reading's
   pugi::xml_node root_;
+  std::vector<std::pair<std::size_t, std::size_t>> lights_and_roundabouts_;  // their stretches
   IdStore ids_;
   std::vector<Element> elements_;
   /// Lane id -> the edges with a lane of that id that it does not name (a hand-written net's).

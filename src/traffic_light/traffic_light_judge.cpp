@@ -176,7 +176,7 @@ TrafficLightJudgeResult TrafficLightJudge::step(const TrafficLightJudgeInput& in
 
   // docs/behaviour.md §L1.2 STEP 1.
   if (!in.distance_to_stop_point) {
-    r.reason = "none: the path does not cross the stop line";
+    if (explain_) r.reason = "none: the path does not cross the stop line";
     return finish();
   }
 
@@ -192,8 +192,8 @@ TrafficLightJudgeResult TrafficLightJudge::step(const TrafficLightJudgeInput& in
     // docs/behaviour.md §L1.2 STEP 4: never a stop in GO_OUT.
     if (d > kRestartLength) {
       state_ = JudgeState::Approach;
-      r.reason = strf("none: GO_OUT -> APPROACH (re-armed, d = %.2f m > %.1f m)", d, kRestartLength);
-    } else {
+      if (explain_) r.reason = strf("none: GO_OUT -> APPROACH (re-armed, d = %.2f m > %.1f m)", d, kRestartLength);
+    } else if (explain_) {
       r.reason = strf("none: GO_OUT (re-arms when d > %.1f m)", kRestartLength);
     }
     stop_signal_start_ns_.reset();
@@ -206,7 +206,7 @@ TrafficLightJudgeResult TrafficLightJudge::step(const TrafficLightJudgeInput& in
     state_ = JudgeState::GoOut;
     stop_signal_start_ns_.reset();
     release_start_ns_.reset();
-    r.reason = strf("none: APPROACH -> GO_OUT (d = %.2f m < %.1f m)", d, kDeadLine);
+    if (explain_) r.reason = strf("none: APPROACH -> GO_OUT (d = %.2f m < %.1f m)", d, kDeadLine);
     return finish();
   }
 
@@ -236,7 +236,8 @@ TrafficLightJudgeResult TrafficLightJudge::step(const TrafficLightJudgeInput& in
     r.v2i_stop = v2i.turns_red;
     r.v2i_time_to_red = v2i.time_to_red;
     if (v2i.turns_red) {
-      v2i_text = strf("; V2I: red in %.2f s < horizon %.2f s (t_pass %.2f s + %.2f s)", *v2i.time_to_red, v2i.horizon,
+      if (explain_)
+        v2i_text = strf("; V2I: red in %.2f s < horizon %.2f s (t_pass %.2f s + %.2f s)", *v2i.time_to_red, v2i.horizon,
                       v2i.t_pass, params_.v2i.last_time_allowed_to_pass);
       to_be_stopped = true;
     }
@@ -257,7 +258,8 @@ TrafficLightJudgeResult TrafficLightJudge::step(const TrafficLightJudgeInput& in
     if (confirmed_ns < release_confirmation_ns_) {
       r.release_pending = true;
       to_be_stopped = true;
-      hold_text = strf("; release pending: no stop signal for %.3f s < stop_release_confirmation_time %.3f s",
+      if (explain_)
+        hold_text = strf("; release pending: no stop signal for %.3f s < stop_release_confirmation_time %.3f s",
                        r.release_elapsed, params_.stop_release_confirmation_time);
     } else {
       release_start_ns_.reset();
@@ -267,7 +269,7 @@ TrafficLightJudgeResult TrafficLightJudge::step(const TrafficLightJudgeInput& in
 
   // Why the signal says what it says, for the reason line.
   std::string signal_text;
-  switch (verdict) {
+  switch (explain_ ? verdict : SignalVerdict::NotEvaluated) {
     case SignalVerdict::NeverReceived:
       signal_text = params_.is_simulation ? "signal never received (is_simulation)"
                                           : "signal never received (real-vehicle rule)";
@@ -297,8 +299,10 @@ TrafficLightJudgeResult TrafficLightJudge::step(const TrafficLightJudgeInput& in
     r.decision = JudgeDecision::Stop;
     r.restart_suppressed = true;
     r.stop_point_distance = 0.0;
-    r.reason = strf("stop: restart suppressed (stopped at d = %.2f m within (%.2f, %.2f) m); ", d,
-                    rs.min_behind_distance_to_stop, rs.max_behind_distance_to_stop) + signal_text;
+    if (explain_) {
+      r.reason = strf("stop: restart suppressed (stopped at d = %.2f m within (%.2f, %.2f) m); ", d,
+                      rs.min_behind_distance_to_stop, rs.max_behind_distance_to_stop) + signal_text;
+    }
     return finish();
   }
 
@@ -306,10 +310,10 @@ TrafficLightJudgeResult TrafficLightJudge::step(const TrafficLightJudgeInput& in
   if (!to_be_stopped) {
     is_prev_state_stop_ = false;
     r.decision = JudgeDecision::Pass;
-    if (is_stop) {
+    if (explain_ && is_stop) {
       r.reason = strf("pass: stop signal held %.3f s, not > stop_time_hysteresis %.3f s; ", r.stop_signal_elapsed,
                       params_.stop_time_hysteresis) + signal_text;
-    } else {
+    } else if (explain_) {
       r.reason = "pass: " + signal_text;
     }
     return finish();
@@ -331,7 +335,7 @@ TrafficLightJudgeResult TrafficLightJudge::step(const TrafficLightJudgeInput& in
   }
 
   std::string zone_text;
-  switch (r.zone) {
+  switch (explain_ ? r.zone : JudgeZone::None) {
     case JudgeZone::Stoppable:
       zone_text = strf("stoppable (judge line %.2f m < d %.2f m)", r.judge_dist, d);
       break;
@@ -358,7 +362,7 @@ TrafficLightJudgeResult TrafficLightJudge::step(const TrafficLightJudgeInput& in
   if (params_.enable_pass_judge && !stoppable && !is_prev_state_stop_ && reachable) {
     // PASS: no stop inserted; the latch stays false.
     r.decision = JudgeDecision::Pass;
-    r.reason = "pass: " + zone_text + "; " + signal_text + v2i_text;
+    if (explain_) r.reason = "pass: " + zone_text + "; " + signal_text + v2i_text;
     return finish();
   }
 
@@ -367,14 +371,16 @@ TrafficLightJudgeResult TrafficLightJudge::step(const TrafficLightJudgeInput& in
     // A new stop is inserted: fix Stop vs EmergencyStop (Decisions: dilemma zone -> emergency).
     latched_decision_ = stoppable ? JudgeDecision::Stop : JudgeDecision::EmergencyStop;
     if (!params_.enable_pass_judge && !stoppable) latch_text = " (pass judge disabled)";
-  } else {
+  } else if (explain_) {
     latch_text = strf(" (latched %s since an earlier step)", std::string(to_string(latched_decision_)).c_str());
   }
   is_prev_state_stop_ = true;
   r.decision = latched_decision_;
   r.stop_point_distance = d;
-  r.reason = std::string(to_string(latched_decision_)) + latch_text + ": " + zone_text + "; " + signal_text + v2i_text +
-             hold_text;
+  if (explain_) {
+    r.reason = std::string(to_string(latched_decision_)) + latch_text + ": " + zone_text + "; " + signal_text +
+               v2i_text + hold_text;
+  }
   return finish();
 }
 

@@ -1,7 +1,7 @@
 #include "turn_signal/intersection_requests.hpp"
 
 #include <algorithm>
-#include <deque>
+#include <vector>
 #include <optional>
 #include <set>
 
@@ -110,7 +110,8 @@ TurnSignalInfo IntersectionRequests::update(const RouteMap& route, RouteMap::Win
   };
 
   // docs/behaviour.md §T4.2: group consecutive lanelets with the same direction.
-  std::vector<TurnLaneGroup> groups;
+  std::vector<TurnLaneGroup>& groups = groups_;
+  groups.clear();
   std::size_t next_unprocessed = window.first;
   for (std::size_t i = window.first; i < window.last; ++i) {
     if (i < next_unprocessed) continue;
@@ -122,7 +123,8 @@ TurnSignalInfo IntersectionRequests::update(const RouteMap& route, RouteMap::Win
   }
 
   // docs/behaviour.md §T4.3: groups -> queue of requests.
-  std::deque<TurnSignalInfo> queue;
+  std::vector<TurnSignalInfo>& queue = queue_;  // the reference's std::queue; in order, front first
+  queue.clear();
   for (const TurnLaneGroup& group : groups) {
     const Lanelet& front = route.at(group.front_index);
     const double s_lane_start = front.s_start;
@@ -150,7 +152,7 @@ TurnSignalInfo IntersectionRequests::update(const RouteMap& route, RouteMap::Win
     queue.push_back(info);
   }
 
-  return first_active(std::move(queue), ego);  // docs/behaviour.md §T4.3
+  return first_active(queue, ego);  // docs/behaviour.md §T4.3
 }
 
 }  // namespace signalsim

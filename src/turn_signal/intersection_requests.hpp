@@ -43,6 +43,9 @@ class IntersectionRequests {
  private:
   std::map<std::size_t, double> desired_starts_;    // group front index -> s_base when stored
   std::map<std::size_t, LaneSpanGeometry> geometry_cache_;  // group front index -> geometry
+  // Scratch of update(), kept so that a step allocates nothing once they have grown.
+  std::vector<TurnLaneGroup> groups_;
+  std::vector<TurnSignalInfo> queue_;
 };
 
 /// docs/behaviour.md §T4.2: the group starting at `index`, walking route successors with the same direction

@@ -1,9 +1,9 @@
+// The resolver of the three request slots and the overwrite rule (see the header).
 #include "turn_signal/resolver.hpp"
 
-#include <algorithm>
 #include <array>
 #include <cstddef>
-#include <vector>
+#include <utility>
 
 namespace signalsim {
 namespace {
@@ -60,21 +60,22 @@ ResolvedTurnSignal resolve_turn_signal(const EgoOnRoute& ego, const TurnSignalIn
   // Slot order is the tie rule (docs/behaviour.md §T6.1, §T12.1.9): intersection < roundabout < behaviour.
   const std::array<const TurnSignalInfo*, 3> slots{&intersection, &roundabout, &behavior};
 
-  std::vector<Candidate> valid;
-  valid.reserve(slots.size());
+  std::array<Candidate, 3> valid;  // no allocation: this runs every step
+  std::size_t count = 0;
   for (const TurnSignalInfo* info : slots) {
     const SectionDistances d = section_distances(*info, ego);
-    if (is_valid(*info, d)) valid.push_back({info, d});
+    if (is_valid(*info, d)) valid[count++] = {info, d};
   }
-  if (valid.empty()) return {};  // DISABLE, not NO_COMMAND (docs/behaviour.md §T12.1.2)
+  if (count == 0) return {};  // DISABLE, not NO_COMMAND (docs/behaviour.md §T12.1.2)
 
-  // Earliest passed desired start first; the stable sort keeps slot order on exactly equal ds.
-  std::stable_sort(valid.begin(), valid.end(), [](const Candidate& a, const Candidate& b) {
-    return a.distances.desired_start < b.distances.desired_start;
-  });
+  // Earliest passed desired start first; a stable sort (insertion, of at most three) keeps slot
+  // order on exactly equal ds.
+  for (std::size_t i = 1; i < count; ++i)
+    for (std::size_t j = i; j > 0 && valid[j].distances.desired_start < valid[j - 1].distances.desired_start; --j)
+      std::swap(valid[j], valid[j - 1]);
 
   Candidate winner = valid.front();
-  for (std::size_t k = 1; k < valid.size(); ++k) {
+  for (std::size_t k = 1; k < count; ++k) {
     const SectionDistances& p = winner.distances;
     const SectionDistances& s = valid[k].distances;
     if (!prior_wins(p.required_start, p.required_end, s.required_start, s.required_end)) winner = valid[k];

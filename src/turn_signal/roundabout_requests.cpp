@@ -3,7 +3,7 @@
 #include "turn_signal/first_active.hpp"
 
 #include <algorithm>
-#include <deque>
+#include <vector>
 
 #include "turn_signal/intersection_requests.hpp"
 #include "turn_signal/required_end.hpp"
@@ -140,7 +140,7 @@ TurnSignalInfo RoundaboutRequests::update(const RouteMap& route, RouteMap::Windo
   const TurnIndicator on_entry = roundabout_command(params.turn_signal_roundabout_on_entry);
   const TurnIndicator on_exit = roundabout_command(params.turn_signal_roundabout_on_exit);
   const double threshold = params.turn_signal_roundabout_angle_threshold_deg;
-  std::deque<TurnSignalInfo> queue;
+  std::vector<TurnSignalInfo> queue;  // the reference's std::queue; in order, front first
 
   // docs/behaviour.md §T5.2: entry requests, queued first.
   for (const RoundaboutConnection& entry : entries) {
@@ -206,7 +206,7 @@ TurnSignalInfo RoundaboutRequests::update(const RouteMap& route, RouteMap::Windo
   }
 
   // docs/behaviour.md §T12.1.7: the queue is "all entries, then all exits", not path order.
-  return first_active(std::move(queue), ego);
+  return first_active(queue, ego);
 }
 
 }  // namespace signalsim

@@ -163,7 +163,15 @@ TEST(Metrics, LightsStopLineStateAndRedLightViolation) {
                                                                                                        : JudgeZone::None;
     }
   }
-  stop.stops.push_back({"T", 19.8, 199.0, 197.0, -2.0, JudgeDecision::EmergencyStop, StopLevel::Emergency});
+  LightStop light_stop;
+  light_stop.tl_id = "T";
+  light_stop.time = 19.8;
+  light_stop.stop_s = 199.0;
+  light_stop.rest_s = 197.0;
+  light_stop.error = -2.0;
+  light_stop.decision = JudgeDecision::EmergencyStop;
+  light_stop.worst_level = StopLevel::Emergency;
+  stop.stops.push_back(light_stop);
   const RunMetrics s = compute_metrics(scenario, route(), stop);
   EXPECT_DOUBLE_EQ(*s.lights[0].stop_position_error, -2.0);
   EXPECT_EQ(s.lights[0].red_light_violation, false);

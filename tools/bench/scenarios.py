@@ -166,15 +166,17 @@ class BenchScenario:
         """The steps the in-process clocks leave out at the start (bench/step_clock.cpp says why)."""
         return max(1, min(CLOCK_FROM, self.sumo_steps("full") // 4))
 
-    def sumo_steps_argv(self, binary):
-        argv = self.sumo_argv("full", os.path.join(self.work, "sumo_steps.log"))
-        return [binary, str(self.clock_from()), "%r" % self.runs["full"]["end"]] + argv[1:]
+    def sumo_steps_argv(self, binary, variant="full"):
+        """The full run: its first clock_from() steps apart; the start-up: one step, then the rest."""
+        argv = self.sumo_argv(variant, os.path.join(self.work, "sumo_steps_%s.log" % variant))
+        first = str(self.clock_from()) if variant == "full" else "1"
+        return [binary, first, "%r" % self.runs[variant]["end"]] + argv[1:]
 
-    def check_sumo_steps(self, stdout):
+    def check_sumo_steps(self, stdout, variant="full"):
         result = json.loads(stdout)
-        if abs(result["end_time"] - self.runs["full"]["end"]) > 1e-6:
+        if abs(result["end_time"] - self.runs[variant]["end"]) > 1e-6:
             raise BenchError("SUMO in-process ended at t=%s, signalsim at t=%g" % (result["end_time"],
-                                                                                 self.runs["full"]["end"]))
+                                                                                 self.runs[variant]["end"]))
         return result
 
     # -- the Python TraCI controller ---------------------------------------------------------

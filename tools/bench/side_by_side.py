@@ -48,11 +48,11 @@ def _case(scenario, contestant, variant, binary, env, bench_dir):
             scenario.check_sumo(variant, log)
             return sample
     elif contestant == "libsumo":
-        argv = scenario.sumo_steps_argv(os.path.join(bench_dir, SUMO_STEPS))
+        argv = scenario.sumo_steps_argv(os.path.join(bench_dir, SUMO_STEPS), variant)
 
         def case():
             sample = run_child(argv, env=env, capture=True)
-            sample.result = scenario.check_sumo_steps(sample.stdout)
+            sample.result = scenario.check_sumo_steps(sample.stdout, variant)
             return sample
     else:
         argv = scenario.controller_argv(variant)
@@ -89,9 +89,12 @@ class Measured:
         if name == "signalsim" and full:
             self.step_cpu_in_process = _median_of(
                 full, lambda r: (r["close_cpu"] - r["from_cpu"]) / (r["step_calls"] - r["from"]))
-        elif name == "libsumo":
+        elif name == "libsumo" and full:
             self.step_cpu_in_process = _median_of(full, lambda r: r["step_cpu"] / r["steps"])
-            self.startup_cpu = _median_of(full, lambda r: r["load_cpu"])
+        if name == "libsumo":
+            # Its start-up: the whole process of a one-step run when measured (closing SUMO and
+            # exiting included, as for the others), else the CPU until SUMO had loaded.
+            self.startup_cpu = median_cpu(startup) if startup else _median_of(full, lambda r: r["load_cpu"])
         elif name == "python" and full:
             self.ego_steps = full[-1].result["ego_steps"]
         self.runs = len(full or startup)

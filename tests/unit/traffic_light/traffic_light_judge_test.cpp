@@ -4,7 +4,9 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <stdexcept>
+#include <vector>
 
 #include "traffic_light/judge_line.hpp"
 #include "traffic_light/traffic_light_judge.hpp"
@@ -63,6 +65,36 @@ TEST(TrafficLightJudge, DefaultsFollowTheDecisions) {
   EXPECT_EQ(p.max_accel, -2.8);
   EXPECT_EQ(p.max_jerk, -5.0);
   EXPECT_EQ(p.delay_response_time, 0.5);
+}
+
+TEST(TrafficLightJudge, NotExplainingChangesNothingButTheReason) {
+  // Green, then red while approaching (stop latched), rolling over the line (GO_OUT), re-armed on a
+  // new approach, a signal that times out, no stop point: each step judged twice.
+  std::vector<TrafficLightJudgeInput> steps = {green_at(0.0, 60.0, 10.0), red_at(0.1, 59.0, 10.0),
+                                               red_at(0.2, 58.0, 10.0),   red_at(0.3, 0.7, 0.0),
+                                               red_at(0.4, -2.5, 1.0),    red_at(0.5, 30.0, 8.0),
+                                               input(2.0, 29.0, 8.0, std::nullopt),
+                                               input(2.1, std::nullopt, 8.0, std::nullopt)};
+  steps[3].is_vehicle_stopped = true;  // restart suppression at d = 0.7 m
+  TrafficLightJudge explaining(no_hysteresis()), quiet(no_hysteresis());
+  quiet.set_explain(false);
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    SCOPED_TRACE(i);
+    const TrafficLightJudgeResult a = explaining.step(steps[i]);
+    const TrafficLightJudgeResult b = quiet.step(steps[i]);
+    EXPECT_FALSE(a.reason.empty());
+    EXPECT_EQ(b.reason, "");
+    EXPECT_EQ(b.decision, a.decision);
+    EXPECT_EQ(b.zone, a.zone);
+    EXPECT_EQ(b.state, a.state);
+    EXPECT_EQ(b.verdict, a.verdict);
+    EXPECT_EQ(b.to_be_stopped, a.to_be_stopped);
+    EXPECT_EQ(b.restart_suppressed, a.restart_suppressed);
+    EXPECT_EQ(b.is_prev_state_stop, a.is_prev_state_stop);
+    EXPECT_EQ(b.stop_point_distance, a.stop_point_distance);
+    EXPECT_EQ(b.judge_dist, a.judge_dist);
+  }
+  EXPECT_EQ(quiet.state(), explaining.state());
 }
 
 TEST(TrafficLightJudge, NoStopPointMeansNoDecisionAndNoStateChange) {
