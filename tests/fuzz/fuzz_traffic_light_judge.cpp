@@ -98,19 +98,23 @@ TrafficLightJudgeParameters parameters(FuzzedDataProvider& in) {
   return p;
 }
 
+/// Equal, NaN equal to NaN (a huge finite input can make a derived distance NaN in both).
+bool same(double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); }
+
 bool same_optional(const std::optional<double>& a, const std::optional<double>& b) {
-  return a.has_value() == b.has_value() && (!a || *a == *b);
+  return a.has_value() == b.has_value() && (!a || same(*a, *b));
 }
 
 bool same_but_reason(const TrafficLightJudgeResult& a, const TrafficLightJudgeResult& b) {
   return a.decision == b.decision && a.zone == b.zone && a.state == b.state && a.verdict == b.verdict &&
          a.is_stop_signal == b.is_stop_signal && a.to_be_stopped == b.to_be_stopped &&
-         a.stop_signal_elapsed == b.stop_signal_elapsed && a.restart_suppressed == b.restart_suppressed &&
+         same(a.stop_signal_elapsed, b.stop_signal_elapsed) && a.restart_suppressed == b.restart_suppressed &&
          a.is_prev_state_stop == b.is_prev_state_stop && a.yellow_state == b.yellow_state &&
-         a.distance == b.distance && a.judge_dist == b.judge_dist && a.yellow_lamp_line == b.yellow_lamp_line &&
+         same(a.distance, b.distance) && same(a.judge_dist, b.judge_dist) &&
+         same(a.yellow_lamp_line, b.yellow_lamp_line) &&
          same_optional(a.stop_point_distance, b.stop_point_distance) && a.v2i_stop == b.v2i_stop &&
          same_optional(a.v2i_time_to_red, b.v2i_time_to_red) && a.release_pending == b.release_pending &&
-         a.release_elapsed == b.release_elapsed;
+         same(a.release_elapsed, b.release_elapsed);
 }
 
 }  // namespace
