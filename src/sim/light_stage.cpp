@@ -36,8 +36,7 @@ TrafficLightStage::TrafficLightStage(std::vector<sumo::ApproachLight> lights, co
                                      const PerceptionModelParameters& perception, double horizon, V2iSource v2i)
     : judge_params_(judge), horizon_(horizon), v2i_(std::move(v2i)) {
   for (std::size_t i = 0; i < lights.size(); ++i) {
-    lights_.push_back({std::move(lights[i]), PerceptionModel(perception_for(perception, i)), std::nullopt, false,
-                       std::nullopt, std::nullopt});
+    lights_.emplace_back(std::move(lights[i]), PerceptionModel(perception_for(perception, i)));
     // The channel counts a message while the judge would count a camera result (tl_state_timeout).
     if (judge_params_.v2i.use_remaining_time) {
       V2iChannelParameters channel = channel_for(v2i_.channel, i);
@@ -53,9 +52,32 @@ const sumo::ApproachLight* TrafficLightStage::next_light() const {
   return nullptr;
 }
 
+// The signal elements a state shows the ego: worked out again only when the light's state changed.
+const std::optional<std::vector<SignalElement>>& TrafficLightStage::Tracked::truth_of(const std::string& state) {
+  if (!truth_known || state != truth_state) {
+    truth = sumo::signal_elements(state, light);
+    truth_state = state;
+    truth_known = true;
+  }
+  return truth;
+}
+
+const std::string& TrafficLightStage::Tracked::describe(const std::vector<SignalElement>& elements) {
+  if (!described || elements != described_elements) {
+    described_text = sumo::describe_elements(elements);
+    described_elements = elements;
+    described = true;
+  }
+  return described_text;
+}
+
 std::vector<LightStep> TrafficLightStage::step(double now, double s_front, double speed, double accel,
-                                               const std::function<std::string(const std::string&)>& state_of) {
+                                               const StateOf& state_of) {
   std::vector<LightStep> out;
+  std::size_t in_window = 0;  // an upper bound (dropped lights counted): one allocation a step
+  while (first_ + in_window < lights_.size() && lights_[first_ + in_window].light.s_stop_line - s_front <= horizon_)
+    ++in_window;
+  out.reserve(in_window);
   for (std::size_t i = first_; i < lights_.size(); ++i) {
     Tracked& t = lights_[i];
     if (t.dropped) continue;
@@ -64,14 +86,14 @@ std::vector<LightStep> TrafficLightStage::step(double now, double s_front, doubl
     LightStep step;
     step.light = &t.light;
     step.front_to_stop_line = front_to_line;
-    const std::string state = state_of(t.light.tls_id);
+    const std::string& state = state_of(t.light.tls_id);
     step.own_state = t.light.link_index >= 0 && static_cast<std::size_t>(t.light.link_index) < state.size()
                          ? state[static_cast<std::size_t>(t.light.link_index)]
                          : '?';
     // docs/behaviour.md §S3: an 'o'/'O' link is not regulating: no judge, SUMO's right of way applies.
-    if (const auto truth = sumo::signal_elements(state, t.light)) {
+    if (const auto& truth = t.truth_of(state)) {
       auto observation = t.perception.observe(*truth, front_to_line, now);
-      if (observation) step.observed = sumo::describe_elements(observation->elements);
+      if (observation) step.observed = t.describe(observation->elements);
       if (!t.judge) {
         t.judge.emplace(judge_params_);
         t.judge->set_explain(false);  // no output has the reason line

@@ -10,6 +10,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "sumo/approach_lights.hpp"
@@ -49,22 +50,36 @@ class TrafficLightStage {
   TrafficLightStage(std::vector<sumo::ApproachLight> lights, const TrafficLightJudgeParameters& judge,
                     const PerceptionModelParameters& perception, double horizon, V2iSource v2i = {});
 
-  /// One step for every light in the window, nearest first (empty when none). `state_of(tls)` returns
-  /// a light's live state string.
-  std::vector<LightStep> step(double now, double s_front, double speed, double accel,
-                              const std::function<std::string(const std::string&)>& state_of);
+  /// A light's live state string, by light id (kept by the caller at least until the next call).
+  using StateOf = std::function<const std::string&(const std::string&)>;
+
+  /// One step for every light in the window, nearest first (empty when none).
+  std::vector<LightStep> step(double now, double s_front, double speed, double accel, const StateOf& state_of);
 
   /// The next light ahead that is not yet dropped (for the timeline when none is in the window).
   const sumo::ApproachLight* next_light() const;
 
  private:
   struct Tracked {
+    Tracked(sumo::ApproachLight approach, PerceptionModel model)
+        : light(std::move(approach)), perception(std::move(model)) {}
     sumo::ApproachLight light;
     PerceptionModel perception;
     std::optional<TrafficLightJudge> judge;
     bool dropped = false;
     std::optional<V2iChannel> v2i;                ///< with V2I on
     std::optional<std::vector<sumo::LightProgram>> programs;  ///< read when first judged
+    // What the last state showed the ego, and the text of the last observation: a light's state
+    // changes a few times a cycle, so most steps reuse them.
+    bool truth_known = false;
+    std::string truth_state;
+    std::optional<std::vector<SignalElement>> truth;
+    bool described = false;
+    std::vector<SignalElement> described_elements;
+    std::string described_text;
+
+    const std::optional<std::vector<SignalElement>>& truth_of(const std::string& state);
+    const std::string& describe(const std::vector<SignalElement>& elements);
   };
   std::vector<Tracked> lights_;
   std::size_t first_ = 0;  // lights before this one are all dropped

@@ -60,7 +60,7 @@ class SessionImpl : public SumoSession {
   std::optional<Leader> ego_leader(double range) const override;
   std::vector<LaneVehicle> vehicles_on_lane(const std::string& lane_id) const override;
   double lateral_offset_from(const std::string& reference_lane_id) const override;
-  std::string light_state(const std::string& tls_id) const override;
+  const std::string& light_state(const std::string& tls_id) const override;
   std::vector<std::string> program_states(const std::string& tls_id) const override;
   std::vector<LightProgram> light_programs(const std::string& tls_id) const override;
   LightTiming light_timing(const std::string& tls_id) const override;

@@ -106,8 +106,10 @@ EgoState SessionImpl<Api>::read_ego_state() const {
     s.y = p.y;
     s.lateral_offset = subscription::subscribed_number(*v, libsumo::VAR_LANEPOSITION_LAT);
   } else {
-    s.edge = Api::Vehicle::getRoadID(ego_);
     s.lane = Api::Vehicle::getLaneID(ego_);
+    // On a lane the road is that lane's edge, as libsumo's getRoadID answers (kept per lane); off the
+    // lanes (parked, teleporting) SUMO is asked.
+    s.edge = s.lane.empty() ? Api::Vehicle::getRoadID(ego_) : lanes_.lane_edge(s.lane);
     s.lane_pos = Api::Vehicle::getLanePosition(ego_);
     s.speed = Api::Vehicle::getSpeed(ego_);
     s.accel = Api::Vehicle::getAcceleration(ego_);
@@ -181,10 +183,10 @@ double SessionImpl<Api>::lateral_offset_from(const std::string& reference_lane_i
 }
 
 template <class Api>
-std::string SessionImpl<Api>::light_state(const std::string& tls_id) const {
-  if (const std::string* known = StepAnswers::find(answers_.light_states, tls_id)) return *known;
+const std::string& SessionImpl<Api>::light_state(const std::string& tls_id) const {
+  if (const std::string* known = answers_.light_states.find(tls_id)) return *known;
   try {
-    return StepAnswers::keep(answers_.light_states, tls_id, Api::TrafficLight::getRedYellowGreenState(tls_id));
+    return answers_.light_states.keep(tls_id, Api::TrafficLight::getRedYellowGreenState(tls_id));
   } catch (const std::exception& e) {
     throw SumoError("SUMO cannot report traffic light '" + tls_id + "': " + failure_reason(e));
   }
@@ -219,9 +221,9 @@ std::vector<LightProgram> SessionImpl<Api>::light_programs(const std::string& tl
 
 template <class Api>
 LightTiming SessionImpl<Api>::light_timing(const std::string& tls_id) const {
-  if (const LightTiming* known = StepAnswers::find(answers_.light_timings, tls_id)) return *known;
+  if (const LightTiming* known = answers_.light_timings.find(tls_id)) return *known;
   try {
-    return StepAnswers::keep(answers_.light_timings, tls_id,
+    return answers_.light_timings.keep(tls_id,
                              LightTiming{Api::TrafficLight::getProgram(tls_id), Api::TrafficLight::getPhase(tls_id),
                                          Api::TrafficLight::getNextSwitch(tls_id)});
   } catch (const std::exception& e) {

@@ -2,12 +2,15 @@
 // at most once a step (SessionImpl, session_impl.hpp): the time, the ego's state, signals and lane
 // index, and the state and timing of each light asked for; over TraCI also the subscribed answers
 // they are read from. Nothing in it outlives the step: step() forgets it all, moving the ego
-// (move_back) forgets the ego's part, shifting a light's program the lights'. Other TraCI clients
+// (move_back) forgets the ego's part, shifting a light's program the lights'. A light's kept
+// answer stays at one address for the whole run (the next step's answer overwrites it in place), so
+// a reference to it never dangles and a same-sized state string needs no new allocation. Other TraCI clients
 // (--connect) change nothing in between: SUMO runs all commands of one client before the next
 // client's, until it asks for the step (TraCI protocol, "Basic Flow"). Include it after
 // <libsumo/libsumo.h> or <libsumo/libtraci.h>, through session_impl.hpp.
 #pragma once
 
+#include <deque>
 #include <optional>
 #include <string>
 #include <utility>
@@ -17,6 +20,40 @@
 #include "sumo/sumo_session.hpp"
 
 namespace signalsim::sumo {
+
+/// Per-light answers by light id, kept at stable addresses (a route has a few lights: a linear
+/// search). forget() marks them stale; keep() overwrites a stale entry of the same light in place.
+template <class Value>
+class KeptAnswers {
+ public:
+  /// The answer kept for `id` this step, or nullptr.
+  const Value* find(const std::string& id) const {
+    for (const Entry& e : entries_)
+      if (e.fresh && e.id == id) return &e.value;
+    return nullptr;
+  }
+  const Value& keep(const std::string& id, Value value) {
+    for (Entry& e : entries_)
+      if (e.id == id) {
+        e.value = std::move(value);
+        e.fresh = true;
+        return e.value;
+      }
+    entries_.push_back({id, std::move(value), true});  // a deque: earlier entries do not move
+    return entries_.back().value;
+  }
+  void forget() {
+    for (Entry& e : entries_) e.fresh = false;
+  }
+
+ private:
+  struct Entry {
+    std::string id;
+    Value value;
+    bool fresh = false;
+  };
+  std::deque<Entry> entries_;
+};
 
 struct StepAnswers {
   // Over TraCI: the subscribed variables, as the step's answer brought them.
@@ -29,8 +66,8 @@ struct StepAnswers {
   std::optional<EgoState> ego;
   std::optional<int> ego_signals;
   std::optional<int> ego_lane_index;
-  std::vector<std::pair<std::string, std::string>> light_states;  ///< light id, state string
-  std::vector<std::pair<std::string, LightTiming>> light_timings;
+  KeptAnswers<std::string> light_states;  ///< by light id: the state string
+  KeptAnswers<LightTiming> light_timings;
 
   void forget() {
     simulation_variables.reset();
@@ -46,21 +83,8 @@ struct StepAnswers {
     ego_lane_index.reset();
   }
   void forget_lights() {
-    light_states.clear();
-    light_timings.clear();
-  }
-
-  /// The answer kept for `id`, or nullptr (a route has a few lights: a linear search).
-  template <class Value>
-  static const Value* find(const std::vector<std::pair<std::string, Value>>& kept, const std::string& id) {
-    for (const auto& [key, value] : kept)
-      if (key == id) return &value;
-    return nullptr;
-  }
-  template <class Value>
-  static const Value& keep(std::vector<std::pair<std::string, Value>>& kept, const std::string& id, Value value) {
-    kept.emplace_back(id, std::move(value));
-    return kept.back().second;
+    light_states.forget();
+    light_timings.forget();
   }
 };
 

@@ -204,8 +204,9 @@ class SumoSession {
   /// SUMO's order). Throws SumoError for an unknown lane.
   virtual std::vector<LaneVehicle> vehicles_on_lane(const std::string& lane_id) const = 0;
 
-  /// Live state of a light: one character per link index (docs/behaviour.md §S2).
-  virtual std::string light_state(const std::string& tls_id) const = 0;
+  /// Live state of a light: one character per link index (docs/behaviour.md §S2). The reference
+  /// stays valid for the session's life; its text is this step's until the next step.
+  virtual const std::string& light_state(const std::string& tls_id) const = 0;
 
   /// The phase states of every program SUMO loaded for a light (net and additional files).
   virtual std::vector<std::string> program_states(const std::string& tls_id) const = 0;

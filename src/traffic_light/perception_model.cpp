@@ -73,8 +73,9 @@ std::optional<SignalObservation> PerceptionModel::observe(const std::vector<Sign
   }
   last_now_ns_ = now_ns;
 
-  // Capture.
-  const double u_drop = uniform01(dropout_rng_);
+  // Capture. Each stream feeds one fault only, so a fault that is off draws nothing from its stream:
+  // the draws it would make could not change any outcome (u < 0 never holds; zero noise adds none).
+  const double u_drop = params_.dropout_probability > 0.0 ? uniform01(dropout_rng_) : 1.0;
   const bool blacked_out = std::any_of(params_.blackouts.begin(), params_.blackouts.end(), [&](const auto& b) {
     return to_ns(b.start) <= now_ns && now_ns <= to_ns(b.end);
   });
@@ -87,16 +88,20 @@ std::optional<SignalObservation> PerceptionModel::observe(const std::vector<Sign
     for (int k = 0; k < params_.detections_per_light; ++k) {
       for (const SignalElement& e : truth) {
         SignalElement det = e;
-        const double u_mis = uniform01(misclassification_rng_);
-        const double u_which = uniform01(misclassification_rng_);
-        if (u_mis < params_.misclassification_probability) det.color = other_color(e.color, u_which);
-        const double u_conf = uniform01(confidence_rng_);
+        if (params_.misclassification_probability > 0.0) {
+          const double u_mis = uniform01(misclassification_rng_);
+          const double u_which = uniform01(misclassification_rng_);
+          if (u_mis < params_.misclassification_probability) det.color = other_color(e.color, u_which);
+        }
         if (params_.confidence_noise > 0.0) {
+          const double u_conf = uniform01(confidence_rng_);
           det.confidence = std::clamp(e.confidence + params_.confidence_noise * (2.0 * u_conf - 1.0), 0.0, 1.0);
         }
         obs.elements.push_back(det);
       }
     }
+    // Without latency a capture is due at once and nothing waits (every earlier one was delivered).
+    if (latency_ns_ == 0 && queue_.empty()) return obs;
     queue_.push_back({now_ns + latency_ns_, std::move(obs)});
   }
 

@@ -94,6 +94,12 @@ bool preferred(const SignalElement& a, const SignalElement& b) {
 
 std::vector<SignalElement> highest_confidence_per_shape(const std::vector<SignalElement>& detections) {
   std::vector<SignalElement> best;
+  highest_confidence_per_shape(detections, best);
+  return best;
+}
+
+void highest_confidence_per_shape(const std::vector<SignalElement>& detections, std::vector<SignalElement>& best) {
+  best.clear();
   for (const SignalElement& e : detections) {
     auto it = std::find_if(best.begin(), best.end(), [&](const SignalElement& b) { return b.shape == e.shape; });
     if (it == best.end()) {
@@ -105,7 +111,6 @@ std::vector<SignalElement> highest_confidence_per_shape(const std::vector<Signal
   std::sort(best.begin(), best.end(), [](const SignalElement& a, const SignalElement& b) {
     return static_cast<int>(a.shape) < static_cast<int>(b.shape);
   });
-  return best;
 }
 
 std::optional<SignalShape> matching_arrow_shape(LaneTurnDirection turn_direction) {

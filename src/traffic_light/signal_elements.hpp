@@ -82,6 +82,8 @@ LaneTurnDirection lane_turn_direction_from_string(std::string_view text);
 ///   3. the smaller status value.
 /// The result holds one element per shape, sorted by ascending shape value. Never throws.
 std::vector<SignalElement> highest_confidence_per_shape(const std::vector<SignalElement>& detections);
+/// The same into `best` (cleared first; its storage is reused: the judge calls it every step).
+void highest_confidence_per_shape(const std::vector<SignalElement>& detections, std::vector<SignalElement>& best);
 
 /// The arrow shape that lets a lane of this turn direction go (docs/behaviour.md §L1.4 steps 3-5):
 /// Left -> LeftArrow, Right -> RightArrow, Straight -> UpArrow; none for Else.

@@ -116,11 +116,14 @@ void TrafficLightJudge::reset() {
 // docs/behaviour.md §L1.3 decision table, with the arrow-aware override of §L1.8 as row 3.
 bool TrafficLightJudge::is_stop_signal(const TrafficLightJudgeInput& in, std::int64_t now_ns,
                                        SignalVerdict& verdict) {
-  const std::vector<SignalElement> previous = looking_;
+  // What was looked at last step becomes `previous`; looking_ is refilled in the other buffer (two
+  // buffers swapped each step: no allocation once they have grown).
+  std::swap(previous_looking_, looking_);
+  const std::vector<SignalElement>& previous = previous_looking_;
   // updateTrafficSignal: the module looks up the node's latest observation (docs/behaviour.md §L1.3).
   if (received_) {
     stamp_ns_ = to_ns(received_->stamp);
-    looking_ = highest_confidence_per_shape(received_->elements);  // Decision: highest reliability
+    highest_confidence_per_shape(received_->elements, looking_);  // Decision: highest reliability
   } else {
     looking_.clear();
   }

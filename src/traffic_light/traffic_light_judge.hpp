@@ -278,6 +278,7 @@ class TrafficLightJudge {
   std::optional<SignalObservation> received_;   ///< last delivered observation (node-level map)
   std::optional<std::int64_t> stamp_ns_;        ///< stamp of the observation last looked at
   std::vector<SignalElement> looking_;          ///< reduced elements last looked at
+  std::vector<SignalElement> previous_looking_;  ///< those of the step before (is_stop_signal's buffer)
   YellowState yellow_state_ = YellowState::NotYellow;
   bool explain_ = true;
 };

@@ -52,6 +52,25 @@ TEST(SessionAnswers, AShiftedLightShowsItsNewPhaseInTheSameStep) {
   EXPECT_EQ(session->light_timing("C").phase, 1);
 }
 
+// A light's state is kept in one place for the run (the step stages hold a reference to it while they
+// judge): the next steps answer into the same string, with the state SUMO shows then.
+TEST(SessionAnswers, ALightsStateIsKeptAtOnePlaceAndAnsweredAfreshEachStep) {
+  const auto session = sumo::open_session(config(0.0, 0.0));
+  const std::string& first = session->light_state("C");
+  EXPECT_EQ(first, "GGGgrrrrGGGgrrrr");
+  const std::string* kept_at = &first;
+  bool saw_yellow = false;
+  for (int k = 0; k < 320 && !saw_yellow; ++k) {  // yellow from 30 s on: shown after the step to 30.1 s
+    session->command(0, 0.0);
+    ASSERT_TRUE(session->step());
+    const std::string& now = session->light_state("C");
+    EXPECT_EQ(&now, kept_at);
+    EXPECT_EQ(now, session->time() < 30.05 ? "GGGgrrrrGGGgrrrr" : "yyyyrrrryyyyrrrr") << session->time();
+    saw_yellow = now == "yyyyrrrryyyyrrrr";
+  }
+  EXPECT_TRUE(saw_yellow);
+}
+
 TEST(SessionAnswers, EachStepIsAnsweredAfresh) {
   const auto session = sumo::open_session(config(0.0, 10.0));
   session->command(0, 10.0);

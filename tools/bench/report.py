@@ -45,6 +45,11 @@ def side_by_side_table(title, scenario, measured):
         print("   signalsim's step ÷ SUMO's: %s (in-process), %s (whole runs)" % (
             fmt_ratio(ratio(s.step(), sumo_step.step())),
             fmt_ratio(ratio(s.step_cpu, measured["sumo"].step_cpu)) if "sumo" in measured else "-"))
+    if s and s.sumo_part() is not None and sumo_step:
+        print("   inside signalsim's step: SUMO's step %s (%s× SUMO's alone), the rest %s: signalsim's calls to "
+              "libsumo and its own work (split runs: SUMO %.0f %% of the step)" % (
+                  fmt_us(s.sumo_part()), fmt_ratio(ratio(s.sumo_part(), sumo_step.step())),
+                  fmt_us(s.step() - s.sumo_part()), 100 * s.sumo_share))
     if "python" in measured and s:
         p = measured["python"]
         print("   Python ÷ signalsim: whole run %s, per step %s (its step from whole runs ÷ signalsim's in-process; "
@@ -116,6 +121,9 @@ def targets(results, quick):
     add("ego only: signalsim's step ÷ SUMO's step (in-process)",
         ratio(ego["signalsim"].step(), (ego.get("libsumo") or ego["sumo"]).step()) if ego else None, "≤ 1.5",
         lambda v: v <= 1.5)
+    add("  SUMO's step inside signalsim's run ÷ SUMO's alone (the floor)",
+        ratio(ego["signalsim"].sumo_part(), (ego.get("libsumo") or ego["sumo"]).step()) if ego else None,
+        "(for reference)", None)
     add("ego only: Python TraCI step ÷ signalsim's step",
         ratio(ego["python"].step_cpu, ego["signalsim"].step()) if ego else None, "≥ 50", lambda v: v >= 50)
     add("--jobs 2 ÷ --jobs 1 runs/s" + (" (load %.1f at the start)" % batch["load_before"][0] if batch else ""),

@@ -9,6 +9,10 @@ Two per-step costs:
   in-process   signalsim under the step clock (bench/step_clock.cpp, LD_PRELOAD): its CPU time from
                the end of step 100 (scenarios.CLOCK_FROM) to SUMO's close, over those steps (the
                outputs are written after close); bench/sumo_steps: the CPU time of the same steps
+  SUMO's share signalsim's full run again with the step clock's split (SIGNALSIM_STEP_CLOCK_SPLIT=1):
+               the wall time inside Simulation::step over the wall time of those steps, the share of
+               signalsim's step that is SUMO's own step (as signalsim drives the ego); the split's clock
+               reads are left out of signalsim's step, which comes from the runs without it
 Every run is checked to end at the SUMO time signalsim's run ends at (scenarios.py).
 """
 import os
@@ -22,6 +26,8 @@ CONTESTANTS = {"sumo": "sumo binary alone", "signalsim": "signalsim run", "pytho
 STEP_CLOCK, SUMO_STEPS = "libsignalsim_step_clock.so", "sumo_steps"  # in bench/ of the build
 SIDE_BY_SIDE = {"sumo": ("full", "startup"), "signalsim": ("full", "startup"), "python": ("full", "startup"),
                 "libsumo": ("full",)}
+# Ego only, where SUMO's step is a small part: also the split runs.
+EGO_SIDE_BY_SIDE = dict(SIDE_BY_SIDE, signalsim=("full", "startup", "split"))
 
 
 def _case(scenario, contestant, variant, binary, env, bench_dir):
@@ -29,8 +35,10 @@ def _case(scenario, contestant, variant, binary, env, bench_dir):
     if contestant == "signalsim":
         step_clock = os.path.join(bench_dir, STEP_CLOCK) if bench_dir else None
         clock = os.path.join(work, "step_clock_%s.json" % variant) if step_clock else None
+        run_variant = "startup" if variant == "startup" else "full"  # the split is a full run
         run_env = dict(env, LD_PRELOAD=step_clock, SIGNALSIM_STEP_CLOCK=clock,
-                       SIGNALSIM_STEP_CLOCK_FROM=str(scenario.clock_from() if variant == "full" else 1)) \
+                       SIGNALSIM_STEP_CLOCK_FROM=str(scenario.clock_from() if run_variant == "full" else 1),
+                       SIGNALSIM_STEP_CLOCK_SPLIT="1" if variant == "split" else "0") \
             if step_clock else env
 
         def case():
@@ -38,8 +46,8 @@ def _case(scenario, contestant, variant, binary, env, bench_dir):
             shutil.rmtree(out, ignore_errors=True)
             if clock and os.path.exists(clock):
                 os.remove(clock)
-            sample = run_child(scenario.signalsim_argv(binary, variant, out), env=run_env, ok_codes=(0, 1))
-            sample.result = scenario.check_signalsim(variant, out, clock)
+            sample = run_child(scenario.signalsim_argv(binary, run_variant, out), env=run_env, ok_codes=(0, 1))
+            sample.result = scenario.check_signalsim(run_variant, out, clock)
             return sample
     elif contestant == "sumo":
         def case():
@@ -86,9 +94,13 @@ class Measured:
             self.step_cpu = (self.run_cpu - self.startup_cpu) / (steps_full - scenario.sumo_steps("startup"))
         self.step_cpu_in_process = None
         self.ego_steps = None
+        self.sumo_share = None  # of signalsim's step, SUMO's own step (the split runs)
         if name == "signalsim" and full:
             self.step_cpu_in_process = _median_of(
                 full, lambda r: (r["close_cpu"] - r["from_cpu"]) / (r["step_calls"] - r["from"]))
+        if name == "signalsim" and samples.get("split"):
+            self.sumo_share = _median_of(
+                samples["split"], lambda r: r["in_step_wall"] / (r["close_wall"] - r["from_wall"]))
         elif name == "libsumo" and full:
             self.step_cpu_in_process = _median_of(full, lambda r: r["step_cpu"] / r["steps"])
         if name == "libsumo":
@@ -103,13 +115,19 @@ class Measured:
         """The per-step cost: in-process when measured, else from whole runs."""
         return self.step_cpu_in_process if self.step_cpu_in_process is not None else self.step_cpu
 
+    def sumo_part(self):
+        """Of signalsim's in-process step, SUMO's own step (None unless split runs measured it)."""
+        if self.sumo_share is None or self.step_cpu_in_process is None:
+            return None
+        return self.sumo_share * self.step_cpu_in_process
+
 
 def compare(scenario, plan, binary, env, runs, warm_up, bench_dir=None):
     """Calibrates the scenario on signalsim (unless done), then runs every (contestant, variant) of
     `plan` interleaved (without bench_dir, the build's bench/ folder, no in-process figures and no
     SUMO in-process); returns {contestant: Measured}."""
     if not bench_dir:
-        plan = {c: v for c, v in plan.items() if c != "libsumo"}
+        plan = {c: tuple(v for v in variants if v != "split") for c, variants in plan.items() if c != "libsumo"}
     if not scenario.runs:
         scenario.calibrate(binary, env)
     cases = {}

@@ -93,6 +93,30 @@ TEST(FixedText, ValuesOnAndNextToMillimetreTies) {
   }
 }
 
+// Most numbers take the quick path (integer rounding of |v| * 10^decimals, below 1e9 and 2^40 scaled);
+// those within 1e-3 of a half in the last decimal go to std::to_chars. Both sides of that margin,
+// at magnitudes up to the path's limits and every decimal count it takes, must read like printf.
+TEST(FixedText, TheQuickPathAtItsMarginsAndLimits) {
+  std::mt19937_64 random(20261202);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int decimals = 0; decimals <= 9; ++decimals) {
+    const double scale = std::pow(10.0, decimals);
+    for (double magnitude : {1.0, 1e3, 1e6, 1e8, 9.99e8, 1099511627776.0 / scale}) {
+      for (int i = 0; i < 400; ++i) {
+        const double k = std::floor(unit(random) * magnitude * scale);
+        for (double offset : {0.5, 0.5 - 1.2e-3, 0.5 + 1.2e-3, 0.5 - 0.9e-3, 0.5 + 0.9e-3, 0.0, 0.999999, 0.25}) {
+          const double v = (k + offset) / scale;
+          expect_like_printf(v, decimals);
+          expect_like_printf(-v, decimals);
+          expect_like_printf(std::nextafter(v, 0.0), decimals);
+        }
+      }
+    }
+  }
+  for (double v : {999999999.99949992, 999999999.9995, 1e9, -1e9, 1e9 - 1e-6, 1099.511627776, 1099.5116277759999})
+    for (int decimals = 0; decimals <= 9; ++decimals) expect_like_printf(v, decimals);
+}
+
 TEST(FixedText, Integers) {
   for (long long v : {0LL, 1LL, -1LL, 7LL, 255LL, -4096LL, std::numeric_limits<long long>::max(),
                       std::numeric_limits<long long>::min()}) {

@@ -249,6 +249,32 @@ TEST(PerceptionModel, FaultStreamsAreIndependent) {
   for (std::size_t k = 0; k < sa.size(); ++k) EXPECT_EQ(sa[k].has_value(), sb[k].has_value()) << k;
 }
 
+// A fault that is off draws nothing from its stream (perception_model.cpp). Against the same fault at
+// the smallest positive setting (it draws, and never fires), every other fault's outcome is the same
+// step for step: skipping the draws changes nothing.
+TEST(PerceptionModel, AFaultThatIsOffDrawsNothingAndChangesNothingElse) {
+  const double tiny = std::numeric_limits<double>::denorm_min();
+  for (int fault = 0; fault < 3; ++fault) {
+    PerceptionModelParameters off = all_faults(11);
+    if (fault == 0) off.dropout_probability = 0.0;
+    if (fault == 1) off.misclassification_probability = 0.0;
+    if (fault == 2) off.confidence_noise = 0.0;
+    PerceptionModelParameters drawing = off;
+    if (fault == 0) drawing.dropout_probability = tiny;
+    if (fault == 1) drawing.misclassification_probability = tiny;
+    if (fault == 2) drawing.confidence_noise = tiny;  // 1.0 +- tiny rounds to 1.0
+    PerceptionModel a(off);
+    PerceptionModel b(drawing);
+    const auto sa = run(a, 400);
+    EXPECT_EQ(sa, run(b, 400)) << "fault " << fault;
+    // And the other faults did act in these runs.
+    int delivered = 0;
+    for (const auto& o : sa) delivered += o.has_value();
+    EXPECT_GT(delivered, 0);
+    EXPECT_LT(delivered, 400);
+  }
+}
+
 TEST(PerceptionModel, InvalidParametersAndInputsThrow) {
   const auto bad = [](auto mutate) {
     PerceptionModelParameters p;
