@@ -29,8 +29,32 @@ wait_run() {
   for i in $(seq 1 600); do compgen -G "$1/runs/000$2-*" > /dev/null && return 0; sleep 0.05; done
   return 1
 }
-# Records every worker process id of the sweep into $1 until the sweep ends.
-watch_workers() { while kill -0 "$pid" 2>/dev/null; do workers >> "$1"; sleep 0.02; done; }
+# Records every worker process id of the sweep into $1 until the sweep ends. One process that scans
+# /proc every millisecond (pgrep and sleep, a fork each, missed a new worker that finished its four
+# short runs within 0.15 s on a loaded CI machine). seen_by_watcher waits until it has seen worker $2.
+watch_workers() {
+  python3 - "$pid" "$1" <<'PY'
+import os, sys, time
+sweep, seen = sys.argv[1], set()
+def parent_of(entry):
+    try:
+        with open(f"/proc/{entry}/stat") as f:
+            return f.read().rsplit(")", 1)[1].split()[1]
+    except (OSError, IndexError):
+        return None
+with open(sys.argv[2], "w") as out:
+    while os.path.exists(f"/proc/{sweep}"):
+        for child in {e for e in os.listdir("/proc") if e.isdigit() and parent_of(e) == sweep} - seen:
+            seen.add(child)
+            print(child, file=out, flush=True)
+        time.sleep(0.001)
+PY
+}
+seen_by_watcher() {
+  local i
+  for i in $(seq 1 600); do grep -qx "$2" "$1" 2>/dev/null && return 0; sleep 0.05; done
+  return 1
+}
 
 # The rows as "run status error" lines.
 rows() {
@@ -45,9 +69,11 @@ PY
 "$bin" sweep "$sweep" --out "$work/crash" --jobs 1 > "$work/crash.log" 2>&1 &
 pid=$!
 watch_workers "$work/crash.pids" &
+watcher=$!
 wait_run "$work/crash" 1 || fail "run 1 never started"
 w=$(workers)
 [ "$(echo "$w" | wc -w)" -eq 1 ] || fail "--jobs 1: workers '$w', not one"
+seen_by_watcher "$work/crash.pids" "$w" || fail "the watcher never saw worker $w"
 kill -SEGV "$w"
 wait "$pid"
 code=$?
@@ -55,6 +81,7 @@ code=$?
 rows "$work/crash/results.csv" > "$work/crash.rows"
 grep -q "^1 error worker killed by SIGSEGV" "$work/crash.rows" || fail "run 1: $(sed -n 2p "$work/crash.rows")"
 [ "$(grep -c " passed $" "$work/crash.rows")" -eq 5 ] || fail "the other runs: $(cat "$work/crash.rows")"
+wait "$watcher"
 sort -u "$work/crash.pids" | grep -vx "$w" | grep -q . || fail "no new worker after the crash"
 kill -0 "$w" 2>/dev/null && fail "the crashed worker $w still runs"
 echo "ok   a worker killed by SIGSEGV: its run is an error row, a new worker runs the rest"
@@ -63,6 +90,7 @@ echo "ok   a worker killed by SIGSEGV: its run is an error row, a new worker run
 "$bin" sweep "$sweep" --out "$work/slow" --jobs 1 --timeout 3 > "$work/slow.log" 2>&1 &
 pid=$!
 watch_workers "$work/slow.pids" &
+watcher=$!
 wait_run "$work/slow" 1 || fail "run 1 never started"
 first=$(workers)
 wait "$pid"
@@ -72,6 +100,7 @@ rows "$work/slow/results.csv" > "$work/slow.rows"
 grep -qx "1 error timed out: still running after the 3 s limit (worker killed)" "$work/slow.rows" ||
   fail "run 1: $(sed -n 2p "$work/slow.rows")"
 [ "$(grep -c " passed $" "$work/slow.rows")" -eq 5 ] || fail "the other runs: $(cat "$work/slow.rows")"
+wait "$watcher"
 sort -u "$work/slow.pids" | grep -vx "$first" | grep -q . || fail "no new worker after the timeout"
 echo "ok   a run past --timeout: an error row, its worker killed and replaced, the rest finish"
 
