@@ -23,12 +23,14 @@ sweep=$src/tests/batch/data/sweep_crash.yaml
 
 workers() { pgrep -P "$pid"; }  # the sweep's children: its workers
 pipes_of() { ls -l "/proc/$1/fd" 2>/dev/null | grep -o 'pipe:\[[0-9]*\]' | sort -u; }
-# Waits until run $2 of output folder $1 has started (its run directory exists).
-wait_run() {
+# Retries the command "$@" every 0.05 s for at most 30 s; false if it never succeeded.
+wait_for() {
   local i
-  for i in $(seq 1 600); do compgen -G "$1/runs/000$2-*" > /dev/null && return 0; sleep 0.05; done
+  for i in $(seq 1 600); do "$@" && return 0; sleep 0.05; done
   return 1
 }
+# Waits until run $2 of output folder $1 has started (its run directory exists).
+wait_run() { wait_for compgen -G "$1/runs/000$2-*" > /dev/null; }
 # Records every worker process id of the sweep into $1 until the sweep ends. One process that scans
 # /proc every millisecond (pgrep and sleep, a fork each, missed a new worker that finished its four
 # short runs within 0.15 s on a loaded CI machine). seen_by_watcher waits until it has seen worker $2.
@@ -50,11 +52,7 @@ with open(sys.argv[2], "w") as out:
         time.sleep(0.001)
 PY
 }
-seen_by_watcher() {
-  local i
-  for i in $(seq 1 600); do grep -qx "$2" "$1" 2>/dev/null && return 0; sleep 0.05; done
-  return 1
-}
+seen_by_watcher() { wait_for grep -qx "$2" "$1" 2>/dev/null; }
 
 # The rows as "run status error" lines.
 rows() {
