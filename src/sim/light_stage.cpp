@@ -86,7 +86,7 @@ std::vector<LightStep> TrafficLightStage::step(double now, double s_front, doubl
     LightStep step;
     step.light = &t.light;
     step.front_to_stop_line = front_to_line;
-    const std::string& state = state_of(t.light.tls_id);
+    const std::string& state = *state_of(t.light.tls_id);
     step.own_state = t.light.link_index >= 0 && static_cast<std::size_t>(t.light.link_index) < state.size()
                          ? state[static_cast<std::size_t>(t.light.link_index)]
                          : '?';

@@ -50,8 +50,10 @@ class TrafficLightStage {
   TrafficLightStage(std::vector<sumo::ApproachLight> lights, const TrafficLightJudgeParameters& judge,
                     const PerceptionModelParameters& perception, double horizon, V2iSource v2i = {});
 
-  /// A light's live state string, by light id (kept by the caller at least until the next call).
-  using StateOf = std::function<const std::string&(const std::string&)>;
+  /// A light's live state string, by light id, never null (kept by the caller at least until the next
+  /// call). A pointer, not a reference: a callable that returned the string by value would bind a
+  /// returned reference to a temporary without a word from the compiler, a pointer does not compile.
+  using StateOf = std::function<const std::string*(const std::string&)>;
 
   /// One step for every light in the window, nearest first (empty when none).
   std::vector<LightStep> step(double now, double s_front, double speed, double accel, const StateOf& state_of);

@@ -161,7 +161,7 @@ BlinkerChoice StepLoop::decide(const StepObservation& now, const StepManeuver& m
 StepLights StepLoop::light(const StepObservation& now) {
   StepLights out;
   out.steps = lights_.step(now.sumo.time, now.ego.s_front, now.sumo.speed, now.sumo.accel,
-                           [this](const std::string& tls) -> const std::string& { return session_.light_state(tls); });
+                           [this](const std::string& tls) { return &session_.light_state(tls); });
   for (const LightStep& l : out.steps)
     if (l.result.stop_point_distance &&
         (!out.stopping || *l.result.stop_point_distance < *out.stopping->result.stop_point_distance))

@@ -3,15 +3,16 @@
 // received" and "timed out" (docs/behaviour.md §L1.3 rows 1-2) happen in a simulation.
 //
 // Per call of observe(truth, distance_to_light, now):
-//   draw u_drop                                        (one draw per call, always)
+//   draw u_drop                                        (one draw per call, if dropout_probability > 0)
 //   captured := now not in any blackout and |distance_to_light| <= detection_range
 //               and not (u_drop < dropout_probability)
 //   if captured:
 //       for k in 1..detections_per_light, for each true element e (in order):
 //           detection := e
-//           draw u_mis, u_which (always); if u_mis < misclassification_probability:
-//               detection.color := another color of {Unknown, Red, Amber, Green}, chosen by u_which
-//           draw u_conf (always); if confidence_noise > 0:
+//           if misclassification_probability > 0: draw u_mis, u_which;
+//               if u_mis < misclassification_probability:
+//                   detection.color := another color of {Unknown, Red, Amber, Green}, chosen by u_which
+//           if confidence_noise > 0: draw u_conf;
 //               detection.confidence := clamp(e.confidence + confidence_noise * (2 u_conf - 1), 0, 1)
 //       queue (due = now + latency, observation {detections, stamp = now})
 //   deliver the newest queued observation whose due time <= now (older due ones are superseded
@@ -21,7 +22,9 @@
 // with splitmix64 of (seed, stream index). The standard fixes mt19937_64's output for a given seed,
 // and uniforms are made here from raw 64-bit draws ((x >> 11) * 2^-53), so a sequence is identical
 // on every platform and library version. Separate streams keep, e.g., the dropout pattern unchanged
-// when only the misclassification probability changes. Times are compared in integer nanoseconds.
+// when only the misclassification probability changes; they are also why a fault that is off may skip
+// its draws: its stream feeds nothing else, and a draw could not change its outcome (u < 0 never
+// holds, zero noise adds nothing). Times are compared in integer nanoseconds.
 //
 // With all faults off (the defaults) the true elements pass through unchanged with stamp = now.
 #pragma once

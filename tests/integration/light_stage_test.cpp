@@ -30,9 +30,9 @@ TEST(LightStage, EachStepReportsAndJudgesTheStateOfThatStep) {
   // Green, a left arrow under a red straight link, yellow, red, green again, and off.
   const std::vector<std::string> states = {"GG", "GG", "Gr", "Gr", "yy", "yy", "rr", "rr", "GG", "OO", "GG"};
   std::string state;
-  const TrafficLightStage::StateOf state_of = [&state](const std::string& tls) -> const std::string& {
+  const TrafficLightStage::StateOf state_of = [&state](const std::string& tls) {
     EXPECT_EQ(tls, "L");
-    return state;
+    return &state;
   };
   std::vector<std::string> seen;
   for (std::size_t k = 0; k < states.size(); ++k) {

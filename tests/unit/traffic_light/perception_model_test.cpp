@@ -3,10 +3,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <random>
 #include <set>
 #include <stdexcept>
+#include <string>
 
 #include "traffic_light/perception_model.hpp"
 #include "traffic_light/traffic_light_judge.hpp"
@@ -249,10 +251,10 @@ TEST(PerceptionModel, FaultStreamsAreIndependent) {
   for (std::size_t k = 0; k < sa.size(); ++k) EXPECT_EQ(sa[k].has_value(), sb[k].has_value()) << k;
 }
 
-// A fault that is off draws nothing from its stream (perception_model.cpp). Against the same fault at
-// the smallest positive setting (it draws, and never fires), every other fault's outcome is the same
-// step for step: skipping the draws changes nothing.
-TEST(PerceptionModel, AFaultThatIsOffDrawsNothingAndChangesNothingElse) {
+// A fault that is off skips its draws (perception_model.cpp). Against the same fault at the smallest
+// positive setting (it draws, and never fires), every other fault's outcome is the same step for step.
+// (Whether draws happen is not visible from outside; what must not change is pinned below.)
+TEST(PerceptionModel, AFaultThatIsOffChangesNoOtherFaultsOutcome) {
   const double tiny = std::numeric_limits<double>::denorm_min();
   for (int fault = 0; fault < 3; ++fault) {
     PerceptionModelParameters off = all_faults(11);
@@ -272,6 +274,64 @@ TEST(PerceptionModel, AFaultThatIsOffDrawsNothingAndChangesNothingElse) {
     for (const auto& o : sa) delivered += o.has_value();
     EXPECT_GT(delivered, 0);
     EXPECT_LT(delivered, 400);
+  }
+}
+
+// Every delivered observation of `steps` steps as text (stamp, then each detection's colour and
+// confidence to the last bit), hashed with 64-bit FNV-1a.
+std::uint64_t fingerprint(PerceptionModel& model, int steps) {
+  std::uint64_t h = 14695981039346656037ULL;
+  const auto mix = [&h](const std::string& text) {
+    for (const char c : text) h = (h ^ static_cast<unsigned char>(c)) * 1099511628211ULL;
+  };
+  for (const auto& o : run(model, steps)) {
+    if (!o) {
+      mix("-\n");
+      continue;
+    }
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%a", o->stamp);
+    mix(buf);
+    for (const SignalElement& e : o->elements) {
+      std::snprintf(buf, sizeof buf, " %d:%a", static_cast<int>(e.color), e.confidence);
+      mix(buf);
+    }
+    mix("\n");
+  }
+  return h;
+}
+
+// The sequences the faults produce, pinned: any change to what is drawn when (an extra draw, a skipped
+// one, another order) changes them. Recorded from the model as it drew before faults that are off
+// stopped drawing (633f3ca), which gives the same sequences: skipping changed no outcome.
+TEST(PerceptionModel, FaultSequencesArePinned) {
+  struct Case {
+    const char* what;
+    PerceptionModelParameters params;
+    std::uint64_t expected;
+  };
+  std::vector<Case> cases;
+  cases.push_back({"all faults", all_faults(7), 13290565394101973748ULL});
+  PerceptionModelParameters only = all_faults(7);
+  only.misclassification_probability = 0.0;
+  only.confidence_noise = 0.0;
+  cases.push_back({"dropout and latency", only, 15922233167065863515ULL});
+  only = all_faults(7);
+  only.dropout_probability = 0.0;
+  only.latency = 0.0;
+  only.confidence_noise = 0.0;
+  cases.push_back({"misclassification", only, 5911706812423107079ULL});
+  only = all_faults(7);
+  only.dropout_probability = 0.0;
+  only.misclassification_probability = 0.0;
+  only.latency = 0.0;
+  cases.push_back({"confidence noise", only, 9271802176736162990ULL});
+  only = all_faults(7);
+  only.latency = 0.0;
+  cases.push_back({"all but latency", only, 1866753687920592712ULL});
+  for (const Case& c : cases) {
+    PerceptionModel model(c.params);
+    EXPECT_EQ(fingerprint(model, 400), c.expected) << c.what;
   }
 }
 
