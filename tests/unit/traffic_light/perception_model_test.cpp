@@ -310,25 +310,23 @@ TEST(PerceptionModel, FaultSequencesArePinned) {
     PerceptionModelParameters params;
     std::uint64_t expected;
   };
-  std::vector<Case> cases;
-  cases.push_back({"all faults", all_faults(7), 13290565394101973748ULL});
-  PerceptionModelParameters only = all_faults(7);
-  only.misclassification_probability = 0.0;
-  only.confidence_noise = 0.0;
-  cases.push_back({"dropout and latency", only, 15922233167065863515ULL});
-  only = all_faults(7);
-  only.dropout_probability = 0.0;
-  only.latency = 0.0;
-  only.confidence_noise = 0.0;
-  cases.push_back({"misclassification", only, 5911706812423107079ULL});
-  only = all_faults(7);
-  only.dropout_probability = 0.0;
-  only.misclassification_probability = 0.0;
-  only.latency = 0.0;
-  cases.push_back({"confidence noise", only, 9271802176736162990ULL});
-  only = all_faults(7);
-  only.latency = 0.0;
-  cases.push_back({"all but latency", only, 1866753687920592712ULL});
+  // all_faults(7) with some of its faults turned off.
+  const auto but = [](auto turn_off) {
+    PerceptionModelParameters p = all_faults(7);
+    turn_off(p);
+    return p;
+  };
+  const std::vector<Case> cases = {
+      {"all faults", all_faults(7), 13290565394101973748ULL},
+      {"dropout and latency", but([](auto& p) { p.misclassification_probability = p.confidence_noise = 0.0; }),
+       15922233167065863515ULL},
+      {"misclassification", but([](auto& p) { p.dropout_probability = p.latency = p.confidence_noise = 0.0; }),
+       5911706812423107079ULL},
+      {"confidence noise",
+       but([](auto& p) { p.dropout_probability = p.misclassification_probability = p.latency = 0.0; }),
+       9271802176736162990ULL},
+      {"all but latency", but([](auto& p) { p.latency = 0.0; }), 1866753687920592712ULL},
+  };
   for (const Case& c : cases) {
     PerceptionModel model(c.params);
     EXPECT_EQ(fingerprint(model, 400), c.expected) << c.what;
