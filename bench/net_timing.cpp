@@ -22,7 +22,7 @@
 #include "scenario/scenario.hpp"
 #include "sim/session_setup.hpp"
 #include "sim/step_loop.hpp"
-#include "sumo/net_index.hpp"
+#include "net/net_index.hpp"
 
 namespace {
 

@@ -32,7 +32,7 @@
 #include "scenario/input_error.hpp"
 #include "scenario/scenario.hpp"
 #include "sim/session_setup.hpp"
-#include "sumo/net_index.hpp"
+#include "net/net_index.hpp"
 
 namespace signalsim::app {
 namespace fs = std::filesystem;

@@ -2,7 +2,7 @@
 
 #include <cstdio>
 
-#include "sumo/route_builder.hpp"
+#include "route/route_builder.hpp"
 
 namespace signalsim {
 namespace {
@@ -19,7 +19,7 @@ void print_net_summary(std::ostream& out, const sumo::NetIndex& net) {
   out << "net " << net.path() << ": " << net.edge_count() << " edges, " << net.tl_logics().size()
       << " traffic lights, " << net.roundabouts().size() << " roundabouts, "
       << (net.lefthand() ? "left-hand" : "right-hand") << " traffic\n";
-  // The loading rule (sumo/net_index.hpp): defects are listed; only a route that uses one is refused.
+  // The loading rule (net/net_index.hpp): defects are listed; only a route that uses one is refused.
   if (net.defects().empty()) return;
   out << net.defects().size() << " defect(s) recorded; a route that uses the element is refused, unless marked [no route reads it]:\n";
   for (const sumo::NetDefect& d : net.defects()) {
@@ -31,7 +31,7 @@ void print_net_summary(std::ostream& out, const sumo::NetIndex& net) {
 void print_route(std::ostream& out, const sumo::RoutePlan& plan) {
   out << "route: " << plan.map.size() << " lanelets, " << format("%.2f", plan.map.length()) << " m, "
       << plan.lane_changes << " lane change(s) planned\n";
-  // Where the lane plan put each lane change, and the room it has there (sumo/lane_change_room.hpp).
+  // Where the lane plan put each lane change, and the room it has there (route/lane_change_room.hpp).
   for (const sumo::PlannedLaneChange& c : plan.changes) {
     out << format("lane change on edge '%s': lane %d -> %d, a %.2f m shift in %.2f m of room: ", c.edge.c_str(),
                   c.from_lane, c.to_lane, c.shift, c.room)

@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "sumo/net_index.hpp"
-#include "sumo/route_builder.hpp"
+#include "net/net_index.hpp"
+#include "route/route_builder.hpp"
 
 namespace signalsim {
 

@@ -6,7 +6,7 @@
 #include "app/inspect.hpp"
 #include "scenario/countries.hpp"
 #include "sim/route_planning.hpp"
-#include "sumo/route_builder.hpp"
+#include "route/route_builder.hpp"
 
 namespace signalsim::app {
 namespace {

@@ -19,11 +19,11 @@
 #include "scenario/scenario.hpp"
 #include "sim/step_loop.hpp"
 #include "sim/sumo_driven.hpp"
-#include "sumo/net_index.hpp"
-#include "sumo/route_builder.hpp"
-#include "sumo/interruption.hpp"
-#include "sumo/sumo_log.hpp"
-#include "sumo/sumo_session.hpp"
+#include "net/net_index.hpp"
+#include "route/route_builder.hpp"
+#include "session/interruption.hpp"
+#include "net/sumo_log.hpp"
+#include "session/sumo_session.hpp"
 #include "sim/session_setup.hpp"
 
 namespace signalsim::app {

@@ -4,7 +4,7 @@
 // its command line, so nothing of one run's options reaches the next - and replies "done CODE" on
 // file descriptor 3 once the run's files are written. Between runs it puts back what a fresh process
 // would have fresh: the notes printed, the working directory. libsumo is closed at the end of each
-// run (sumo/session_embedded.cpp) and starts again with the next; after a run whose SUMO failed to
+// run (session/session_embedded.cpp) and starts again with the next; after a run whose SUMO failed to
 // start the worker ends (sumo::embedded_sumo_reusable), and the batch starts another. SIGINT/SIGTERM
 // stop the run under way as they stop `run` (its reply says 130 or 143) and end the worker. The
 // batch commands usually fork into serve() rather than exec this command (worker_process.hpp).
@@ -21,8 +21,8 @@
 #include "batch/worker_process.hpp"
 #include "batch/worker_protocol.hpp"
 #include "scenario/notes.hpp"
-#include "sumo/interruption.hpp"
-#include "sumo/sumo_session.hpp"
+#include "session/interruption.hpp"
+#include "session/sumo_session.hpp"
 
 namespace signalsim::app {
 namespace {

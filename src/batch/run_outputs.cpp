@@ -11,8 +11,8 @@
 #include "sim/behavior_stage.hpp"
 #include "report/metrics.hpp"
 #include "sim/route_planning.hpp"
-#include "sumo/net_index.hpp"
-#include "sumo/route_builder.hpp"
+#include "net/net_index.hpp"
+#include "route/route_builder.hpp"
 
 namespace signalsim {
 namespace fs = std::filesystem;

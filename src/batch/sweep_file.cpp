@@ -12,7 +12,7 @@
 #include "batch/sweep_plot_check.hpp"
 #include "scenario/input_error.hpp"
 #include "scenario/yaml_fields.hpp"
-#include "sumo/file_paths.hpp"
+#include "core/file_paths.hpp"
 
 namespace signalsim {
 namespace fs = std::filesystem;
@@ -61,11 +61,11 @@ std::vector<std::string> read_scenarios(const YamlFields& top, const std::string
   const YAML::Node scenarios = top.node("scenarios");
   std::vector<std::string> paths;
   if (scenarios.IsScalar()) {
-    paths.push_back(sumo::resolve_beside(path, scenarios.Scalar()));
+    paths.push_back(resolve_beside(path, scenarios.Scalar()));
   } else if (scenarios.IsSequence() && scenarios.size() > 0) {
     for (const YAML::Node& item : scenarios) {
       if (!item.IsScalar()) throw InputError(path, yaml_line(item), "scenarios: expected file or directory paths");
-      paths.push_back(sumo::resolve_beside(path, item.Scalar()));
+      paths.push_back(resolve_beside(path, item.Scalar()));
     }
   } else {
     top.fail("scenarios", "expected a path or a non-empty list of scenario files or directories");
@@ -185,7 +185,7 @@ Sweep load_sweep(const std::string& path) {
   }
   if (top.has("set")) read_set(top, path, seen, s);
   if (top.has("timeout")) s.timeout = top.required_number("timeout");
-  if (top.has("out")) s.out = sumo::resolve_beside(path, top.text("out"));
+  if (top.has("out")) s.out = resolve_beside(path, top.text("out"));
   if (top.has("plot")) {
     s.plots = read_plots(top, path, s);
     s.plot = s.plots.front();

@@ -14,7 +14,7 @@
 #include "scenario/take_over.hpp"
 #include "sim/behavior_stage.hpp"
 #include "sim/route_planning.hpp"
-#include "sumo/net_index.hpp"
+#include "net/net_index.hpp"
 
 namespace signalsim {
 namespace {

@@ -14,7 +14,7 @@
 #include "report/expectations.hpp"
 #include "scenario/input_error.hpp"
 #include "sim/route_planning.hpp"
-#include "sumo/sumo_session.hpp"
+#include "session/sumo_session.hpp"
 
 namespace signalsim::generate {
 namespace fs = std::filesystem;

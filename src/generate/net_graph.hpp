@@ -7,7 +7,7 @@
 #pragma once
 
 #include "generate/route_graph.hpp"
-#include "sumo/net_index.hpp"
+#include "net/net_index.hpp"
 
 namespace signalsim::generate {
 

@@ -10,7 +10,7 @@
 #include "generate/sections.hpp"
 #include "generate/speed_profile.hpp"
 #include "sim/route_planning.hpp"
-#include "sumo/net_index.hpp"
+#include "net/net_index.hpp"
 
 namespace signalsim::generate {
 

@@ -16,7 +16,7 @@
 namespace signalsim::generate {
 namespace {
 
-constexpr double kSumoDecel = 4.5;       // [m/s^2] the ego vType's decel in SUMO (sumo/sumo_session.hpp)
+constexpr double kSumoDecel = 4.5;       // [m/s^2] the ego vType's decel in SUMO (session/sumo_session.hpp)
 constexpr double kInsertionRoom = 5.0;   // [m] SUMO inserts the ego only if it can stop this short of the edge end
 constexpr double kDurationFactor = 1.3;  // duration = factor x (travel + waits) + slack, in 10 s steps
 constexpr double kDurationSlack = 30.0;  // [s]

@@ -10,7 +10,7 @@
 #include "generate/scenario_text.hpp"
 #include "generate/sections.hpp"
 #include "scenario/parameters.hpp"
-#include "sumo/net_index.hpp"
+#include "net/net_index.hpp"
 
 namespace signalsim::generate {
 

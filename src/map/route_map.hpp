@@ -1,6 +1,6 @@
 // RouteMap: the ego's route as an ordered sequence of lanelets on the coordinate s.
 //
-// Built once per run (from the net, by sumo/RouteBuilder); every query afterwards is
+// Built once per run (from the net, by route/RouteBuilder); every query afterwards is
 // O(log n) in the route length and independent of the size of the net.
 #pragma once
 

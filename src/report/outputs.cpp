@@ -10,7 +10,7 @@
 #include "report/fixed_text.hpp"
 #include "report/metrics.hpp"
 #include "scenario/take_over.hpp"
-#include "sumo/sumo_session.hpp"
+#include "session/sumo_session.hpp"
 
 namespace signalsim {
 namespace fs = std::filesystem;

@@ -9,7 +9,7 @@
 #include "report/fixed_text.hpp"  // fixed(): numbers as the files write them
 #include "scenario/scenario.hpp"
 #include "report/timeline.hpp"
-#include "sumo/route_builder.hpp"
+#include "route/route_builder.hpp"
 
 namespace signalsim {
 

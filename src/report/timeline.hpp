@@ -10,8 +10,8 @@
 #include "traffic_light/traffic_light_judge.hpp"
 
 #include "scenario/scenario.hpp"
-#include "sumo/sumo_log.hpp"
-#include "sumo/sumo_session.hpp"
+#include "net/sumo_log.hpp"
+#include "session/sumo_session.hpp"
 #include "turn_signal/turn_signal_info.hpp"
 
 namespace signalsim {

@@ -5,8 +5,8 @@
 #include "scenario/notes.hpp"
 #include "scenario/scenario_keys.hpp"
 #include "scenario/vehicle_info.hpp"
-#include "sumo/file_paths.hpp"
-#include "sumo/number_parsing.hpp"
+#include "core/file_paths.hpp"
+#include "core/number_parsing.hpp"
 
 namespace signalsim {
 namespace {
@@ -24,8 +24,8 @@ void apply_vehicle_info(const VehicleInfo& info, int line, const std::string& pa
                  {"base_link_to_front", info.base_link_to_front(), ego.base_link_to_front}};
   for (const auto& [key, value, field] : derived) {
     if (ego.given.count(key)) {
-      notes.push_back(path + ":" + std::to_string(ego.lines[key]) + ": ego." + key + " " + sumo::short_number(field) +
-                      " replaces " + sumo::short_number(value) + " from vehicle_info " + info.file);
+      notes.push_back(path + ":" + std::to_string(ego.lines[key]) + ": ego." + key + " " + short_number(field) +
+                      " replaces " + short_number(value) + " from vehicle_info " + info.file);
       continue;
     }
     field = value;
@@ -35,7 +35,7 @@ void apply_vehicle_info(const VehicleInfo& info, int line, const std::string& pa
   }
   if (ego.length < 0.5 || ego.length > 30.0 || ego.width < 0.3 || ego.width > 5.0)
     throw InputError(info.file, info.lines.at("wheel_base"),
-                     "the vehicle is " + sumo::short_number(ego.length) + " m x " + sumo::short_number(ego.width) +
+                     "the vehicle is " + short_number(ego.length) + " m x " + short_number(ego.width) +
                          " m (length 0.5-30 m, width 0.3-5 m)");
   ego.vehicle_info_unused = info.unused;
   if (!info.unused.empty()) notes.push_back(unused_parameters_note({info.file, info.unused}));
@@ -75,12 +75,12 @@ void read_ego(const YamlFields& top, const YAML::Node& root, const std::string& 
   s.ego.base_link_to_front = ego.number("base_link_to_front", kBaseLinkShare * s.ego.length);
   s.strict_params = strict_params(root, path);
   if (ego.has("vehicle_info"))
-    apply_vehicle_info(load_vehicle_info(sumo::resolve_beside(path, ego.text("vehicle_info")), s.strict_params),
+    apply_vehicle_info(load_vehicle_info(resolve_beside(path, ego.text("vehicle_info")), s.strict_params),
                        ego.line_of("vehicle_info"), path, s.ego, s.notes);
   if (s.ego.base_link_to_front > s.ego.length) {
     if (s.ego.from_vehicle_info.count("base_link_to_front"))
-      ego.fail("length", sumo::short_number(s.ego.length) + " m is shorter than base_link_to_front " +
-                             sumo::short_number(s.ego.base_link_to_front) + " m from vehicle_info " + s.ego.vehicle_info);
+      ego.fail("length", short_number(s.ego.length) + " m is shorter than base_link_to_front " +
+                             short_number(s.ego.base_link_to_front) + " m from vehicle_info " + s.ego.vehicle_info);
     ego.fail("base_link_to_front", "is longer than the vehicle (ego.length)");
   }
   s.ego.accel = ego.number("accel");

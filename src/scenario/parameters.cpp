@@ -7,7 +7,7 @@
 
 #include "scenario/input_error.hpp"
 #include "scenario/parameter_keys.hpp"
-#include "sumo/number_parsing.hpp"
+#include "core/number_parsing.hpp"
 #include "scenario/yaml_fields.hpp"
 
 namespace signalsim {
@@ -28,8 +28,8 @@ ParameterValue convert(const ParameterSpec& spec, const std::string& key_as_writ
   };
   auto check_range = [&](double x) {
     if (!std::isfinite(x) || x < spec.min || x > spec.max)
-      throw InputError(file, line, key + ": value " + raw + " is out of range [" + sumo::short_number(spec.min) + ", " +
-                                       sumo::short_number(spec.max) + "]");
+      throw InputError(file, line, key + ": value " + raw + " is out of range [" + short_number(spec.min) + ", " +
+                                       short_number(spec.max) + "]");
   };
   if (std::holds_alternative<bool>(spec.default_value)) {
     bool value = false;
@@ -114,8 +114,8 @@ void ParameterSet::check_consistency(const std::string& file) const {
   // what an earlier one set.
   const auto inverted = [&](const char* low, const char* high, const char* rule) {
     if (number(low) <= number(high)) return;
-    throw InputError(file, 0, std::string(low) + " " + sumo::short_number(number(low)) + " (" + origin(low) +
-                                  ") is greater than " + high + " " + sumo::short_number(number(high)) + " (" +
+    throw InputError(file, 0, std::string(low) + " " + short_number(number(low)) + " (" + origin(low) +
+                                  ") is greater than " + high + " " + short_number(number(high)) + " (" +
                                   origin(high) + ")" + rule);
   };
   inverted("restart_suppression.min_behind_distance_to_stop", "restart_suppression.max_behind_distance_to_stop",

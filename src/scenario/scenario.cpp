@@ -15,7 +15,7 @@
 #include "scenario/signal_reading.hpp"
 #include "scenario/sumo_inputs.hpp"
 #include "scenario/yaml_fields.hpp"
-#include "sumo/file_paths.hpp"
+#include "core/file_paths.hpp"
 
 namespace signalsim {
 namespace {
@@ -29,7 +29,7 @@ void read_parameters(const YamlFields& top, const std::string& path, const YAML:
     // strict: every key of a parameter file must be one signalsim uses (else they are listed).
     (void)params.node("strict");  // read with the ego (it applies to ego.vehicle_info too)
     for (const std::string& file : params.text_list("files"))
-      s.params.apply_file(sumo::resolve_beside(path, file), s.strict_params);
+      s.params.apply_file(resolve_beside(path, file), s.strict_params);
     const YAML::Node given = params.node("set");
     if (given) set.reset(given);  // (assigning an absent node would throw)
     params.finish();

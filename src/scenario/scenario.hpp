@@ -11,8 +11,8 @@
 #include <set>
 
 #include "scenario/parameters.hpp"
-#include "sumo/lane_change_room.hpp"
-#include "sumo/sumo_options.hpp"
+#include "route/lane_change_room.hpp"
+#include "net/sumo_options.hpp"
 #include "traffic_light/perception_model.hpp"
 #include "traffic_light/v2i_channel.hpp"
 

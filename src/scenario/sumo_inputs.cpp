@@ -6,9 +6,9 @@
 #include <sstream>
 
 #include "scenario/input_error.hpp"
-#include "sumo/number_parsing.hpp"
-#include "sumo/file_paths.hpp"
-#include "sumo/sumocfg.hpp"
+#include "core/number_parsing.hpp"
+#include "core/file_paths.hpp"
+#include "net/sumocfg.hpp"
 
 namespace signalsim {
 namespace fs = std::filesystem;
@@ -33,7 +33,7 @@ void read_simulation_keys(const YamlFields& top, const std::string& path, Scenar
   s.sumo.scenario_dir = dir;
   std::optional<sumo::SumoConfigFile> cfg;
   if (top.has("sumocfg")) {
-    s.sumo.sumocfg = sumo::resolve_beside(path, top.text("sumocfg"));
+    s.sumo.sumocfg = resolve_beside(path, top.text("sumocfg"));
     if (!fs::is_regular_file(s.sumo.sumocfg)) top.fail("sumocfg", "file '" + s.sumo.sumocfg + "' not found");
     cfg = sumo::read_sumocfg(s.sumo.sumocfg);  // NetError "<cfg>:<line>: ..." for a bad file
     s.sumo.cfg_dir = cfg->dir;
@@ -47,7 +47,7 @@ void read_simulation_keys(const YamlFields& top, const std::string& path, Scenar
 
   // The net: the scenario's own key wins over the sumocfg's net-file.
   if (top.has("net")) {
-    s.net = sumo::resolve_beside(path, top.text("net"));
+    s.net = resolve_beside(path, top.text("net"));
     if (!fs::is_regular_file(s.net)) top.fail("net", "net file '" + s.net + "' not found");
     if (cfg && cfg->net) overridden("net-file", *cfg->net, "net", s.net);
   } else if (cfg && cfg->net) {
@@ -67,11 +67,11 @@ void read_simulation_keys(const YamlFields& top, const std::string& path, Scenar
     for (const std::string& f : cfg->additional) used("additional-files " + f);
   }
   for (const std::string& r : top.text_list("routes")) {
-    in.route_files.push_back(sumo::resolve_beside(path, r));
+    in.route_files.push_back(resolve_beside(path, r));
     if (!fs::is_regular_file(in.route_files.back())) top.fail("routes", "file '" + in.route_files.back() + "' not found");
   }
   for (const std::string& a : top.text_list("additional")) {
-    s.additional.push_back(sumo::resolve_beside(path, a));
+    s.additional.push_back(resolve_beside(path, a));
     if (!fs::is_regular_file(s.additional.back())) top.fail("additional", "file '" + s.additional.back() + "' not found");
   }
 
@@ -80,16 +80,16 @@ void read_simulation_keys(const YamlFields& top, const std::string& path, Scenar
   // SUMO counts time in whole milliseconds and rounds a step length to them, while the planner would
   // integrate the value as written: the two clocks drift apart (0.0015 s ran a red light). Refuse it.
   if (const double ms = s.step_length * 1000.0; std::abs(ms - std::round(ms)) > 1e-6) {
-    const std::string reason = sumo::short_number(s.step_length) +
+    const std::string reason = short_number(s.step_length) +
                                " s is not a whole number of milliseconds (SUMO would round it to " +
-                               sumo::short_number(std::max(1.0, std::round(ms)) / 1000.0) + " s)";
+                               short_number(std::max(1.0, std::round(ms)) / 1000.0) + " s)";
     if (top.has("step_length")) top.fail("step_length", reason);
     throw InputError(s.sumo.sumocfg, 0, "step-length " + reason);
   }
   s.seed = cfg && cfg->seed ? top.integer("seed", *cfg->seed) : top.integer("seed");
   if (cfg && cfg->step_length) {
-    if (top.has("step_length")) overridden("step-length", sumo::short_number(*cfg->step_length), "step_length", sumo::short_number(s.step_length));
-    else used("step-length " + sumo::short_number(s.step_length));
+    if (top.has("step_length")) overridden("step-length", short_number(*cfg->step_length), "step_length", short_number(s.step_length));
+    else used("step-length " + short_number(s.step_length));
   }
   if (cfg && cfg->seed) {
     if (top.has("seed")) overridden("seed", std::to_string(*cfg->seed), "seed", std::to_string(s.seed));
@@ -97,14 +97,14 @@ void read_simulation_keys(const YamlFields& top, const std::string& path, Scenar
   }
   if (cfg && cfg->begin) {
     in.begin = *cfg->begin;
-    used("begin " + sumo::short_number(in.begin));
+    used("begin " + short_number(in.begin));
   }
   if (cfg && cfg->end) {
     if (*cfg->end <= in.begin)
-      throw InputError(s.sumo.sumocfg, cfg->end_line, "end " + sumo::short_number(*cfg->end) + " is not after begin " +
-                                                          sumo::short_number(in.begin));
+      throw InputError(s.sumo.sumocfg, cfg->end_line, "end " + short_number(*cfg->end) + " is not after begin " +
+                                                          short_number(in.begin));
     in.end = *cfg->end;
-    used("end " + sumo::short_number(*in.end));
+    used("end " + short_number(*in.end));
   }
   // duration: the scenario's; else until the sumocfg's end; else the table's default (60 s).
   s.duration = in.end ? top.number("duration", *in.end - in.begin) : top.number("duration");

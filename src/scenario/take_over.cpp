@@ -4,7 +4,7 @@
 #include <sstream>
 
 #include "scenario/input_error.hpp"
-#include "sumo/number_parsing.hpp"
+#include "core/number_parsing.hpp"
 
 namespace signalsim {
 namespace {
@@ -58,11 +58,11 @@ std::optional<sumo::RouteFileVehicle> resolve_route_file_ego(Scenario& scenario)
   if (std::istringstream(v->depart) >> depart; !v->depart.empty() && depart < scenario.sumo.begin)
     throw InputError(v->file, v->line,
                      "<" + v->kind + "> '" + v->id + "' (ego.id) departs at " + v->depart + " s, before the simulation "
-                     "begins (" + sumo::short_number(scenario.sumo.begin) + " s): SUMO never inserts it");
+                     "begins (" + short_number(scenario.sumo.begin) + " s): SUMO never inserts it");
   if (scenario.sumo.end && !v->depart.empty() && depart >= *scenario.sumo.end)
     throw InputError(v->file, v->line,
                      "<" + v->kind + "> '" + v->id + "' (ego.id) departs at " + v->depart + " s, at or after the end of "
-                     "the simulation (" + sumo::short_number(*scenario.sumo.end) + " s)");
+                     "the simulation (" + short_number(*scenario.sumo.end) + " s)");
   if (scenario.ego.given.count("route") && scenario.ego.route != v->edges)
     throw InputError(scenario.path, line_of(scenario, "route"),
                      "ego.route [" + edges_text(scenario.ego.route) + "] contradicts the route of '" + id + "' in " +
@@ -79,9 +79,9 @@ Scenario with_taken_over_ego(const Scenario& scenario, const sumo::EgoVehicle& v
   // A given key must repeat SUMO's value (to 1 mm, 1 mm/s); otherwise SUMO's value is the ego's.
   const auto take = [&](const char* key, double& field, double sumo_value) {
     if (ego.given.count(key) && std::abs(field - sumo_value) > 1e-3)
-      throw InputError(scenario.path, line_of(scenario, key), std::string("ego.") + key + " " + sumo::short_number(field) + " contradicts vehicle '" +
+      throw InputError(scenario.path, line_of(scenario, key), std::string("ego.") + key + " " + short_number(field) + " contradicts vehicle '" +
                                              vehicle.id + "' of " + where(definition) + ": its vType '" + vehicle.type +
-                                             "' has " + sumo::short_number(sumo_value));
+                                             "' has " + short_number(sumo_value));
     field = sumo_value;
   };
   take("length", ego.length, vehicle.length);
@@ -91,8 +91,8 @@ Scenario with_taken_over_ego(const Scenario& scenario, const sumo::EgoVehicle& v
   take("emergency_decel", ego.emergency_decel, vehicle.emergency_decel);
   if (!ego.given.count("base_link_to_front")) ego.base_link_to_front = kBaseLinkShare * ego.length;
   if (ego.base_link_to_front > ego.length)
-    throw InputError(scenario.path, 0, "ego.base_link_to_front " + sumo::short_number(ego.base_link_to_front) +
-                                           " m is longer than vehicle '" + vehicle.id + "' (" + sumo::short_number(ego.length) + " m)");
+    throw InputError(scenario.path, 0, "ego.base_link_to_front " + short_number(ego.base_link_to_front) +
+                                           " m is longer than vehicle '" + vehicle.id + "' (" + short_number(ego.length) + " m)");
   ego.vclass = vehicle.vclass.empty() ? ego.vclass : vehicle.vclass;
   ego.sumo_decel = vehicle.decel;
   ego.depart_lane = vehicle.depart_lane;

@@ -9,8 +9,8 @@
 #include <string>
 
 #include "scenario/scenario.hpp"
-#include "sumo/route_files.hpp"
-#include "sumo/sumo_session.hpp"
+#include "net/route_files.hpp"
+#include "session/sumo_session.hpp"
 
 namespace signalsim {
 

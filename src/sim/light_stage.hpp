@@ -13,8 +13,8 @@
 #include <utility>
 #include <vector>
 
-#include "sumo/approach_lights.hpp"
-#include "sumo/signal_timing.hpp"
+#include "route/approach_lights.hpp"
+#include "session/signal_timing.hpp"
 #include "traffic_light/perception_model.hpp"
 #include "traffic_light/traffic_light_judge.hpp"
 #include "traffic_light/v2i_channel.hpp"

@@ -1,6 +1,6 @@
 // Where SUMO leaves signalsim's lane plan (docs/run.md). signalsim plans the ego's lanes and
 // turns SUMO's lane changes off, but SUMO chooses the connection at a junction itself (see
-// sumo/sumo_lane_choice.hpp): when it takes another one than the plan's, the ego is on a lane of a
+// route/sumo_lane_choice.hpp): when it takes another one than the plan's, the ego is on a lane of a
 // route edge (or an internal lane of a route junction) that is not the planned one, and the route
 // may no longer be drivable from there. Each step the watch tells whether the ego is off the plan:
 //   - on a lanelet of the route (the lane itself, at or after the current lanelet): on the plan;

@@ -9,8 +9,8 @@
 #include "planning/lane_change_execution.hpp"
 #include "planning/shift_line.hpp"
 #include "scenario/scenario.hpp"
-#include "sumo/net_index.hpp"
-#include "sumo/route_builder.hpp"
+#include "net/net_index.hpp"
+#include "route/route_builder.hpp"
 
 namespace signalsim {
 
@@ -66,7 +66,7 @@ LateralPlan plan_lateral(const Scenario& scenario, const sumo::RoutePlan& plan, 
 /// -1 elsewhere; empty without one (sumo::build_route's required_exit).
 std::vector<int> required_exit_lanes(const Scenario& scenario);
 
-/// What limits the ego's lane changes (sumo/lane_change_room.hpp): base_link_to_front, depart_pos,
+/// What limits the ego's lane changes (route/lane_change_room.hpp): base_link_to_front, depart_pos,
 /// max_speed, and its grip, ego.emergency_decel.
 sumo::LaneChangeEgo lane_change_ego(const Scenario& scenario);
 

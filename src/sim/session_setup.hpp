@@ -10,10 +10,10 @@
 
 #include "sim/route_planning.hpp"
 #include "scenario/scenario.hpp"
-#include "sumo/net_index.hpp"
-#include "sumo/route_builder.hpp"
-#include "sumo/route_files.hpp"
-#include "sumo/sumo_session.hpp"
+#include "net/net_index.hpp"
+#include "route/route_builder.hpp"
+#include "net/route_files.hpp"
+#include "session/sumo_session.hpp"
 
 namespace signalsim {
 

@@ -25,7 +25,7 @@
 #include "scenario/scenario.hpp"
 #include "report/timeline.hpp"
 #include "sim/session_setup.hpp"
-#include "sumo/route_builder.hpp"
+#include "route/route_builder.hpp"
 
 namespace signalsim {
 

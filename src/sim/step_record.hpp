@@ -12,8 +12,8 @@
 #include "sim/behavior_stage.hpp"
 #include "sim/light_stage.hpp"
 #include "sim/session_setup.hpp"
-#include "sumo/approach_lights.hpp"
-#include "sumo/sumo_session.hpp"
+#include "route/approach_lights.hpp"
+#include "session/sumo_session.hpp"
 
 namespace signalsim {
 

@@ -8,7 +8,7 @@
 
 #include "planning/stop/jerk_limited_stop.hpp"
 #include "sim/route_planning.hpp"
-#include "sumo/approach_lights.hpp"
+#include "route/approach_lights.hpp"
 
 namespace signalsim {
 namespace {

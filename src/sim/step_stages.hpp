@@ -23,8 +23,8 @@
 #include "sim/session_setup.hpp"
 #include "sim/step_record.hpp"
 #include "sim/stuck_watch.hpp"
-#include "sumo/net_index.hpp"
-#include "sumo/sumo_session.hpp"
+#include "net/net_index.hpp"
+#include "session/sumo_session.hpp"
 #include "turn_signal/turn_signal_decider.hpp"
 
 namespace signalsim {

@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "scenario/parameters.hpp"
-#include "sumo/approach_lights.hpp"
-#include "sumo/sumo_session.hpp"
+#include "route/approach_lights.hpp"
+#include "session/sumo_session.hpp"
 
 namespace signalsim {
 namespace {

@@ -31,7 +31,7 @@
 
 #include "sim/session_setup.hpp"
 #include "report/timeline.hpp"
-#include "sumo/net_index.hpp"
+#include "net/net_index.hpp"
 
 namespace signalsim {
 

@@ -1,4 +1,4 @@
-// libFuzzer target: NetIndex::load (src/sumo/net_loading, net_xml_reading) on arbitrary bytes as a
+// libFuzzer target: NetIndex::load (src/net/net_loading, net_xml_reading) on arbitrary bytes as a
 // .net.xml, then every lookup of the index and, for the first connections of the net, the route
 // builder and the approach lights on two-edge routes; an index reading on demand, asked in reverse
 // file order, answers as one that read the whole net at load. Documented failures: NetError from
@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "fuzz_common.hpp"
-#include "sumo/approach_lights.hpp"
-#include "sumo/net_index.hpp"
-#include "sumo/route_builder.hpp"
+#include "route/approach_lights.hpp"
+#include "net/net_index.hpp"
+#include "route/route_builder.hpp"
 
 using namespace signalsim::sumo;
 

@@ -12,7 +12,7 @@
 #include "report/expectations.hpp"
 #include "scenario/input_error.hpp"
 #include "sim/route_planning.hpp"
-#include "sumo/net_index.hpp"
+#include "net/net_index.hpp"
 
 namespace signalsim::generate {
 namespace {

@@ -1,6 +1,6 @@
 // Issue 11, points 1, 4 and 9, in the real libsumo on real nets:
 //  - point 1: where a lane has several connections to the next route edge, the lane plan takes the
-//    one SUMO takes (sumo/sumo_lane_choice.hpp), so the ego arrives on bologna_acosta's route through
+//    one SUMO takes (route/sumo_lane_choice.hpp), so the ego arrives on bologna_acosta's route through
 //    85_1 (two links to 72[0]); a divergence SUMO makes anyway is recorded (scenario/plan_watch.hpp):
 //    off_plan stretches, and a run ending off the plan says so, never "held by light";
 //  - point 4: lane permissions are the ego's own vClass (a taken-over bus may use a bus lane; a
@@ -19,9 +19,9 @@
 #include "scenario/scenario.hpp"
 #include "sim/session_setup.hpp"
 #include "sim/step_loop.hpp"
-#include "sumo/net_index.hpp"
-#include "sumo/route_builder.hpp"
-#include "sumo/sumo_lane_choice.hpp"
+#include "net/net_index.hpp"
+#include "route/route_builder.hpp"
+#include "route/sumo_lane_choice.hpp"
 
 namespace signalsim {
 namespace {

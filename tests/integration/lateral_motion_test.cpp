@@ -10,8 +10,8 @@
 #include <string>
 
 #include "planning/shift_line.hpp"
-#include "sumo/net_index.hpp"
-#include "sumo/sumo_session.hpp"
+#include "net/net_index.hpp"
+#include "session/sumo_session.hpp"
 
 namespace signalsim {
 namespace {

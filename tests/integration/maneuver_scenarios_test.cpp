@@ -18,7 +18,7 @@
 #include "sim/route_planning.hpp"
 #include "scenario/scenario.hpp"
 #include "sim/step_loop.hpp"
-#include "sumo/net_index.hpp"
+#include "net/net_index.hpp"
 
 namespace signalsim {
 namespace {

@@ -14,7 +14,7 @@
 #include "report/outputs.hpp"
 #include "sim/route_planning.hpp"
 #include "sim/step_loop.hpp"
-#include "sumo/net_index.hpp"
+#include "net/net_index.hpp"
 
 namespace signalsim {
 namespace {

@@ -1,5 +1,5 @@
 // What the session answers within one step is SUMO's state at that moment, on the real libsumo: the
-// session keeps each step's answers (sumo/session_step_answers.hpp), and these tests fail if it kept
+// session keeps each step's answers (session/session_step_answers.hpp), and these tests fail if it kept
 // one too long: the ego's place after move_back moved it, a light's state and timing after its
 // program was shifted, the time and the ego after the next step. Net: sumo_nets/cross (in_S runs
 // north into the light C; its program: 30 s green for in_S, 3 s yellow, 2 s red, then the cross
@@ -8,7 +8,7 @@
 
 #include <string>
 
-#include "sumo/sumo_session.hpp"
+#include "session/sumo_session.hpp"
 
 namespace signalsim {
 namespace {

@@ -10,8 +10,8 @@
 #include "sim/route_planning.hpp"
 #include "scenario/scenario.hpp"
 #include "sim/step_loop.hpp"
-#include "sumo/net_index.hpp"
-#include "sumo/route_builder.hpp"
+#include "net/net_index.hpp"
+#include "route/route_builder.hpp"
 
 namespace signalsim {
 namespace {

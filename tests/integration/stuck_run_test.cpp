@@ -12,8 +12,8 @@
 #include "scenario/scenario.hpp"
 #include "sim/step_loop.hpp"
 #include "sim/stuck_watch.hpp"
-#include "sumo/net_index.hpp"
-#include "sumo/route_builder.hpp"
+#include "net/net_index.hpp"
+#include "route/route_builder.hpp"
 
 namespace signalsim {
 namespace {

@@ -13,7 +13,7 @@
 #include "scenario/scenario.hpp"
 #include "sim/session_setup.hpp"
 #include "sim/sumo_driven.hpp"
-#include "sumo/net_index.hpp"
+#include "net/net_index.hpp"
 
 namespace signalsim {
 namespace {

@@ -1,4 +1,4 @@
-// The option table of src/sumo/sumo_options.cpp against the installed SUMO: every FILE option that
+// The option table of src/net/sumo_options.cpp against the installed SUMO: every FILE option that
 // `sumo --save-template` lists is classified (owned, output or input), so a SUMO upgrade that adds a
 // file option shows up here instead of as an output written beside a user's files.
 #include <gtest/gtest.h>
@@ -10,7 +10,7 @@
 #include <regex>
 #include <sstream>
 
-#include "sumo/sumo_options.hpp"
+#include "net/sumo_options.hpp"
 
 namespace signalsim::sumo {
 namespace {
@@ -29,7 +29,7 @@ TEST(SumoOptionTable, EveryFileOptionOfTheInstalledSumoIsClassified) {
     const std::string name = (*it)[1];
     ++seen;
     EXPECT_TRUE(std::find(known.begin(), known.end(), name) != known.end())
-        << "SUMO's FILE option '" << name << "' is not classified in src/sumo/sumo_options.cpp";
+        << "SUMO's FILE option '" << name << "' is not classified in src/net/sumo_options.cpp";
   }
   EXPECT_GE(seen, 40);
   // Every synonym SUMO knows maps onto its option's long name (a user may write either).

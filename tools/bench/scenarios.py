@@ -8,7 +8,7 @@ run, `--set duration=STEP`); every later run of every contestant must end at the
 
   the sumo binary alone   the ego as a plain vehicle of a generated ego.rou.xml (same vType values,
                           route, departure), `--end` at signalsim's end, SUMO options as signalsim sets
-                          them (sumo/sumo_command_line.cpp), its log read for "Simulation ended at time"
+                          them (session/sumo_command_line.cpp), its log read for "Simulation ended at time"
   the Python controller   traci_controller.py with a JSON spec: the same sumo command line without
                           the ego's route file (it adds the ego over TraCI, as signalsim does)
   SUMO in-process         bench/sumo_steps: the sumo binary's command line in libsumocpp, the library

@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "drive.hpp"
-#include "sumo/net_index.hpp"
-#include "sumo/route_builder.hpp"
+#include "net/net_index.hpp"
+#include "route/route_builder.hpp"
 #include "turn_signal/exit_signal_marking.hpp"
 #include "turn_signal/roundabout_requests.hpp"
 

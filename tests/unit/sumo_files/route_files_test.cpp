@@ -5,8 +5,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "sumo/net_index.hpp"
-#include "sumo/route_files.hpp"
+#include "net/net_index.hpp"
+#include "net/route_files.hpp"
 #include "temp_dir.hpp"
 
 namespace signalsim::sumo {

@@ -3,7 +3,7 @@
 
 #include <algorithm>
 
-#include "sumo/sumo_command_line.hpp"
+#include "session/sumo_command_line.hpp"
 
 namespace signalsim::sumo {
 namespace {

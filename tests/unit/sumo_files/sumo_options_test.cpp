@@ -2,7 +2,7 @@
 // relative output paths into --out, relative inputs from their file's folder, gui-only ones dropped.
 #include <gtest/gtest.h>
 
-#include "sumo/sumo_options.hpp"
+#include "net/sumo_options.hpp"
 
 namespace signalsim::sumo {
 namespace {

@@ -4,8 +4,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "sumo/net_index.hpp"
-#include "sumo/sumocfg.hpp"
+#include "net/net_index.hpp"
+#include "net/sumocfg.hpp"
 #include "temp_dir.hpp"
 
 namespace signalsim::sumo {

@@ -1,7 +1,7 @@
 // SUMO link states -> the signal elements the judge reads (docs/behaviour.md §S3).
 #include <gtest/gtest.h>
 
-#include "sumo/approach_lights.hpp"
+#include "route/approach_lights.hpp"
 
 namespace signalsim::sumo {
 namespace {

@@ -1,10 +1,10 @@
-// The room of a lane change and whether it fits (sumo/lane_change_room.hpp): the one rule the lane
+// The room of a lane change and whether it fits (route/lane_change_room.hpp): the one rule the lane
 // plan and the lateral planner share. Numbers of bologna_acosta's edges (issue 11).
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "sumo/lane_change_room.hpp"
+#include "route/lane_change_room.hpp"
 
 namespace signalsim::sumo {
 namespace {

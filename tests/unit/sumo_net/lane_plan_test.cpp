@@ -3,7 +3,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "sumo/lane_plan.hpp"
+#include "route/lane_plan.hpp"
 
 namespace signalsim::sumo {
 namespace {

@@ -1,4 +1,4 @@
-// The loading rule (sumo/net_index.hpp): whatever SUMO 1.15 loads, NetIndex loads; a defect in an
+// The loading rule (net/net_index.hpp): whatever SUMO 1.15 loads, NetIndex loads; a defect in an
 // element is recorded with its line, and refuses only a route that uses the element, with one
 // message naming the element and the reason. The nets are tests/data/nets/line.net.xml (ab -> bc ->
 // cb; ab_0 reaches bc_1, cb_0 reaches bc_0) and crossing.net.xml with one attribute changed, and the
@@ -6,8 +6,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "sumo/net_index.hpp"
-#include "sumo/route_builder.hpp"
+#include "net/net_index.hpp"
+#include "route/route_builder.hpp"
 #include "test_files.hpp"
 
 namespace signalsim::sumo {

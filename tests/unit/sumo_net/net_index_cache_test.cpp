@@ -1,6 +1,6 @@
-// NetIndexCache (sumo/net_index_cache.hpp): one index per net and process while the file is
+// NetIndexCache (net/net_index_cache.hpp): one index per net and process while the file is
 // unchanged; a file of another size or modification time is read again; a bad file is not cached.
-#include "sumo/net_index_cache.hpp"
+#include "net/net_index_cache.hpp"
 
 #include <gtest/gtest.h>
 

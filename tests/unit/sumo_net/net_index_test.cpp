@@ -1,5 +1,5 @@
 // NetIndex::load on nets built by netconvert 1.15 (tests/data/nets) and on small hand-written files.
-#include "sumo/net_index.hpp"
+#include "net/net_index.hpp"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

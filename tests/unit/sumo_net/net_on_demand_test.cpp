@@ -1,4 +1,4 @@
-// Reading on demand (sumo/net_index.hpp): whatever order the lookups come in, every answer (edges,
+// Reading on demand (net/net_index.hpp): whatever order the lookups come in, every answer (edges,
 // lanes, connections, junctions, defects with their lines) is the one an index that read the whole
 // net in file order gives. Checked on every committed test net, the bundled real net bologna_acosta,
 // and variants of line.net.xml whose answers depend on the order of reading (repeated edge, lane
@@ -13,7 +13,7 @@
 #include <set>
 #include <sstream>
 
-#include "sumo/net_index.hpp"
+#include "net/net_index.hpp"
 #include "test_files.hpp"
 
 namespace signalsim::sumo {

@@ -1,5 +1,5 @@
 // build_route on nets built by netconvert 1.15 (tests/data/nets; sources and build.sh there).
-#include "sumo/route_builder.hpp"
+#include "route/route_builder.hpp"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

@@ -5,8 +5,8 @@
 
 #include <optional>
 
-#include "sumo/approach_lights.hpp"
-#include "sumo/signal_timing.hpp"
+#include "route/approach_lights.hpp"
+#include "session/signal_timing.hpp"
 
 namespace signalsim::sumo {
 namespace {

@@ -1,4 +1,4 @@
-// The start-tag scan (sumo/xml_tag_scan.hpp) against pugixml, whose parse it stands in for on
+// The start-tag scan (net/xml_tag_scan.hpp) against pugixml, whose parse it stands in for on
 // demand: the tags it reports, the texts it declines, attribute values decoded as pugixml decodes
 // them, and, over thousands of damaged copies of a real net, that a text it accepts is one pugixml
 // parses, with the same elements at the same offsets.
@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "sumo/xml_tag_scan.hpp"
+#include "net/xml_tag_scan.hpp"
 #include "test_files.hpp"
 
 namespace signalsim::sumo {

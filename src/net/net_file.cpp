@@ -1,0 +1,90 @@
+#include "net/net_file.hpp"
+
+#include <zlib.h>
+
+#include <algorithm>
+#include <array>
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <memory>
+
+#include "net/net_index.hpp"
+
+namespace signalsim::sumo {
+namespace {
+
+[[noreturn]] void fail(const std::string& path, const std::string& reason) {
+  throw NetError(path + ": " + reason);
+}
+
+bool has_gzip_magic(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::array<char, 2> magic{};
+  if (!in.read(magic.data(), magic.size())) return false;  // shorter than 2 bytes: not gzip
+  return static_cast<unsigned char>(magic[0]) == 0x1f && static_cast<unsigned char>(magic[1]) == 0x8b;
+}
+
+std::string read_plain(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) fail(path, std::string("cannot open file: ") + std::strerror(errno));
+  // One read of the size the file has (a char-by-char append would copy a 100 MB net several times
+  // as it grows); then whatever follows, should the file have grown meanwhile.
+  std::error_code ec;
+  const auto size = std::filesystem::file_size(path, ec);
+  std::string bytes(ec ? 0 : static_cast<std::size_t>(size), '\0');
+  in.read(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  bytes.resize(static_cast<std::size_t>(in.gcount()));
+  if (in) bytes.append(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  if (in.bad()) fail(path, "read error");
+  return bytes;
+}
+
+constexpr unsigned kChunk = 1u << 20;
+
+std::string read_gzip(const std::string& path) {
+  struct GzClose {
+    void operator()(gzFile_s* file) const { gzclose(file); }
+  };
+  std::unique_ptr<gzFile_s, GzClose> file(gzopen(path.c_str(), "rb"));
+  if (!file) fail(path, std::string("cannot open gzip file: ") + std::strerror(errno));
+  gzbuffer(file.get(), 1u << 17);
+
+  std::string bytes;
+  // Room for a net's usual inflation (about 6x) up front: growing copies the text each time. The
+  // pages are touched only as they are filled.
+  std::error_code ec;
+  const auto compressed = std::filesystem::file_size(path, ec);
+  if (!ec) bytes.reserve(static_cast<std::size_t>(std::min<std::uintmax_t>(compressed * 8 + kChunk, 1u << 30)));
+  for (;;) {
+    const std::size_t old_size = bytes.size();
+    bytes.resize(old_size + kChunk);
+    const int n = gzread(file.get(), bytes.data() + old_size, kChunk);
+    if (n < 0) {
+      int code = Z_OK;
+      const char* message = gzerror(file.get(), &code);
+      fail(path, std::string("corrupt gzip data: ") + (message != nullptr ? message : "unknown error"));
+    }
+    bytes.resize(old_size + static_cast<std::size_t>(n));
+    if (n == 0) break;
+  }
+  // A stream cut short reads as end of file; gzclose reports it (Z_BUF_ERROR).
+  const int closed = gzclose(file.release());
+  if (closed == Z_BUF_ERROR) fail(path, "corrupt gzip data: unexpected end of file");
+  if (closed != Z_OK) fail(path, "corrupt gzip data");
+  return bytes;
+}
+
+}  // namespace
+
+std::string read_net_file(const std::string& path) {
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  if (ec || !std::filesystem::exists(status)) fail(path, "no such file");
+  if (std::filesystem::is_directory(status)) fail(path, "is a directory, not a net file");
+  return has_gzip_magic(path) ? read_gzip(path) : read_plain(path);
+}
+
+}  // namespace signalsim::sumo

@@ -1,0 +1,333 @@
+// The TraCI back-ends, through libtraci (the libsumo API over a socket, docs/behaviour.md §S1):
+//   gui      signalsim starts sumo-gui on a free 127.0.0.1 port (--start --quit-on-end), connects,
+//            colours the ego and tracks it in the view, and stops the program by its PID at the end;
+//   connect  signalsim attaches to a SUMO someone else started with --remote-port and --num-clients,
+//            takes its place in the stepping order (setOrder), checks the step length, and at the end
+//            closes only its own connection: the simulation goes on for the other clients.
+#include <algorithm>
+#include <chrono>
+#include <csignal>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+#include <netdb.h>
+#include <unistd.h>
+
+#include <libsumo/libtraci.h>
+
+#include "session/session_factory.hpp"
+#include "session/interruption.hpp"
+#include "session/session_impl.hpp"
+#include "session/sumo_command_line.hpp"
+#include "session/sumo_process.hpp"
+
+namespace signalsim::sumo {
+namespace {
+
+struct LibtraciApi {
+  using Simulation = libtraci::Simulation;
+  using Vehicle = libtraci::Vehicle;
+  using VehicleType = libtraci::VehicleType;
+  using Route = libtraci::Route;
+  using Lane = libtraci::Lane;
+  using Edge = libtraci::Edge;
+  using TrafficLight = libtraci::TrafficLight;
+  // One subscribed answer a step instead of a round trip a variable (session_impl.hpp).
+  static constexpr bool kSubscribes = true;
+};
+
+constexpr const char* kView = "View #0";
+constexpr double kGuiStartTimeout = 30.0;  // [s] for sumo-gui to load the net and listen
+constexpr double kGuiZoom = 1500.0;        // [%] about 60 m across the view: the ego and its blinkers
+
+// Whether the user's options already give `name` (SUMO refuses an option given twice).
+bool gives_option(const std::vector<std::string>& args, const std::string& name) {
+  return std::find(args.begin(), args.end(), "--" + name) != args.end();
+}
+
+double parse_number(const std::string& text) {
+  try {
+    return std::stod(text);
+  } catch (const std::exception&) {
+    return 0.0;
+  }
+}
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+std::string endpoint(const BackendOptions& b) { return b.host + ":" + std::to_string(b.port); }
+
+constexpr unsigned kHandshakeTimeout = 10;  // [s] for a server to answer TraCI's first commands
+
+// One connection attempt (libtraci's own retries print to stdout and wait 1 s each).
+bool try_connect(int port, const std::string& host) {
+  try {
+    libtraci::Simulation::init(port, 0, host);
+    return true;
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
+// Whether `host` has an address (a name lookup, no connection).
+bool resolves(const std::string& host) {
+  addrinfo* found = nullptr;
+  const int status = getaddrinfo(host.c_str(), nullptr, nullptr, &found);
+  if (found != nullptr) freeaddrinfo(found);
+  return status == 0;
+}
+
+// While it lives, blocking socket calls give up after `seconds` (SIGALRM without SA_RESTART makes
+// recv() return EINTR, which libtraci turns into an exception): a port that accepts but never speaks
+// TraCI must not hang the run.
+class HandshakeDeadline {
+ public:
+  explicit HandshakeDeadline(unsigned seconds) {
+    struct sigaction action {};
+    action.sa_handler = [](int) {};
+    sigemptyset(&action.sa_mask);
+    action.sa_flags = 0;
+    sigaction(SIGALRM, &action, &previous_);
+    alarm(seconds);
+  }
+  ~HandshakeDeadline() {
+    alarm(0);
+    sigaction(SIGALRM, &previous_, nullptr);
+  }
+  HandshakeDeadline(const HandshakeDeadline&) = delete;
+  HandshakeDeadline& operator=(const HandshakeDeadline&) = delete;
+
+ private:
+  struct sigaction previous_ {};
+};
+
+class TraciSession final : public SessionImpl<LibtraciApi> {
+ public:
+  explicit TraciSession(const SessionConfig& config) : SessionImpl<LibtraciApi>(config) {
+    // A server that goes away must be an error of the call that noticed it, not a SIGPIPE death.
+    std::signal(SIGPIPE, SIG_IGN);
+    if (config.backend.kind == BackendKind::Gui) start_gui();
+    else attach();
+    connected_ = true;
+  }
+
+  ~TraciSession() override {
+    if (connected_) {
+      // connect: the simulation goes on for the other clients, without signalsim's ego
+      if (config_.backend.kind == BackendKind::Connect) release_ego();
+      try {
+        libtraci::Simulation::close();  // connect: only this client leaves; gui: sumo-gui quits
+      } catch (...) {  // a lost connection: nothing left to close
+      }
+    }
+    if (gui_) gui_->wait_for_exit(5.0);  // then ~SumoProcess stops it by its PID
+  }
+
+  BackendKind backend() const override { return config_.backend.kind; }
+  std::vector<std::pair<std::string, std::string>> server_options() const override { return server_options_; }
+  using SessionImpl<LibtraciApi>::insert_ego;
+
+ protected:
+  std::string failure_reason(const std::exception& e) const override {
+    std::string reason = e.what();
+    // SUMO answered with an error (TraCIException): a refusal, not a lost connection.
+    const bool refused = dynamic_cast<const libsumo::TraCIException*>(&e) != nullptr;
+    if (config_.backend.kind == BackendKind::Connect && !refused)
+      reason = "the connection to SUMO at " + endpoint(config_.backend) + " failed or was lost: " + reason;
+    if (gui_ && !gui_->running()) {
+      const std::string said = gui_error();
+      reason = "sumo-gui ended" + (said.empty() ? std::string() : ": " + said);
+    }
+    return reason;
+  }
+
+  void on_ego_departed() override {
+    if (config_.backend.kind != BackendKind::Gui) return;
+    libtraci::Vehicle::setColor(ego_, libsumo::TraCIColor(255, 0, 255, 255));  // magenta: easy to find
+    libtraci::GUI::trackVehicle(kView, ego_);
+    libtraci::GUI::setZoom(kView, kGuiZoom);
+    shots_left_ = kShotsPerPicture;  // the view at departure, replaced by the one at the first blinker
+  }
+
+  void on_command(int signal_mask) override {
+    if (config_.backend.kind != BackendKind::Gui) return;
+    if (!blinker_seen_ && (signal_mask & kBlinkerMask) != 0) {
+      blinker_seen_ = true;
+      shots_left_ = kShotsPerPicture;
+    }
+    if (shots_left_ > 0) take_screenshot();
+  }
+
+  // sumo-gui draws in its own thread, after the step: the simulation waits until the picture of
+  // this step is written, so that it shows the ego where it is (a fast run would be far ahead).
+  void on_stepped() override {
+    if (!screenshot_pending_) return;
+    screenshot_pending_ = false;
+    --shots_left_;
+    const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(5);
+    std::uintmax_t previous = 0;
+    while (std::chrono::steady_clock::now() < until) {
+      std::error_code missing;
+      const std::uintmax_t size = std::filesystem::file_size(config_.backend.screenshot, missing);
+      if (!missing && size > 0 && size == previous) return;  // written, and no longer growing
+      previous = missing ? 0 : size;
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    throw SumoError("sumo-gui did not write the screenshot " + config_.backend.screenshot + " within 5 s");
+  }
+
+ private:
+  void take_screenshot() {
+    if (config_.backend.screenshot.empty()) return;
+    std::error_code ignored;
+    std::filesystem::remove(config_.backend.screenshot, ignored);  // on_stepped waits for the new one
+    try {
+      libtraci::GUI::screenshot(kView, config_.backend.screenshot);  // written when the step is drawn
+    } catch (const std::exception& e) {
+      throw SumoError("sumo-gui refused a screenshot: " + failure_reason(e));
+    }
+    screenshot_pending_ = true;
+  }
+
+  void start_gui() {
+    const char* display = std::getenv("DISPLAY");
+    if (display == nullptr || *display == '\0')
+      throw SumoError("--gui needs a display, and DISPLAY is not set (run it on a desktop, or under xvfb-run)");
+    const int port = free_local_port();
+    std::vector<std::string> argv = sumo_command_line(config_, config_.backend.sumo_gui_binary);
+    // SUMO 1.15 waits --delay x step length between steps: --gui-delay MS is per step.
+    const double delay = config_.backend.gui_delay_ms / config_.step_length;
+    argv.insert(argv.end(), {"--remote-port", std::to_string(port), "--start", "true", "--quit-on-end", "true",
+                             "--delay", exact_number(delay)});
+    if (!gives_option(config_.extra_args, "window-size")) argv.insert(argv.end(), {"--window-size", "1024,768"});
+    gui_output_.path = (std::filesystem::temp_directory_path() /
+                        ("signalsim-gui-" + std::to_string(getpid()) + "-" + std::to_string(port) + ".txt")).string();
+    try {
+      gui_ = std::make_unique<SumoProcess>(argv, gui_output_.path);
+    } catch (const std::exception& e) {
+      throw SumoError(std::string("--gui: ") + e.what());
+    }
+    const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(kGuiStartTimeout);
+    while (!try_connect(port, "127.0.0.1")) {
+      throw_if_interrupted();
+      if (!gui_->running()) {
+        const std::string said = gui_error();
+        throw SumoError("sumo-gui could not start" + (said.empty() ? std::string() : ": " + said));
+      }
+      if (std::chrono::steady_clock::now() >= until)
+        throw SumoError("sumo-gui did not accept a TraCI connection on port " + std::to_string(port) + " within " +
+                        std::to_string(static_cast<int>(kGuiStartTimeout)) + " s");
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
+    // Another program could have taken the port between free_local_port() and sumo-gui's bind: then
+    // our sumo-gui has ended and the connection is someone else's.
+    if (!gui_->running()) throw SumoError("sumo-gui could not start: " + gui_error());
+  }
+
+  // sumo-gui's first error: what it printed, else (with --log) its log file.
+  std::string gui_error() const {
+    std::string said = first_error_line(gui_->output());
+    if (said.empty() && !config_.log_file.empty()) said = first_error_line(read_text(config_.log_file));
+    return said;
+  }
+
+  void attach() {
+    const BackendOptions& b = config_.backend;
+    // A few quick attempts: a server that was just started may not listen yet.
+    bool connected = false;
+    for (int attempt = 0; attempt < 5 && !connected; ++attempt) {
+      throw_if_interrupted();
+      if (attempt > 0) std::this_thread::sleep_for(std::chrono::milliseconds(200));
+      const auto started = std::chrono::steady_clock::now();
+      {
+        const HandshakeDeadline deadline(kHandshakeTimeout);  // init waits for SUMO's version answer
+        connected = try_connect(b.port, b.host);
+      }
+      // A refused connection fails at once; one that took long was accepted but never answered.
+      if (!connected && std::chrono::steady_clock::now() - started > std::chrono::seconds(1))
+        throw SumoError("something at " + endpoint(b) + " accepted the connection but did not answer TraCI within " +
+                        std::to_string(kHandshakeTimeout) + " s (is it a SUMO started with --remote-port?)");
+    }
+    // libtraci's own message after a failed connect is about its clean-up ("send failed: Broken
+    // pipe"), not the cause: name the cause that can be told without connecting (a probe connection
+    // would take one of the server's client places).
+    if (!connected && !resolves(b.host))
+      throw SumoError("cannot connect to SUMO at " + endpoint(b) + ": host '" + b.host + "' not found");
+    if (!connected)
+      throw SumoError("cannot connect to SUMO at " + endpoint(b) + ": connection refused or host unreachable (start "
+                      "it with: sumo -c FILE.sumocfg --remote-port " + std::to_string(b.port) + " --num-clients N)");
+    try {
+      const HandshakeDeadline deadline(kHandshakeTimeout);
+      try {
+        libtraci::Simulation::setOrder(b.client_order);
+      } catch (const std::exception& e) {
+        throw SumoError("SUMO at " + endpoint(b) + " refused client order " + std::to_string(b.client_order) + ": " +
+                        e.what());
+      }
+      const double server_step = delta_t();
+      if (std::abs(server_step - config_.step_length) > 1e-9)
+        throw SumoError("the scenario's step_length " + short_number(config_.step_length) +
+                        " s differs from the step length of SUMO at " + endpoint(b) + ", " +
+                        short_number(server_step) + " s (Simulation::getDeltaT)");
+      for (const char* option : {"net-file", "route-files", "additional-files", "seed", "collision.action",
+                                 "time-to-teleport", "lateral-resolution"})
+        server_options_.emplace_back(option, libtraci::Simulation::getOption(option));
+      // Lateral motion needs SUMO's sublane model, which only the server's start can switch on.
+      if (config_.lateral_resolution > 0.0 &&
+          !(parse_number(libtraci::Simulation::getOption("lateral-resolution")) > 0.0))
+        throw SumoError("the scenario drives lateral motion (a lane change or another maneuver), which needs "
+                        "SUMO's sublane model: start SUMO at " + endpoint(b) + " with --lateral-resolution " +
+                        short_number(config_.lateral_resolution));
+    } catch (const SumoError&) {
+      leave();
+      throw;
+    } catch (const std::exception& e) {
+      leave();
+      throw SumoError("SUMO at " + endpoint(b) + " did not answer TraCI within " + std::to_string(kHandshakeTimeout) +
+                      " s, or dropped the connection (" + e.what() + ")");
+    }
+  }
+
+  static void leave() noexcept {
+    try {
+      libtraci::Simulation::close();  // leave politely: the other clients go on
+    } catch (...) {
+    }
+  }
+  // sumo-gui's own output (read for its first error line), removed after the process is stopped.
+  struct TempFile {
+    std::string path;
+    ~TempFile() {
+      std::error_code ignored;
+      if (!path.empty()) std::filesystem::remove(path, ignored);
+    }
+  };
+  TempFile gui_output_;             // destroyed after gui_ (declared before it)
+  std::unique_ptr<SumoProcess> gui_;
+  bool connected_ = false;
+  std::vector<std::pair<std::string, std::string>> server_options_;  // connect: as the server reports them
+  // A busy sumo-gui may draw the first frame after a view change without the vehicles: each picture
+  // is taken on two consecutive steps, the second one kept.
+  static constexpr int kShotsPerPicture = 2;
+  int shots_left_ = 0;
+  bool blinker_seen_ = false;
+  bool screenshot_pending_ = false;
+};
+
+}  // namespace
+
+std::unique_ptr<SumoSession> open_traci_session(const SessionConfig& config) {
+  auto session = std::make_unique<TraciSession>(config);
+  session->insert_ego();
+  return session;
+}
+
+}  // namespace signalsim::sumo
