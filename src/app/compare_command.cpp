@@ -22,6 +22,7 @@
 #include "app/batch_cli.hpp"
 #include "app/command.hpp"
 #include "app/strict_params_flag.hpp"
+#include "batch/child_process.hpp"
 #include "batch/comparison.hpp"
 #include "app/plot_tool.hpp"
 #include "batch/worker_pool.hpp"

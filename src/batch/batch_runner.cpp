@@ -9,7 +9,7 @@
 
 #include "batch/batch_manifest.hpp"
 #include "batch/batch_progress.hpp"
-#include "batch/process_pool.hpp"
+#include "batch/child_process.hpp"
 #include "batch/results_file.hpp"
 #include "batch/run_outputs.hpp"
 #include "batch/run_row_file.hpp"

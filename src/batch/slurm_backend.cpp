@@ -7,7 +7,7 @@
 
 #include "batch/batch_progress.hpp"
 #include "batch/interrupt_guard.hpp"
-#include "batch/process_pool.hpp"
+#include "batch/child_process.hpp"
 #include "batch/program_output.hpp"
 #include "batch/run_outputs.hpp"
 #include "batch/run_rows.hpp"
