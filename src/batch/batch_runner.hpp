@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "batch/batch_manifest.hpp"
+#include "batch/batch_progress.hpp"
 #include "batch/results_file.hpp"
 #include "batch/results_table.hpp"
 #include "batch/run_rows.hpp"
@@ -81,6 +82,14 @@ struct BatchStart {
 /// row files, run_row_file.hpp) on --resume, writes OUT/batch.manifest and results.csv with the kept
 /// rows, removes the run directories of the runs still to run. Throws like run_batch.
 BatchStart start_batch(const std::vector<RunSpec>& runs, const BatchSettings& settings);
+
+/// The batch's run directories by run index: run_dir_name of each run.
+std::vector<std::string> run_dir_names(const std::vector<RunSpec>& runs);
+
+/// What every back-end does after start_batch: "resuming: K of N runs already done, M to run"
+/// (unless quiet or nothing was kept), the progress output over the runs still to run, and the
+/// error rows of the scenario files that did not load, through it.
+BatchProgress begin_progress(BatchStart& batch, const BatchSettings& settings);
 
 /// Runs `runs` in worker processes (`signalsim run ... --out OUT/RUN_DIR`), at most settings.jobs at
 /// a time with settings.timeout each; hands every finished run's row to `on_row` as it ends, calls
