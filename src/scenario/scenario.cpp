@@ -1,7 +1,8 @@
 // Loading a scenario file: the overrides applied to its YAML tree, then each part read through its
 // key table (scenario_keys.hpp) in a fixed order - the simulation keys, the ego, obstacles and
 // maneuvers, the traffic-light inputs, parameters (kept by name and typed), expectations - and last
-// the check that the top level holds no other key. The decider's and modules' parameters with the ego's footprint.
+// the check that the top level holds no other key. Also the decider's and the behaviour modules'
+// parameters with the ego's footprint.
 #include "scenario/scenario.hpp"
 
 #include "scenario/countries.hpp"
@@ -83,7 +84,8 @@ TurnSignalParameters turn_signal_parameters(const Scenario& scenario) {
 }
 
 BehaviorSignalParameters behavior_parameters(const Scenario& scenario) {
-  BehaviorSignalParameters p = behavior_signal_parameters(turn_signal_parameters(scenario), scenario.run_params.behavior);
+  BehaviorSignalParameters p =
+      behavior_signal_parameters(turn_signal_parameters(scenario), scenario.run_params.behavior);
   p.rear_overhang = scenario.ego.length - scenario.ego.base_link_to_front;
   p.vehicle_width = kObstacleWidth;
   return p;
