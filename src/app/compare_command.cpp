@@ -70,7 +70,7 @@ std::vector<Checked> check_scenarios(const std::vector<std::string>& files, cons
     c.file = file;
     c.comparison.scenario = scenario.name;
     c.comparison.base_link_to_front = planned.scenario.ego.base_link_to_front;
-    c.comparison.items = compared_items(planned.plan.map, planned.scenario.params);
+    c.comparison.items = compared_items(planned.plan.map, planned.scenario.run_params.decider);
     out.push_back(std::move(c));
   }
   return out;

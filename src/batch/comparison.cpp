@@ -162,7 +162,7 @@ std::string padded(std::string text, std::size_t width) {
 
 }  // namespace
 
-std::vector<ComparedItem> compared_items(const RouteMap& route, const ParameterSet& params) {
+std::vector<ComparedItem> compared_items(const RouteMap& route, const TurnSignalParameters& params) {
   std::vector<ComparedItem> out;
   std::map<std::string, int> counters;
   for (const SignalSection& s : signal_sections(route, params))

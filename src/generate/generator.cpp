@@ -31,7 +31,7 @@ ParameterSet resolved_parameters(const std::string& country) {
   }
   // docs/behaviour.md §T5.2: with persistence the entry request lasts to the exit's end; the rules here do
   // not model that (no preset sets it).
-  if (params.boolean("turn_signal_roundabout_entry_indicator_persistence"))
+  if (run_parameters(params).decider.turn_signal_roundabout_entry_indicator_persistence)
     throw GenerateError("--country " + country +
                         ": turn_signal_roundabout_entry_indicator_persistence is true, which generate does not model");
   return params;

@@ -31,6 +31,7 @@ Scenario planning_scenario(const std::string& path, const std::string& net_path,
   s.net = net_path;
   s.country = o.country;
   s.params = params;
+  s.run_params = run_parameters(params);
   s.ego.route = edges;
   s.ego.max_speed = o.max_speed;
   s.ego.length = o.length;
@@ -119,7 +120,8 @@ std::optional<RouteScenario> route_scenario(const sumo::NetIndex& net, const std
     rejection.reason = "a light never lets the route's link go";
     return std::nullopt;
   }
-  const double v0 = depart_speed(route, facts.lights, params.number("stop_margin"), o);
+  const RunParameters& typed = planning.run_params;
+  const double v0 = depart_speed(route, facts.lights, typed.judge.stop_margin, o);
   const SpeedLimits limits{o.max_speed, o.accel, o.decel};
   // Stop zones from the planned speed without stops (the ego is no faster than that).
   const SpeedProfile free_run(route, 0.0, v0, limits, kStepLength, {});
@@ -131,14 +133,14 @@ std::optional<RouteScenario> route_scenario(const sumo::NetIndex& net, const std
   const SpeedProfile speed(route, 0.0, v0, limits, kStepLength, stops);
 
   SectionParameters section_params;
-  section_params.intersection_search_distance = params.number("turn_signal_intersection_search_distance");
-  section_params.roundabout_search_distance = params.number("turn_signal_roundabout_search_distance");
-  section_params.on_entry = params.text("turn_signal_roundabout_on_entry");
-  section_params.on_exit = params.text("turn_signal_roundabout_on_exit");
+  section_params.intersection_search_distance = typed.decider.turn_signal_intersection_search_distance;
+  section_params.roundabout_search_distance = typed.decider.turn_signal_roundabout_search_distance;
+  section_params.on_entry = typed.decider.turn_signal_roundabout_on_entry;
+  section_params.on_exit = typed.decider.turn_signal_roundabout_on_exit;
   const std::vector<Section> sections = route_sections(route, section_params, facts.lane_changes);
   RuleParameters rules;
-  rules.search_time = params.number("turn_signal_search_time");
-  rules.minimum_search_distance = params.number("turn_signal_minimum_search_distance");
+  rules.search_time = typed.decider.turn_signal_search_time;
+  rules.minimum_search_distance = typed.decider.turn_signal_minimum_search_distance;
   rules.base_link_to_front = o.base_link_to_front;
   rules.straight = o.straight;
   RouteFacts route_facts_for_rules{0.0, route.length(), facts.lights};
@@ -187,7 +189,7 @@ std::optional<RouteScenario> route_scenario(const sumo::NetIndex& net, const std
               ": search " + fixed(rules.search_time) + " s x v + " + fixed(section_params.intersection_search_distance) +
               " m (turns), + " + fixed(section_params.roundabout_search_distance) + " m (roundabout entries); entry " +
               section_params.on_entry + ", exit " + section_params.on_exit + "; exit signal from the previous exit: " +
-              (params.boolean("turn_signal_roundabout_exit_signal_from_previous_exit") ? "yes" : "no"));
+              (typed.decider.turn_signal_roundabout_exit_signal_from_previous_exit ? "yes" : "no"));
   h.push_back("Ego: " + fixed(o.length) + " m, front " + fixed(o.base_link_to_front) + " m ahead of base_link, at most " +
               fixed(o.max_speed, 2) + " m/s, accel/decel " + fixed(o.accel) + "/" + fixed(o.decel) +
               " m/s^2; departs at s 0 on " + route.at(0).lane_id + " at " + fixed(v0) +

@@ -40,7 +40,7 @@ RunMetrics compute_metrics(const Scenario& scenario, const RouteMap& route, cons
   m.flickers = count_flickers(rows, scenario.step_length);
 
   // The route's sections and the maneuvers' lateral motions (front bumper at base_link's start), by start.
-  std::vector<SignalSection> sections = signal_sections(route, scenario.params);
+  std::vector<SignalSection> sections = signal_sections(route, scenario.run_params.decider);
   for (const ManeuverLine& line : record.maneuver_lines)
     sections.push_back({line.kind, line.id, line.blinker, line.s_start + record.base_link_to_front, line.s_end, {}});
   std::stable_sort(sections.begin(), sections.end(),

@@ -33,10 +33,10 @@ std::string id_of(const Lanelet& l) { return l.junction_id.empty() ? l.lane_id :
 
 }  // namespace
 
-std::vector<SignalSection> signal_sections(const RouteMap& route, const ParameterSet& params) {
+std::vector<SignalSection> signal_sections(const RouteMap& route, const TurnSignalParameters& params) {
   std::vector<SignalSection> out;
-  const Blinker on_entry = blinker_of_parameter(params.text("turn_signal_roundabout_on_entry"));
-  const Blinker on_exit = blinker_of_parameter(params.text("turn_signal_roundabout_on_exit"));
+  const Blinker on_entry = blinker_of_parameter(params.turn_signal_roundabout_on_entry);
+  const Blinker on_exit = blinker_of_parameter(params.turn_signal_roundabout_on_exit);
   for (std::size_t i = 0; i < route.size(); ++i) {
     const Lanelet& l = route.at(i);
     if (l.roundabout_role == RoundaboutRole::Entry || l.roundabout_role == RoundaboutRole::Exit) {

@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "map/route_map.hpp"
-#include "scenario/parameters.hpp"
+#include "turn_signal/turn_signal_parameters.hpp"
 #include "scenario/scenario.hpp"  // Blinker
 
 namespace signalsim {
@@ -33,6 +33,6 @@ struct SignalSection {
 };
 
 /// The route's signal sections in route order. `params` gives the roundabout on_entry/on_exit.
-std::vector<SignalSection> signal_sections(const RouteMap& route, const ParameterSet& params);
+std::vector<SignalSection> signal_sections(const RouteMap& route, const TurnSignalParameters& params);
 
 }  // namespace signalsim

@@ -75,7 +75,7 @@ Blinker good_driver(double s) {
 }
 
 TEST(Metrics, SectionsComeFromTurnGroupsAndRoundaboutRoles) {
-  const auto sections = signal_sections(route(), ParameterSet());
+  const auto sections = signal_sections(route(), TurnSignalParameters());
   ASSERT_EQ(sections.size(), 3u);
   EXPECT_EQ(sections[0].kind, "turn");
   EXPECT_EQ(sections[0].id, "J");
