@@ -24,7 +24,8 @@ TEST(RoundaboutMetrics, EntryTaggedByItsExitEdgeExpectsTheTaggedBlinker) {
   const sumo::RoutePlan plan = plan_route(scenario, net);
   const RunRecord record = run_scenario(scenario, plan, net);
   ASSERT_TRUE(record.arrived);
-  for (const ExpectationResult& r : evaluate_expectations(scenario, plan.map, record)) EXPECT_TRUE(r.passed) << r.description << ": " << r.detail;
+  for (const ExpectationResult& r : evaluate_expectations(scenario, plan.map, record))
+    EXPECT_TRUE(r.passed) << r.description << ": " << r.detail;
 
   const nlohmann::ordered_json metrics = metrics_json(scenario, plan.map, record);
   ASSERT_EQ(metrics["sections"].size(), 2u) << metrics["sections"].dump(1);
