@@ -13,7 +13,7 @@
 #include "batch/run_outputs.hpp"
 #include "batch/run_row_file.hpp"
 #include "batch/run_rows.hpp"
-#include "batch/text_format.hpp"
+#include "core/number_text.hpp"
 #include "batch/worker_pool.hpp"
 #include "scenario/input_error.hpp"
 #include "report/atomic_file.hpp"

@@ -23,7 +23,7 @@ std::size_t column(const std::string& name) {
 }
 
 // A number as the other outputs write it: rounded to 1 mm, spelled as JSON ("189.6").
-std::string number_text(double v) { return Json(std::stod(fixed(v, 3))).dump(); }
+std::string number_text(double v) { return Json(as_written(v, 3)).dump(); }
 
 std::string cell_of(const Json& v) {
   if (v.is_null()) return "";
