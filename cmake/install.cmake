@@ -20,9 +20,11 @@ set_target_properties(signalsim PROPERTIES INSTALL_RPATH_USE_LINK_PATH TRUE)
 
 install(TARGETS signalsim RUNTIME DESTINATION ${SIGNALSIM_INSTALL_BINDIR})
 install(DIRECTORY config DESTINATION ${SIGNALSIM_INSTALL_DATADIR})
-# tools/plot (run --plot, sweep --plot, compare) and the python modules it imports.
-install(PROGRAMS tools/plot DESTINATION ${SIGNALSIM_INSTALL_DATADIR}/tools)
-install(DIRECTORY tools/plotting DESTINATION ${SIGNALSIM_INSTALL_DATADIR}/tools FILES_MATCHING PATTERN "*.py" PATTERN __pycache__ EXCLUDE)
+# The plot program (run --plot, sweep --plot, compare --plot) and its package, product beside the
+# binary: python/ of the source tree is python/ of the data directory (src/app/plot_tool.cpp).
+install(PROGRAMS python/signalsim-plot DESTINATION ${SIGNALSIM_INSTALL_DATADIR}/python)
+install(DIRECTORY python/signalsim_plot DESTINATION ${SIGNALSIM_INSTALL_DATADIR}/python
+        FILES_MATCHING PATTERN "*.py" PATTERN __pycache__ EXCLUDE)
 # The bundled suite and its nets (scenarios name ../config and ../sumo_nets). scenarios/sweeps is
 # left out: its sweep names the test data (tests/data), which is not installed.
 install(DIRECTORY scenarios DESTINATION ${SIGNALSIM_INSTALL_DATADIR} PATTERN sweeps EXCLUDE)

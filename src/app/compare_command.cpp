@@ -1,6 +1,6 @@
 // `signalsim compare PATH... --out DIR` (docs/compare.md): every scenario twice on the same route and traffic,
 // driven by signalsim and by SUMO on its own (run --driver sumo), then OUT/comparison.csv, the
-// picture OUT/comparison.png (tools/plot) and a one-screen summary.
+// picture OUT/comparison.png (signalsim-plot) and a one-screen summary.
 //
 //   check    every scenario is loaded and its route planned, no SUMO (bad input: one line, exit 2,
 //            nothing written; a comparison.csv/png left in OUT by an earlier compare is removed)
@@ -8,7 +8,7 @@
 //            --set values), at most --jobs at a time, each with the wall-clock --timeout
 //   table    app/comparison: one row per section or light and driver; a run that did not finish
 //            gives error rows
-//   picture  tools/plot OUT/comparison.csv --out OUT
+//   picture  signalsim-plot OUT/comparison.csv --out OUT
 // Exit codes: 0 every run finished and no signalsim run failed an expectation (the SUMO runs'
 // expectation results are reported, not judged: they measure SUMO against the decider's law),
 // 1 a signalsim run failed or any run errored, 2 bad input, 3 the runs were fine but the picture

@@ -53,7 +53,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     return report_bad_input(std::string(e.what()) + " (see 'signalsim --help')");
   }
-  // The data (presets, tools/plot) is looked for once, before any command: a broken installation is
+  // The data (presets, signalsim-plot) is looked for once, before any command: a broken installation is
   // one line and exit 2, not a failure in the middle of a batch.
   if (const signalsim::DataDirLookup& data = signalsim::find_data_dir(); data.path.empty())
     return report_bad_input(data.where + ": " + data.reason);

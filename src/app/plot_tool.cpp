@@ -1,4 +1,4 @@
-// tools/plot: where it is ($SIGNALSIM_PLOT_TOOL or the data directory) and running it; see plot_tool.hpp.
+// signalsim-plot: where it is ($SIGNALSIM_PLOT_TOOL or the data directory's python/) and running it; see plot_tool.hpp.
 #include "app/plot_tool.hpp"
 
 #include <cstdio>
@@ -12,7 +12,7 @@ namespace signalsim::app {
 
 std::string plot_tool_path() {
   if (const char* env = std::getenv("SIGNALSIM_PLOT_TOOL"); env && *env) return env;
-  return (std::filesystem::path(data_dir()) / "tools" / "plot").string();
+  return (std::filesystem::path(data_dir()) / "python" / "signalsim-plot").string();
 }
 
 int run_plot_tool(const std::vector<std::string>& args) {

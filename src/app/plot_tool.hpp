@@ -1,4 +1,4 @@
-// tools/plot (Python, matplotlib): where it is and how to call it.
+// signalsim-plot (Python, matplotlib): where it is and how to call it.
 #pragma once
 
 #include <string>
@@ -6,10 +6,10 @@
 
 namespace signalsim::app {
 
-/// $SIGNALSIM_PLOT_TOOL, else the data directory's tools/plot (scenario/data_dir.hpp).
+/// $SIGNALSIM_PLOT_TOOL, else the data directory's python/signalsim-plot (scenario/data_dir.hpp).
 std::string plot_tool_path();
 
-/// Runs `tools/plot ARGS...` in the foreground. Returns its exit code (127: could not start).
+/// Runs `signalsim-plot ARGS...` in the foreground. Returns its exit code (127: could not start).
 /// Prints "signalsim: plotting failed ..." on stderr when it fails.
 int run_plot_tool(const std::vector<std::string>& args);
 

@@ -40,7 +40,7 @@ struct RunOptions {
   std::string connect;         ///< HOST:PORT of a SUMO someone else started
   int client_order = -1;       ///< -1: not given
   bool quiet = false;
-  bool plot = false;  ///< draw the run's pictures with tools/plot afterwards
+  bool plot = false;  ///< draw the run's pictures with signalsim-plot afterwards
   std::string driver = "signalsim";  ///< who drives the ego: signalsim, or sumo (observed only)
 };
 
@@ -159,7 +159,7 @@ Command add_run_command(CLI::App& app) {
                   "(turn_signal_search_time=2.5); repeatable");
   sub->add_flag("--quiet", options->quiet, "Print nothing on success");
   add_strict_params_flag(sub, options->overrides.set);
-  sub->add_flag("--plot", options->plot, "Draw PNGs of the run into OUT/plots with tools/plot");
+  sub->add_flag("--plot", options->plot, "Draw PNGs of the run into OUT/plots with signalsim-plot");
   sub->add_option("--driver", options->driver,
                   "Who drives the ego: signalsim (its decider, judge and planners) or sumo (SUMO's own blinker, "
                   "lights and lane changes, observed only)")

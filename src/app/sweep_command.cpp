@@ -27,7 +27,7 @@ Command add_sweep_command(CLI::App& app) {
   CLI::App* sub = app.add_subcommand("sweep", "Run a sweep file: scenarios x grid x zipped values; results.csv");
   sub->add_option("file", o->file, "Sweep file (YAML, see docs/batch.md)")->required();
   add_batch_options(sub, o->batch, "the file's out:, else out/<sweep name>", true);
-  sub->add_flag("--plot", o->plot, "Draw the file's plot: (a heat map of a metric over two swept keys) with tools/plot");
+  sub->add_flag("--plot", o->plot, "Draw the file's plot: (a heat map of a metric over two swept keys) with signalsim-plot");
   sub->add_flag("--list", o->list, "Print the runs and exit without running them");
   add_backend_options(sub, o->backend);
   return {sub, [o]() -> int {
@@ -52,7 +52,7 @@ Command add_sweep_command(CLI::App& app) {
               if (!run.merged) return 0;  // --no-wait: submitted; --collect merges (and --plot draws) later
               const BatchResult& result = run.result;
               if (o->plot && !result.interrupted) {
-                // One picture per plot: entry (tools/plot's defaults without one).
+                // One picture per plot: entry (signalsim-plot's defaults without one).
                 const std::vector<SweepPlot> plots = sweep.plots.empty() ? std::vector<SweepPlot>{{}} : sweep.plots;
                 bool failed = false;
                 for (const SweepPlot& plot : plots) {

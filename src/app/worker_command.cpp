@@ -79,10 +79,10 @@ int serve() {
   if (fcntl(kWorkerReplyFd, F_GETFD) < 0)
     return report_bad_input("worker: batch, sweep, check and compare start their workers themselves "
                             "(file descriptor 3, for the replies, is not open)");
-  fcntl(kWorkerReplyFd, F_SETFD, FD_CLOEXEC);  // not for the programs a run starts (tools/plot)
+  fcntl(kWorkerReplyFd, F_SETFD, FD_CLOEXEC);  // not for the programs a run starts (signalsim-plot)
   sumo::install_interruption_handlers();        // also between runs: SIGTERM ends the worker cleanly
   // The requests move to a descriptor of their own, closed on exec, and stdin becomes /dev/null as
-  // in a process of its own (--isolate): a program a run starts (a TraCI sumo, tools/plot) must not
+  // in a process of its own (--isolate): a program a run starts (a TraCI sumo, signalsim-plot) must not
   // hold the request pipe open (the batch would not see this worker die) nor read its requests.
   const int requests = fcntl(STDIN_FILENO, F_DUPFD_CLOEXEC, 10);
   const int null = open("/dev/null", O_RDONLY | O_CLOEXEC);

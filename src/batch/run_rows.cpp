@@ -39,7 +39,7 @@ void read_summary(ResultRow& row, const RunSpec& run, const std::string& dir) {
     metrics = summary["metrics"];
   } else {
     // summary.json without "metrics" (written before outputs carried them): compute them here and
-    // leave them beside it as metrics.json, where tools/plot looks too.
+    // leave them beside it as metrics.json, where signalsim-plot looks too.
     try {
       metrics = metrics_from_run_dir(dir, run.scenario, run.set);
       write_file_atomically((fs::path(dir) / "metrics.json").string(), metrics.dump(2) + "\n");

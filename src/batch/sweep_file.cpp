@@ -130,7 +130,7 @@ void read_set(const YamlFields& top, const std::string& path, std::set<std::stri
   }
 }
 
-// plot: one mapping, or a list of them (one picture each). Checked here, not by tools/plot after
+// plot: one mapping, or a list of them (one picture each). Checked here, not by signalsim-plot after
 // every run finished; needs the swept keys read already.
 std::vector<SweepPlot> read_plots(const YamlFields& top, const std::string& path, const Sweep& s) {
   const YAML::Node node = top.node("plot");

@@ -52,7 +52,7 @@ const std::vector<std::string>& other_section_fields() {
   static const std::vector<std::string> fields = {"id", "blinker", "missed"};
   return fields;
 }
-// red_light_violation and emergency_stop are true/false: tools/plot shows the share of runs where
+// red_light_violation and emergency_stop are true/false: signalsim-plot shows the share of runs where
 // they are true (the outcome rates of a perception-fault sweep).
 const std::vector<std::string>& numeric_light_fields() {
   static const std::vector<std::string> fields = {"stop_position_error", "red_light_violation", "emergency_stop"};
@@ -129,7 +129,7 @@ void check_sweep_plot(const Sweep& sweep, const std::vector<RunSpec>& runs) {
 
 void check_plot_metric(const Sweep& sweep, const SweepPlot& plot, const std::vector<RunSpec>& runs) {
   const std::optional<MetricColumn> column = parse_metric_column(plot.metric);
-  if (!column) return;  // empty (tools/plot chooses) or a run-level column every run has
+  if (!column) return;  // empty (signalsim-plot chooses) or a run-level column every run has
   // Sections and lights per route, from the same code that computes the metrics (an empty record:
   // the route's sections and lights, no values). Maneuver sections belong to each run's scenario
   // and overrides (maneuvers, depart lane, shift threshold), so they are counted per run.

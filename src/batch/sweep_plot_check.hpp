@@ -20,7 +20,7 @@ namespace signalsim {
 std::string plot_metric_problem(const std::string& metric);
 
 /// Checks one plot's x and y against the sweep's swept keys: each is a swept key, `scenario` or
-/// empty (tools/plot chooses), and they differ. Throws InputError at the line of plot.x / plot.y.
+/// empty (signalsim-plot chooses), and they differ. Throws InputError at the line of plot.x / plot.y.
 void check_plot_axes(const Sweep& sweep, const SweepPlot& plot);
 
 /// Checks every plot's metric (check_plot_metric) before any run starts.

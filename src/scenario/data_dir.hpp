@@ -1,5 +1,5 @@
 // Where signalsim's run-time data is (config/ with the country presets and Autoware's defaults,
-// tools/plot and its python modules, the bundled scenarios and nets): found relative to the running
+// signalsim-plot and its python modules, the bundled scenarios and nets): found relative to the running
 // binary, never through a path of the build tree compiled in. docs/install.md explains the order.
 #pragma once
 

@@ -171,7 +171,7 @@ TEST(SweepPlot, AMetricNoRunsRouteHasIsRefusedBeforeAnyRun) {
                  "0 light)");
   EXPECT_EQ(check(turns, "roundabout_exit1.lead_distance").rfind(at + "no run's route has a roundabout_exit1", 0), 0u);
   EXPECT_EQ(check(turns, "light1.stop_position_error").rfind(at + "no run's route has a light1", 0), 0u);
-  // One scenario that has it is enough (tools/plot draws the scenarios that have the metric).
+  // One scenario that has it is enough (signalsim-plot draws the scenarios that have the metric).
   EXPECT_EQ(check(turns + ", " + roundabout, "roundabout_exit1.lead_distance"), "");
 }
 

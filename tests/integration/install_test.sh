@@ -2,7 +2,7 @@
 # cmake --install into a temporary prefix, then the installed binary alone, from another working
 # directory: it lists the presets of P/share/signalsim (or of $SIGNALSIM_DATA_DIR), runs a bundled
 # scenario with the same timeline and events as the build tree's binary, plots with the installed
-# tools/plot (when matplotlib is there), and a missing data dir is one line and exit 2.
+# python/signalsim-plot (when matplotlib is there), and a missing data dir is one line and exit 2.
 # usage: install_test.sh CMAKE_COMMAND BUILD_DIR SOURCE_DIR BUILD_TREE_SIGNALSIM
 set -u
 cmake=$1
@@ -19,18 +19,18 @@ prefix=$work/prefix
 bin=$prefix/bin/signalsim
 data=$prefix/share/signalsim
 [ -x "$bin" ] || fail "no executable $bin"
-for f in config/autoware_defaults.yaml config/countries/jp.yaml tools/plotting/cli.py \
+for f in config/autoware_defaults.yaml config/countries/jp.yaml python/signalsim_plot/cli.py \
          scenarios/intersection_left.yaml sumo_nets/cross/cross.net.xml; do
   [ -f "$data/$f" ] || fail "not installed: share/signalsim/$f"
 done
-[ -x "$data/tools/plot" ] || fail "share/signalsim/tools/plot is not executable"
+[ -x "$data/python/signalsim-plot" ] || fail "share/signalsim/python/signalsim-plot is not executable"
 [ -z "$(find "$prefix" -name __pycache__ -o -name 'signalsim-data-dir.txt')" ] || fail "stray files installed"
 # No path of the source or build tree's data is compiled into the binary.
 if command -v readelf > /dev/null; then
-  ! readelf -p .rodata "$bin" | grep -qF -e "$src/config" -e "$src/tools" -e "$build/" \
+  ! readelf -p .rodata "$bin" | grep -qF -e "$src/config" -e "$src/python" -e "$src/tools" -e "$build/" \
     || fail "a source or build tree path is compiled in: $(readelf -p .rodata "$bin" | grep -F -e "$src/" -e "$build/")"
 fi
-echo "ok   installed: bin/signalsim and share/signalsim/{config,tools/plot,tools/plotting,scenarios,sumo_nets}"
+echo "ok   installed: bin/signalsim and share/signalsim/{config,python/signalsim-plot,python/signalsim_plot,scenarios,sumo_nets}"
 
 mkdir -p "$work/elsewhere" && cd "$work/elsewhere" || fail "cd"
 # The presets listed are the installed ones: every file named lies in P, and the codes are the source's.
@@ -103,7 +103,7 @@ else
   echo "ok   a wrong SIGNALSIM_DATA_DIR: one line, exit 2 (lone binary skipped: a build tree marker in $marker_above)"
 fi
 
-# --plot with the installed tools/plot.
+# --plot with the installed python/signalsim-plot.
 if /usr/bin/python3 -c "import matplotlib" 2> /dev/null; then
   "$bin" run "$data/scenarios/intersection_left.yaml" --out plotted --plot > plot.out 2> plot.err \
     || fail "run --plot: exit $?: $(cat plot.err)"

@@ -1,8 +1,8 @@
 #!/usr/bin/python3
-"""tools/plot on real runs (issue 15): what each picture draws, read from the plotting functions' data.
+"""python/signalsim-plot on real runs: what each picture draws, read from the plotting functions' data.
 
-Runs the real binary (`run --plot`, `sweep --plot`, with SIGNALSIM_PLOT_TOOL pointing at this source
-tree's tools/plot), then checks, against what the run's own files say (summary.json's expectation
+Runs the real binary (`run --plot`, `sweep --plot`; without SIGNALSIM_PLOT_TOOL the build tree's
+binary finds python/signalsim-plot in its source tree), then checks, against what the run's own files say (summary.json's expectation
 details and lane_changes, events.csv, timeline.csv, the net), the data behind:
   - blinker.png: the decided blinker's segments and sources (a lane change handing over to a turn),
     the required-lead marker, legend entries only for what is drawn (hazard only when used), no
@@ -31,7 +31,7 @@ except ImportError:
     sys.exit(77)
 
 BIN, SRC = (sys.argv[1], sys.argv[2]) if len(sys.argv) >= 3 else (None, None)
-sys.path.insert(0, os.path.join(SRC or ".", "tools"))
+sys.path.insert(0, os.path.join(SRC or ".", "python"))
 WORK = None
 RUNS = {}
 
@@ -39,7 +39,8 @@ RUNS = {}
 def setUpModule():
     global WORK
     WORK = tempfile.mkdtemp(prefix="plot_test.")
-    env = dict(os.environ, SIGNALSIM_PLOT_TOOL=os.path.join(SRC, "tools", "plot"))
+    # No SIGNALSIM_PLOT_TOOL: the build tree's binary finds python/signalsim-plot in its source tree.
+    env = {k: v for k, v in os.environ.items() if k not in ("SIGNALSIM_PLOT_TOOL", "SIGNALSIM_DATA_DIR")}
     for name in ("lane_change_then_left", "lane_change_approval_delay", "avoidance_left", "pull_out_backward_hazard",
                  "tl_yellow_pass"):
         out = os.path.join(WORK, name)
@@ -61,7 +62,7 @@ def tearDownModule():
 
 
 def load(name):
-    from plotting.data import RunInputs, read_run
+    from signalsim_plot.data import RunInputs, read_run
     d = RUNS[name]
     timeline, events, summary, metrics = read_run(d)
     return d, timeline, events, summary, metrics, RunInputs(d, summary)
@@ -79,7 +80,7 @@ def pictures(name):
 
 class Blinker(unittest.TestCase):
     def test_lane_change_hands_over_to_the_turn(self):
-        from plotting.blinker import SOURCE_COLORS, blinker_data
+        from signalsim_plot.blinker import SOURCE_COLORS, blinker_data
         _, timeline, events, summary, metrics, _ = load("lane_change_then_left")
         data = blinker_data(timeline, summary, metrics)
         segs = data["segments"]
@@ -96,7 +97,7 @@ class Blinker(unittest.TestCase):
         self.assertNotEqual(SOURCE_COLORS["lane_change"], SOURCE_COLORS["intersection"])
 
     def test_required_lead_marker_where_the_checker_starts(self):
-        from plotting.blinker import blinker_data
+        from signalsim_plot.blinker import blinker_data
         _, timeline, _, summary, metrics, _ = load("lane_change_then_left")
         data = blinker_data(timeline, summary, metrics)
         self.assertEqual(len(data["required"]), 1)
@@ -114,7 +115,7 @@ class Blinker(unittest.TestCase):
         self.assertAlmostEqual(req["lead_time"], 30 / req["speed"], places=6)
 
     def test_legend_only_for_what_is_drawn(self):
-        from plotting.blinker import BLINKER_COLORS, SOURCE_COLORS, blinker_data, blinker_legend
+        from signalsim_plot.blinker import BLINKER_COLORS, SOURCE_COLORS, blinker_data, blinker_legend
         from matplotlib.colors import to_hex
         _, timeline, _, summary, metrics, _ = load("lane_change_then_left")
         handles = blinker_legend(blinker_data(timeline, summary, metrics))
@@ -136,7 +137,7 @@ class Blinker(unittest.TestCase):
         self.assertTrue([h for h in blinker_legend(data) if h.get_label().startswith("hazard (")])
 
     def test_no_blinker_picture_without_sections_and_blinker(self):
-        from plotting.blinker import blinker_data
+        from signalsim_plot.blinker import blinker_data
         _, timeline, _, summary, metrics, _ = load("tl_yellow_pass")
         self.assertEqual(metrics["sections"], [])
         self.assertTrue(all(r["blinker"] == "none" for r in timeline))
@@ -147,7 +148,7 @@ class Blinker(unittest.TestCase):
 
 class Lateral(unittest.TestCase):
     def test_planned_and_measured_series(self):
-        from plotting.lateral import lateral_data
+        from signalsim_plot.lateral import lateral_data
         _, timeline, events, summary, metrics, inputs = load("lane_change_then_left")
         data = lateral_data(timeline, events, summary, inputs)
         self.assertEqual(len(data["planned"]), len(timeline))
@@ -169,7 +170,7 @@ class Lateral(unittest.TestCase):
         self.assertNotIn("lateral.png", pictures("tl_yellow_pass"))
 
     def test_lane_change_phases_from_events(self):
-        from plotting.lateral import lateral_data
+        from signalsim_plot.lateral import lateral_data
         _, timeline, events, summary, metrics, inputs = load("lane_change_approval_delay")
         data = lateral_data(timeline, events, summary, inputs)
         f = summary["ego"]["base_link_to_front"]
@@ -188,7 +189,7 @@ class Lateral(unittest.TestCase):
         self.assertAlmostEqual(marks["done"]["s"], float(ev[("running", "done")]["s_front"]) - f, places=3)
 
     def test_obstacle_where_the_scenario_puts_it(self):
-        from plotting.lateral import lateral_data
+        from signalsim_plot.lateral import lateral_data
         _, timeline, events, summary, metrics, inputs = load("avoidance_left")
         data = lateral_data(timeline, events, summary, inputs)
         self.assertEqual(data["phases"], [])  # no lane change
@@ -206,7 +207,7 @@ class Lateral(unittest.TestCase):
 
 class Speed(unittest.TestCase):
     def test_jerk_from_the_accel_column(self):
-        from plotting.speed import speed_data
+        from signalsim_plot.speed import speed_data
         _, timeline, _, summary, metrics, inputs = load("lane_change_then_left")
         data = speed_data(timeline, summary, metrics, inputs.net)
         self.assertEqual(len(data["jerk"]), len(timeline) - 1)
@@ -219,7 +220,7 @@ class Speed(unittest.TestCase):
         self.assertEqual(len(data["jerk_s"]), len(data["jerk"]))
 
     def test_lane_speed_limit_from_the_net(self):
-        from plotting.speed import speed_data
+        from signalsim_plot.speed import speed_data
         _, timeline, _, summary, metrics, inputs = load("lane_change_then_left")
         data = speed_data(timeline, summary, metrics, inputs.net)
         self.assertIsNone(data["limit_note"])
@@ -242,7 +243,7 @@ class Speed(unittest.TestCase):
 
 class Dilemma(unittest.TestCase):
     def test_only_a_light_where_yellow_or_red_was_met(self):
-        from plotting.dilemma import dilemma_data
+        from signalsim_plot.dilemma import dilemma_data
         _, timeline, _, summary, metrics, _ = load("lane_change_then_left")
         self.assertTrue(any(r["tl_id"] == "C" for r in timeline))
         self.assertTrue(all(r["tl_state"] in ("g", "G", "") for r in timeline))
@@ -267,7 +268,7 @@ class Dilemma(unittest.TestCase):
 
 class HeatMap(unittest.TestCase):
     def test_centred_on_zero_with_failed_and_errored_cells(self):
-        from plotting.sweep_plots import heatmap_data
+        from signalsim_plot.sweep_plots import heatmap_data
         out = RUNS["sweep"]
         csv_path = os.path.join(out, "results.csv")
         data = heatmap_data(csv_path, "turn1.lead_distance", "turn_signal_search_time", "ego.max_speed")
@@ -303,7 +304,7 @@ class HeatMap(unittest.TestCase):
                 self.assertEqual(panel["counts"][i, j], 1)
 
     def test_boolean_share_and_sequential_map(self):
-        from plotting.sweep_plots import file_name, heatmap_data
+        from signalsim_plot.sweep_plots import file_name, heatmap_data
         data = heatmap_data(os.path.join(RUNS["sweep"], "results.csv"), "turn1.missed", "turn_signal_search_time",
                             "ego.max_speed")
         self.assertTrue(data["boolean"])

@@ -1,14 +1,14 @@
-"""Pictures of one run (tools/plot RUN_DIR): blinker.png, lateral.png, speed.png, dilemma.png.
+"""Pictures of one run (signalsim-plot RUN_DIR): blinker.png, lateral.png, speed.png, dilemma.png.
 
 Each picture has its module with a *_data() function (what is drawn, read by the tests) and a *_plot()
-function (the drawing): plotting.blinker, plotting.lateral, plotting.speed, plotting.dilemma."""
+function (the drawing): signalsim_plot.blinker, signalsim_plot.lateral, signalsim_plot.speed, signalsim_plot.dilemma."""
 import os
 
-from plotting.blinker import blinker_plot
-from plotting.data import RunInputs, read_run
-from plotting.dilemma import dilemma_plot
-from plotting.lateral import lateral_plot
-from plotting.speed import speed_plot
+from signalsim_plot.blinker import blinker_plot
+from signalsim_plot.data import RunInputs, read_run
+from signalsim_plot.dilemma import dilemma_plot
+from signalsim_plot.lateral import lateral_plot
+from signalsim_plot.speed import speed_plot
 
 PICTURES = ("blinker.png", "lateral.png", "speed.png", "dilemma.png")
 

@@ -6,7 +6,7 @@ import math
 import os
 import xml.etree.ElementTree as ET
 
-SOURCE_ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))  # tools/plotting/..
+SOURCE_ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))  # python/signalsim_plot/../..: the source tree or share/signalsim
 DEFAULT_LANE_WIDTH = 3.2  # SUMO's default when a lane has no width attribute [m]
 
 
@@ -82,7 +82,7 @@ def load_net(path):
 def find_input(path, run_dir):
     """An input file a summary names (`net`, `file`), relative to where the run was started: tried as
     given (absolute, or relative to the current directory), then relative to the run directory and its
-    ancestors, then to the source tree tools/plot is in (the bundled scenarios and nets, named from the
+    ancestors, then to the tree signalsim-plot is in (the source tree, or the installed share/signalsim) (the bundled scenarios and nets, named from the
     source tree's root). None when not found."""
     if not path:
         return None

@@ -18,8 +18,8 @@ import numpy as np
 from matplotlib.colors import Normalize
 from matplotlib.patches import Rectangle
 
-from plotting.cli import InputError
-from plotting.data import number, read_csv
+from signalsim_plot.cli import InputError
+from signalsim_plot.data import number, read_csv
 
 FIXED_BEFORE = ("run", "scenario", "file")
 FIXED_AFTER = ("status",)

@@ -9,8 +9,8 @@ speed_data() computes what is drawn; speed_plot() draws it (tests read the data)
 import matplotlib.pyplot as plt
 from matplotlib.patches import Patch
 
-from plotting.data import number, runs_of, span_end
-from plotting.style import DECISION_COLORS, LIGHT_COLORS, LIGHT_NAMES
+from signalsim_plot.data import number, runs_of, span_end
+from signalsim_plot.style import DECISION_COLORS, LIGHT_COLORS, LIGHT_NAMES
 
 LIMIT_COLOR = "#2166ac"
 

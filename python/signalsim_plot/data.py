@@ -4,8 +4,8 @@ import csv
 import json
 import os
 
-from plotting.cli import InputError
-from plotting.net import find_input, load_net
+from signalsim_plot.cli import InputError
+from signalsim_plot.net import find_input, load_net
 
 
 def read_csv(path):
@@ -91,7 +91,7 @@ def load_scenario_file(path):
 
 
 class RunInputs:
-    """The inputs a run's summary names, where they could be found: `net` (plotting.net.Net or None),
+    """The inputs a run's summary names, where they could be found: `net` (signalsim_plot.net.Net or None),
     `scenario` (the scenario file as a dict or None) and `notes` (why something is missing)."""
 
     def __init__(self, run_dir, summary):

@@ -1,23 +1,23 @@
-"""Command line of tools/plot: decides between a run directory and a sweep's results.csv."""
+"""Command line of signalsim-plot: decides between a run directory and a sweep's results.csv."""
 import argparse
 import os
 import sys
 
 try:
     import matplotlib
-except ImportError:  # tools/plot runs /usr/bin/python3: Debian's python3-matplotlib
-    print("tools/plot: matplotlib is missing (Debian 12: apt-get install python3-matplotlib)", file=sys.stderr)
+except ImportError:  # signalsim-plot runs /usr/bin/python3: Debian's python3-matplotlib
+    print("signalsim-plot: matplotlib is missing (Debian 12: apt-get install python3-matplotlib)", file=sys.stderr)
     sys.exit(2)
 
 matplotlib.use("Agg")
 
 
 class InputError(Exception):
-    """Bad input: printed as 'tools/plot: <message>', exit code 2."""
+    """Bad input: printed as 'signalsim-plot: <message>', exit code 2."""
 
 
 def main(argv):
-    parser = argparse.ArgumentParser(prog="tools/plot", description=(__doc__ or "").strip())
+    parser = argparse.ArgumentParser(prog="signalsim-plot", description=(__doc__ or "").strip())
     parser.add_argument("path", help="a run directory (timeline.csv ...) or a sweep directory / results.csv")
     parser.add_argument("--out", help="where the PNGs go (default: PATH/plots)")
     parser.add_argument("--metric", action="append",
@@ -29,26 +29,26 @@ def main(argv):
     args = parser.parse_args(argv)
     try:
         path = args.path
-        from plotting import comparison_plots
+        from signalsim_plot import comparison_plots
         if os.path.isfile(path) and path.endswith(".csv") and comparison_plots.is_comparison(path):
             written = comparison_plots.plot_comparison(path, args.out or os.path.dirname(path) or ".")
         elif os.path.isfile(path) and path.endswith(".csv"):
-            from plotting import sweep_plots
+            from signalsim_plot import sweep_plots
             out = args.out or os.path.join(os.path.dirname(path) or ".", "plots")
             written = [f for m in args.metric or [None] for f in sweep_plots.plot_results(path, out, m, args.x, args.y)]
         elif os.path.isfile(os.path.join(path, "results.csv")):
-            from plotting import sweep_plots
+            from signalsim_plot import sweep_plots
             out = args.out or os.path.join(path, "plots")
             csv_path = os.path.join(path, "results.csv")
             written = [f for m in args.metric or [None] for f in sweep_plots.plot_results(csv_path, out, m, args.x, args.y)]
         elif os.path.isfile(os.path.join(path, "summary.json")):
-            from plotting import run_plots
+            from signalsim_plot import run_plots
             out = args.out or os.path.join(path, "plots")
             written = run_plots.plot_run(path, out)
         else:
             raise InputError(f"{path}: neither a run directory (summary.json) nor a sweep (results.csv)")
     except InputError as e:
-        print(f"tools/plot: {e}", file=sys.stderr)
+        print(f"signalsim-plot: {e}", file=sys.stderr)
         return 2
     for f in written if not args.quiet else []:
         print(f)

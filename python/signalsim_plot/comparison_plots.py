@@ -11,8 +11,8 @@ import os
 import matplotlib.pyplot as plt
 from matplotlib.patches import Patch
 
-from plotting.cli import InputError
-from plotting.data import number, read_csv
+from signalsim_plot.cli import InputError
+from signalsim_plot.data import number, read_csv
 
 # Fixed colours per driver (tests look for them in the PNG).
 DRIVER_COLORS = {"signalsim": "#1f77b4", "sumo": "#ff7f0e"}

@@ -16,9 +16,9 @@ import matplotlib.pyplot as plt
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch, Rectangle
 
-from plotting.data import number, runs_of, span_end
-from plotting.net import DEFAULT_LANE_WIDTH
-from plotting.style import BLINKER_COLORS
+from signalsim_plot.data import number, runs_of, span_end
+from signalsim_plot.net import DEFAULT_LANE_WIDTH
+from signalsim_plot.style import BLINKER_COLORS
 
 OBSTACLE_WIDTH = 1.8  # scenario.hpp kObstacleWidth (SUMO DEFAULT_VEHTYPE) [m]
 PHASE_COLORS = {"pending": "#d9d9d9", "waiting_approval": "#fdae61", "running": "#abd9e9", "shifting": "#2c7bb6"}

@@ -14,8 +14,8 @@ import matplotlib.pyplot as plt
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
 
-from plotting.data import number, runs_of, span_end
-from plotting.style import BLINKER_COLORS
+from signalsim_plot.data import number, runs_of, span_end
+from signalsim_plot.style import BLINKER_COLORS
 
 # The decided bar's colour: the request source that won (turn_signal_info.cpp to_string(RequestSource)).
 SOURCE_COLORS = {"intersection": "#6a3d9a", "roundabout_entry": "#1b9e77", "roundabout_exit": "#66a61e",

@@ -11,8 +11,8 @@ import math
 import matplotlib.pyplot as plt
 from matplotlib.lines import Line2D
 
-from plotting.data import number
-from plotting.style import LIGHT_COLORS, LIGHT_NAMES, STOP_STATES
+from signalsim_plot.data import number
+from signalsim_plot.style import LIGHT_COLORS, LIGHT_NAMES, STOP_STATES
 
 MAX_PANELS = 3
 

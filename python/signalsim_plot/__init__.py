@@ -1,0 +1,1 @@
+"""The plotting package behind signalsim-plot (run pictures and sweep heat maps)."""

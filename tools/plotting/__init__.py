@@ -1,1 +1,0 @@
-"""Plotting helpers for tools/plot (run pictures and sweep heat maps)."""
