@@ -31,7 +31,7 @@ docs/behaviour.md §S, where each blinker turns on and off:
              the (s_front, speed) rows of a real run, so the prediction is exact to the step.
 
 Usage:
-  tools/oracle/roundabout_oracle.py scenarios/roundabout_de_exit2.yaml [...]   # table per scenario
+  tests/oracle/roundabout_oracle.py scenarios/roundabout_de_exit2.yaml [...]   # table per scenario
       [--timeline out/<name>/timeline.csv] [--linear] [--mark-node-lane] [--check] [--steps]
   --check   also evaluate the scenario's expectations on the predicted timeline and print the margin of
             every expectation boundary to the nearest predicted switch (exit 1 if one fails)

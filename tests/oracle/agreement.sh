@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # signalsim's blinker at every step equals an independent Python restatement of docs/behaviour.md §T4-§T7
-# (tools/oracle/roundabout_oracle.py) on every roundabout and intersection scenario without
+# (tests/oracle/roundabout_oracle.py) on every roundabout and intersection scenario without
 # `maneuvers:` (the oracle restates neither the behaviour modules of docs/behaviour.md §T8 nor lane plans with
 # requested lane changes; those scenarios are checked by tests/integration/maneuver_scenarios_test.cpp).
-# usage: oracle_agreement.sh SIGNALSIM_BINARY SOURCE_DIR
+# usage: agreement.sh SIGNALSIM_BINARY SOURCE_DIR
 set -u
 bin=$1
 src=$2
@@ -16,7 +16,7 @@ for scenario in "$src"/scenarios/roundabout_*.yaml "$src"/scenarios/intersection
   name=$(basename "$scenario" .yaml)
   if grep -q '^maneuvers:' "$scenario"; then echo "skip $name: has maneuvers"; continue; fi
   "$bin" run "$scenario" --out "$work/$name" --quiet >/dev/null 2>&1
-  if python3 "$src/tools/oracle/roundabout_oracle.py" "$scenario" --timeline "$work/$name/timeline.csv" \
+  if python3 "$src/tests/oracle/roundabout_oracle.py" "$scenario" --timeline "$work/$name/timeline.csv" \
        >"$work/$name.oracle" 2>&1; then
     passed=$((passed + 1)); echo "ok   $name: $(grep 'rows agree' "$work/$name.oracle" | sed 's/^ *//')"
   else
