@@ -1,4 +1,4 @@
-// The step clock: an LD_PRELOAD library with which tools/bench/run measures a whole process's cost per
+// The step clock: an LD_PRELOAD library with which tools/bench measures a whole process's cost per
 // simulation step without its start-up (docs/performance.md). It wraps libsumo's Simulation::step and
 // Simulation::close, forwarding every call unchanged to libsumocpp.so (dlsym RTLD_NEXT), and records
 // the process's CPU time (CLOCK_PROCESS_CPUTIME_ID) when the first step starts, when step number
@@ -17,7 +17,7 @@
 // Simulation::step, and the wall time from step FROM to close, added to the line as
 //   "in_step_wall": s, "from_wall": s, "close_wall": s
 // On an idle machine their ratio is the share of a step's CPU time that is SUMO's own; the reads add
-// to the step, so tools/bench/run takes the step's cost from runs without the split.
+// to the step, so tools/bench takes the step's cost from runs without the split.
 // Nothing of signalsim changes: it calls libsumo through the dynamic linker, which finds these first.
 #include <dlfcn.h>
 #include <time.h>

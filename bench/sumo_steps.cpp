@@ -1,4 +1,4 @@
-// SUMO alone, in-process, with the library signalsim embeds (libsumocpp.so): how tools/bench/run
+// SUMO alone, in-process, with the library signalsim embeds (libsumocpp.so): how tools/bench
 // measures SUMO's own cost per step without its start-up (docs/performance.md).
 //
 //   build/bench/sumo_steps FROM END SUMO-ARGUMENT...

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""tools/bench/run's end check (tools/bench/scenarios.py) on real runs of intersection_left: the sumo
+"""tools/bench's end check (bench/scenarios.py) on real runs of intersection_left: the sumo
 binary alone and the Python TraCI controller pass when they end where signalsim's run ends, and are
 refused, naming both times, when they stop one step short.
 
@@ -12,7 +12,7 @@ import tempfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
-sys.path.insert(0, os.path.join(ROOT, "tools", "bench"))
+sys.path.insert(0, os.path.join(ROOT, "bench"))
 import scenarios  # noqa: E402
 from measure import BenchError  # noqa: E402
 

@@ -1,9 +1,9 @@
 #!/usr/bin/python3
-"""A Python TraCI controller doing signalsim's per-step work, for tools/bench/run (docs/performance.md).
+"""A Python TraCI controller doing signalsim's per-step work, for tools/bench (docs/performance.md).
 
-  /usr/bin/python3 tools/bench/traci_controller.py SPEC.json
+  /usr/bin/python3 bench/traci_controller.py SPEC.json
 
-SPEC.json (written by tools/bench/scenarios.py) gives the sumo command line (without --remote-port),
+SPEC.json (written by bench/scenarios.py) gives the sumo command line (without --remote-port),
 the ego as signalsim adds it (route, vehicle type values, departure) and `end`, the simulated time
 signalsim's own run of the scenario ended at. The controller starts sumo on a free 127.0.0.1 port and
 connects with traci.connect, the call traci.start makes, but retrying every 20 ms: traci.start waits

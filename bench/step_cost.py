@@ -11,7 +11,7 @@ With --connect HOST:PORT the long run attaches to that SUMO instead (start it wi
 scenario's net and step length); each libtraci call but getSubscriptionResults is one TraCI message.
 The runs end with exit code 1 (at 3 m/s the scenario's expectations do not hold); that is expected.
 
-Usage: tools/step_cost [--bin SIGNALSIM] [--scenario YAML] [--out DIR] [--connect HOST:PORT]
+Usage: tools/bench step-cost [--bin SIGNALSIM] [--scenario YAML] [--out DIR] [--connect HOST:PORT]
 Needs valgrind (Debian package valgrind). Takes about a minute.
 """
 import argparse
@@ -82,7 +82,7 @@ def library_calls(cg_file, library):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser = argparse.ArgumentParser(prog="tools/bench step-cost", description=__doc__.split("\n")[0])
     parser.add_argument("--bin", default=os.path.join(ROOT, "build/src/app/signalsim"))
     parser.add_argument("--scenario", default=os.path.join(ROOT, "scenarios/intersection_left.yaml"))
     parser.add_argument("--out", default=os.path.join(ROOT, "out/step_cost"))
@@ -104,4 +104,4 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(main())

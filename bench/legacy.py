@@ -1,4 +1,4 @@
-"""The benchmarks tools/bench had before the side-by-side comparison, kept as options of tools/bench/run:
+"""The single-figure benchmarks, each chosen with tools/bench --only NAME (not run by default):
 
   micro      Google Benchmark: one decider step and one speed-planning step on 100 .. 100 000 lanelets
   embedded   intersection_left as a whole process (libsumo in-process)
@@ -19,7 +19,7 @@ import time
 
 from measure import children_cpu, run_child
 
-ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SCENARIO = os.path.join(ROOT, "scenarios", "intersection_left.yaml")
 ACOSTA = os.path.join(ROOT, "sumo_nets", "bologna_acosta")
 

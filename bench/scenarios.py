@@ -1,4 +1,4 @@
-"""The scenarios tools/bench/run compares on, and the same run for each contestant.
+"""The scenarios tools/bench compares on, and the same run for each contestant.
 
 A BenchScenario is a signalsim scenario file plus what the other contestants need to run the same
 simulation: the SUMO inputs (net, route files, additional files, step length, seed, resolved from the
@@ -27,11 +27,20 @@ import yaml
 
 from measure import BenchError
 
-ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SUMO_HOME = "/usr/share/sumo"
 RANDOM_TRIPS = os.path.join(SUMO_HOME, "tools", "randomTrips.py")
 DEBIAN_PYTHON = "/usr/bin/python3"
 ACOSTA = os.path.join(ROOT, "sumo_nets", "bologna_acosta")
+
+
+def shown(path):
+    """A path as printed: relative to the source tree when inside it, so that no folder of the machine
+    that measured appears in what is printed (and pasted into docs/performance.md)."""
+    if not path:
+        return path
+    relative = os.path.relpath(os.path.abspath(path), ROOT)
+    return path if relative.startswith("..") else relative
 UNSUPPORTED_KEYS = ("sumocfg", "sumo_args", "obstacles", "maneuvers", "light_offsets")
 CLOCK_FROM = 100  # steps (10 s at 0.1 s)
 END_LINE = re.compile(r"^Simulation ended at time: ([0-9.]+)", re.M)
@@ -185,7 +194,7 @@ class BenchScenario:
         with open(spec, "w") as f:
             json.dump({"sumo": ["sumo"] + self.sumo_options() + ["--log", os.path.join(self.work, "py.log")],
                        "ego": self.ego, "step_length": self.step_length, "end": self.runs[variant]["end"]}, f)
-        return [DEBIAN_PYTHON, os.path.join(ROOT, "tools", "bench", "traci_controller.py"), spec]
+        return [DEBIAN_PYTHON, os.path.join(ROOT, "bench", "traci_controller.py"), spec]
 
     def check_controller(self, variant, stdout):
         lines = stdout.strip().splitlines()
@@ -202,7 +211,7 @@ class BenchScenario:
 
 def write_yaml(path, data):
     with open(path, "w") as f:
-        f.write("# written by tools/bench/run\n")
+        f.write("# written by tools/bench\n")
         yaml.safe_dump(data, f, sort_keys=False)
     return path
 

@@ -1,7 +1,8 @@
-"""What tools/bench/run prints: a table per benchmark, then issue 16's target ratios with the measured
+"""What tools/bench prints: a table per benchmark, then issue 16's target ratios with the measured
 value beside each (docs/performance.md). Values are medians; a ratio is of medians; "-" where a
 contestant does not measure that column; "spread" is (max - min) / median of the full runs' CPU.
 """
+from scenarios import shown
 from side_by_side import CONTESTANTS, ratio
 
 # The bundled suite's CPU per run before issue 16's work (main at 13cd2c9, the 2-core development
@@ -28,7 +29,7 @@ def fmt_ratio(value):
 def side_by_side_table(title, scenario, measured):
     print("\n== %s" % title)
     print("   %s: %d SUMO steps of %g s (the start-up: a run of %d), ego route %d edges%s" % (
-        scenario.path, scenario.sumo_steps("full"), scenario.step_length, scenario.sumo_steps("startup"),
+        shown(scenario.path), scenario.sumo_steps("full"), scenario.step_length, scenario.sumo_steps("startup"),
         len(scenario.ego["route"]), "; vehicles in the net while the ego drives: mean %.0f, max %d" % scenario.vehicles
         if scenario.vehicles else ""))
     header = ("contestant", "run CPU", "spread", "run wall", "start-up CPU", "step, whole", "step, in-proc",

@@ -12,7 +12,7 @@ import shutil
 
 from measure import BenchError, interleaved, median_cpu, median_wall, run_child
 
-ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 QUICK_SUITE = 6  # scenarios of the suite a --quick batch runs (the first, by name)
 
 

@@ -1,4 +1,4 @@
-"""How tools/bench/run measures a process: CPU and wall time of one child, interleaved rounds, medians.
+"""How tools/bench measures a process: CPU and wall time of one child, interleaved rounds, medians.
 
 CPU time is user + sys of the child and every descendant it waited for (a batch's workers, the sumo a
 Python controller started), read as the difference of getrusage(RUSAGE_CHILDREN) around it; children
