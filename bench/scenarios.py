@@ -35,12 +35,13 @@ ACOSTA = os.path.join(ROOT, "sumo_nets", "bologna_acosta")
 
 
 def shown(path):
-    """A path as printed: relative to the source tree when inside it, so that no folder of the machine
+    """A path as printed: relative to the source tree when inside it, else ".../" and its file name (a
+    generated file in the temporary folder, another build's binary), so that no folder of the machine
     that measured appears in what is printed (and pasted into docs/performance.md)."""
     if not path:
         return path
     relative = os.path.relpath(os.path.abspath(path), ROOT)
-    return path if relative.startswith("..") else relative
+    return ".../" + os.path.basename(os.path.normpath(path)) if relative.startswith("..") else relative
 UNSUPPORTED_KEYS = ("sumocfg", "sumo_args", "obstacles", "maneuvers", "light_offsets")
 CLOCK_FROM = 100  # steps (10 s at 0.1 s)
 END_LINE = re.compile(r"^Simulation ended at time: ([0-9.]+)", re.M)
