@@ -15,7 +15,7 @@
 #include "scenario/input_error.hpp"
 #include "scenario/notes.hpp"
 #include "report/outputs.hpp"
-#include "sim/route_planning.hpp"
+#include "step/route_planning.hpp"
 #include "scenario/scenario.hpp"
 #include "sim/step_loop.hpp"
 #include "sim/sumo_driven.hpp"

@@ -8,7 +8,7 @@
 #include <optional>
 #include <string>
 
-#include "sim/route_planning.hpp"
+#include "step/route_planning.hpp"
 #include "scenario/scenario.hpp"
 #include "net/net_index.hpp"
 #include "route/route_builder.hpp"

@@ -2,7 +2,7 @@
 // algorithm; the stages and what persists between steps are in step_stages.hpp).
 #include "sim/step_loop.hpp"
 
-#include "sim/step_stages.hpp"
+#include "step/step_core.hpp"
 
 namespace signalsim {
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "sim/light_stage.hpp"
+#include "step/light_stage.hpp"
 
 namespace signalsim {
 namespace {

@@ -8,10 +8,10 @@
 
 #include "report/expectations.hpp"
 #include "report/outputs.hpp"
-#include "sim/route_planning.hpp"
+#include "step/route_planning.hpp"
 #include "scenario/scenario.hpp"
 #include "sim/step_loop.hpp"
-#include "sim/stuck_watch.hpp"
+#include "step/stuck_watch.hpp"
 #include "net/net_index.hpp"
 #include "route/route_builder.hpp"
 

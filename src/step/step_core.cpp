@@ -1,5 +1,5 @@
 // The stages of one step and the StepLoop that runs them; see step_stages.hpp.
-#include "sim/step_stages.hpp"
+#include "step/step_core.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 #include <utility>
 
 #include "planning/stop/jerk_limited_stop.hpp"
-#include "sim/route_planning.hpp"
+#include "step/route_planning.hpp"
 #include "route/approach_lights.hpp"
 
 namespace signalsim {

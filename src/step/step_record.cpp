@@ -1,5 +1,5 @@
 // The record of a signalsim-driven run: SUMO fields, rows, events, light log; see step_record.hpp.
-#include "sim/step_record.hpp"
+#include "step/step_record.hpp"
 
 #include <utility>
 

@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "report/timeline.hpp"
-#include "sim/behavior_stage.hpp"
-#include "sim/light_stage.hpp"
+#include "step/behavior_stage.hpp"
+#include "step/light_stage.hpp"
 #include "sim/session_setup.hpp"
 #include "route/approach_lights.hpp"
 #include "session/sumo_session.hpp"
