@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <stdexcept>
 
-#include "batch/slurm_backend.hpp"
+#include "batch/slurm/slurm_backend.hpp"
 
 namespace signalsim::app {
 

@@ -22,6 +22,7 @@
 #include "batch/run_list.hpp"
 #include "batch/run_outputs.hpp"
 #include "batch/scenario_files.hpp"
+#include "core/number_text.hpp"
 #include "report/atomic_file.hpp"
 #include "scenario/input_error.hpp"
 
@@ -44,12 +45,6 @@ struct CheckOptions {
 std::string cell(const ResultRow& row, const std::string& column) {
   const auto it = row.cells.find(column);
   return it == row.cells.end() ? std::string() : it->second;
-}
-
-std::string format(const char* fmt, auto... args) {
-  char buf[512];
-  std::snprintf(buf, sizeof buf, fmt, args...);
-  return buf;
 }
 
 // Compares (or updates) one run; prints its verdict and returns its JUnit case.
@@ -112,7 +107,7 @@ JUnitCase check_one(const RunSpec& run, const ResultRow* row, const CheckOptions
       return verdict(JUnitCase::Result::Failed, "not updated: " + failed_expectations);
     fs::create_directories(o.golden_dir);
     write_file_atomically(golden, read_text_file(events_path));
-    return matched(format("updated %s (%zu events)", golden.c_str(), events.size()));
+    return matched(format_text("updated %s (%zu events)", golden.c_str(), events.size()));
   }
   if (!fs::is_regular_file(golden))
     return verdict(JUnitCase::Result::Failed, "no golden file " + golden + " (create it with --update)");
@@ -126,15 +121,17 @@ JUnitCase check_one(const RunSpec& run, const ResultRow* row, const CheckOptions
   const auto diff = compare_events(expected, events, o.tol_s, tol_t);
   const std::size_t differences = count_differences(diff);
   if (differences > 0) {
-    const std::string header = format("         %9s   %9s    event    (= same, ~ moved, - missing, + extra; tolerance %.3g m, %.3g s)\n",
-                                      "time", "s_front", o.tol_s, tol_t);
-    return verdict(JUnitCase::Result::Failed,
-                   (expectations_fail ? failed_expectations + "; " : std::string()) +
-                       format("%zu event difference%s against %s", differences, differences == 1 ? "" : "s",
-                              golden.c_str()) + note,
-                   header + format_diff(diff, "      "));
+    const std::string header =
+        format_text("         %9s   %9s    event    (= same, ~ moved, - missing, + extra; tolerance %.3g m, %.3g s)\n",
+                    "time", "s_front", o.tol_s, tol_t);
+    return verdict(
+        JUnitCase::Result::Failed,
+        (expectations_fail ? failed_expectations + "; " : std::string()) +
+            format_text("%zu event difference%s against %s", differences, differences == 1 ? "" : "s", golden.c_str()) +
+            note,
+        header + format_diff(diff, "      "));
   }
-  return matched(format("%zu events match %s", events.size(), golden.c_str()));
+  return matched(format_text("%zu events match %s", events.size(), golden.c_str()));
 }
 
 }  // namespace

@@ -21,12 +21,13 @@
 
 #include "app/batch_cli.hpp"
 #include "app/command.hpp"
-#include "app/strict_params_flag.hpp"
-#include "batch/comparison.hpp"
 #include "app/plot_tool.hpp"
-#include "batch/worker_pool.hpp"
+#include "app/strict_params_flag.hpp"
+#include "batch/child_process.hpp"
+#include "batch/comparison.hpp"
 #include "batch/run_outputs.hpp"
 #include "batch/scenario_files.hpp"
+#include "batch/worker_pool.hpp"
 #include "report/atomic_file.hpp"
 #include "report/expectations.hpp"
 #include "scenario/input_error.hpp"
@@ -69,7 +70,7 @@ std::vector<Checked> check_scenarios(const std::vector<std::string>& files, cons
     c.file = file;
     c.comparison.scenario = scenario.name;
     c.comparison.base_link_to_front = planned.scenario.ego.base_link_to_front;
-    c.comparison.items = compared_items(planned.plan.map, planned.scenario.params);
+    c.comparison.items = compared_items(planned.plan.map, planned.scenario.run_params.decider);
     out.push_back(std::move(c));
   }
   return out;

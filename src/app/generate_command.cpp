@@ -12,7 +12,7 @@
 #include "app/cli_numbers.hpp"
 #include "app/command.hpp"
 #include "generate/generator.hpp"
-#include "generate/number_text.hpp"
+#include "core/number_text.hpp"
 
 namespace signalsim::app {
 namespace {
@@ -47,9 +47,9 @@ std::string command_line(const GenerateCli& cli) {
   std::string line = "signalsim generate " + o.net + " --count " + std::to_string(o.count) + " --seed " +
                      std::to_string(o.seed) + " --out " + o.out_dir + " --through " + cli.through;
   if (!o.scenario.country.empty()) line += " --country " + o.scenario.country;
-  line += " --min-length " + generate::fixed(o.min_length, 0) + " --max-length " + generate::fixed(o.max_length, 0) +
-          " --max-speed " + generate::fixed(o.scenario.max_speed, 2) + " --straight " +
-          generate::fixed(o.scenario.straight, 0);
+  line += " --min-length " + rounded_fixed(o.min_length, 0) + " --max-length " + rounded_fixed(o.max_length, 0) +
+          " --max-speed " + rounded_fixed(o.scenario.max_speed, 2) + " --straight " +
+          rounded_fixed(o.scenario.straight, 0);
   return line;
 }
 

@@ -38,7 +38,7 @@ int inspect(const InspectOptions& o) {
       }
       if (overrides.size() > 0) params.apply(overrides, "--set");
       params.check_consistency("--set");
-      plan = prepare_route(sumo::build_route(net, o.route), params);
+      plan = prepare_route(sumo::build_route(net, o.route), run_parameters(params).decider);
     }
     print_net_summary(std::cout, net);
     if (plan) print_route(std::cout, *plan);

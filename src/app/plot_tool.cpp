@@ -5,7 +5,7 @@
 #include <cstdlib>
 #include <filesystem>
 
-#include "batch/process_pool.hpp"
+#include "batch/child_process.hpp"
 #include "scenario/data_dir.hpp"
 
 namespace signalsim::app {

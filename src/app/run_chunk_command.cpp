@@ -5,7 +5,7 @@
 #include <memory>
 
 #include "app/command.hpp"
-#include "batch/run_chunk.hpp"
+#include "batch/slurm/run_chunk.hpp"
 
 namespace signalsim::app {
 

@@ -10,7 +10,7 @@
 #include <fstream>
 #include <iterator>
 
-#include "batch/text_format.hpp"
+#include "core/number_text.hpp"
 #include "scenario/input_error.hpp"
 
 namespace signalsim {

@@ -6,7 +6,7 @@
 #include <cstdio>
 
 #include "batch/run_rows.hpp"
-#include "batch/text_format.hpp"
+#include "core/number_text.hpp"
 
 namespace signalsim {
 

@@ -8,13 +8,12 @@
 #include <thread>
 
 #include "batch/batch_manifest.hpp"
-#include "batch/batch_progress.hpp"
-#include "batch/process_pool.hpp"
+#include "batch/child_process.hpp"
 #include "batch/results_file.hpp"
 #include "batch/run_outputs.hpp"
 #include "batch/run_row_file.hpp"
 #include "batch/run_rows.hpp"
-#include "batch/text_format.hpp"
+#include "core/number_text.hpp"
 #include "batch/worker_pool.hpp"
 #include "scenario/input_error.hpp"
 #include "report/atomic_file.hpp"
@@ -62,8 +61,7 @@ BatchStart start_batch(const std::vector<RunSpec>& runs, const BatchSettings& se
   const std::string csv = results_path(settings.out_dir);
   const std::string manifest_file = manifest_path(settings.out_dir);
   const std::string manifest = batch_manifest(runs);
-  batch.run_dirs.resize(runs.size());
-  for (const RunSpec& run : runs) batch.run_dirs[run.index] = run_dir_name(run, runs.size());
+  batch.run_dirs = run_dir_names(runs);
 
   if (settings.resume && fs::exists(csv)) {
     if (!fs::exists(manifest_file) || read_text_file(manifest_file) != manifest)
@@ -102,6 +100,26 @@ BatchStart start_batch(const std::vector<RunSpec>& runs, const BatchSettings& se
   }
   batch.last_write = Clock::now();
   return batch;
+}
+
+std::vector<std::string> run_dir_names(const std::vector<RunSpec>& runs) {
+  std::vector<std::string> names(runs.size());
+  for (const RunSpec& run : runs) names[run.index] = run_dir_name(run, runs.size());
+  return names;
+}
+
+BatchProgress begin_progress(BatchStart& batch, const BatchSettings& settings) {
+  BatchResult& result = batch.result;
+  if (!settings.quiet && result.skipped > 0)
+    std::printf("resuming: %zu of %zu runs already done, %zu to run\n", result.skipped, result.total,
+                batch.to_run.size());
+  BatchProgress progress(batch.to_run.size() + batch.not_loaded.size(), settings.quiet);
+  for (const RunSpec* run : batch.not_loaded) {
+    ResultRow row = load_error_row(*run);
+    progress.finished(*run, row);
+    result.rows[run->index] = std::move(row);
+  }
+  return progress;
 }
 
 bool run_in_worker_pool(const std::vector<const RunSpec*>& runs, const std::vector<std::string>& run_dirs,
@@ -163,22 +181,12 @@ BatchResult finish_batch(BatchStart& batch, const BatchSettings& settings, bool 
 
 BatchResult run_batch(const std::vector<RunSpec>& runs, const BatchSettings& settings) {
   BatchStart batch = start_batch(runs, settings);
-  BatchResult& result = batch.result;
-  if (!settings.quiet && result.skipped > 0)
-    std::printf("resuming: %zu of %zu runs already done, %zu to run\n", result.skipped, runs.size(),
-                batch.to_run.size());
-
-  BatchProgress progress(batch.to_run.size() + batch.not_loaded.size(), settings.quiet);
-  for (const RunSpec* run : batch.not_loaded) {
-    ResultRow row = load_error_row(*run);
-    progress.finished(*run, row);
-    result.rows[run->index] = std::move(row);
-  }
+  BatchProgress progress = begin_progress(batch, settings);
   const bool completed = run_in_worker_pool(
       batch.to_run, batch.run_dirs, settings,
       [&](const RunSpec& run, ResultRow row) {
         progress.finished(run, row);
-        result.rows[run.index] = std::move(row);
+        batch.result.rows[run.index] = std::move(row);
         rewrite_results(batch, settings);
       },
       [&] { progress.tick(); });

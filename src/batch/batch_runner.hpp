@@ -4,8 +4,8 @@
 //     match this batch are kept, error rows are dropped (run again); a row that does not match
 //     (another sweep) is an error
 //   for each remaining run (by index): `signalsim run SCENARIO --out OUT/runs/NNNN-name --quiet
-//     --set ...` in one of `jobs` persistent workers (worker_pool), or as a process of its own with
-//     `isolate` (process_pool), each with the wall-clock timeout
+//     --set ...` in one of `jobs` persistent workers, or as a process of its own with `isolate`
+//     (worker_pool.hpp, both watched by child_supervisor.hpp), each with the wall-clock timeout
 //   a run whose scenario file did not load (RunSpec::load_error): an error row with the message, no worker
 //   as each worker ends: a row from its exit code and RUNDIR/summary.json (status passed, failed or
 //     no_expectations - a scenario without expectations, nothing checked, not a failure - expectations,
@@ -15,8 +15,8 @@
 //     the previous file and is tried again) with every finished row, ordered by run index
 //   progress: one updating line on a terminal, one plain line per finished run otherwise
 //   Ctrl-C: start nothing more, stop the workers, keep every finished row; exit code 130
-// run_batch is start_batch + run_in_worker_pool + finish_batch; another back-end (Slurm,
-// slurm_backend.hpp) calls start_batch and finish_batch around its own way of running the runs.
+// run_batch is start_batch + begin_progress + run_in_worker_pool + finish_batch; another back-end
+// (Slurm, batch/slurm/slurm_backend.hpp) calls the same around its own way of running the runs.
 #pragma once
 
 #include <chrono>
@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "batch/batch_manifest.hpp"
+#include "batch/batch_progress.hpp"
 #include "batch/results_file.hpp"
 #include "batch/results_table.hpp"
 #include "batch/run_rows.hpp"
@@ -82,9 +83,17 @@ struct BatchStart {
 /// rows, removes the run directories of the runs still to run. Throws like run_batch.
 BatchStart start_batch(const std::vector<RunSpec>& runs, const BatchSettings& settings);
 
+/// The batch's run directories by run index: run_dir_name of each run.
+std::vector<std::string> run_dir_names(const std::vector<RunSpec>& runs);
+
+/// What every back-end does after start_batch: "resuming: K of N runs already done, M to run"
+/// (unless quiet or nothing was kept), the progress output over the runs still to run, and the
+/// error rows of the scenario files that did not load, through it.
+BatchProgress begin_progress(BatchStart& batch, const BatchSettings& settings);
+
 /// Runs `runs` in worker processes (`signalsim run ... --out OUT/RUN_DIR`), at most settings.jobs at
 /// a time with settings.timeout each; hands every finished run's row to `on_row` as it ends, calls
-/// `on_tick` about every 200 ms. False when interrupted (SIGINT, SIGTERM): see process_pool.hpp.
+/// `on_tick` about every 200 ms. False when interrupted (SIGINT, SIGTERM): see child_supervisor.hpp.
 bool run_in_worker_pool(const std::vector<const RunSpec*>& runs, const std::vector<std::string>& run_dirs,
                         const BatchSettings& settings, const std::function<void(const RunSpec&, ResultRow)>& on_row,
                         const std::function<void()>& on_tick);

@@ -23,7 +23,7 @@ std::size_t column(const std::string& name) {
 }
 
 // A number as the other outputs write it: rounded to 1 mm, spelled as JSON ("189.6").
-std::string number_text(double v) { return Json(std::stod(fixed(v, 3))).dump(); }
+std::string number_text(double v) { return Json(as_written(v, 3)).dump(); }
 
 std::string cell_of(const Json& v) {
   if (v.is_null()) return "";
@@ -162,7 +162,7 @@ std::string padded(std::string text, std::size_t width) {
 
 }  // namespace
 
-std::vector<ComparedItem> compared_items(const RouteMap& route, const ParameterSet& params) {
+std::vector<ComparedItem> compared_items(const RouteMap& route, const TurnSignalParameters& params) {
   std::vector<ComparedItem> out;
   std::map<std::string, int> counters;
   for (const SignalSection& s : signal_sections(route, params))

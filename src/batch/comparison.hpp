@@ -21,7 +21,7 @@
 #include <nlohmann/json.hpp>
 
 #include "map/route_map.hpp"
-#include "scenario/parameters.hpp"
+#include "turn_signal/turn_signal_parameters.hpp"
 #include "report/timeline.hpp"
 
 namespace signalsim {
@@ -37,7 +37,7 @@ struct ComparedItem {
 };
 
 /// The route's sections and lights in route order (see the file comment).
-std::vector<ComparedItem> compared_items(const RouteMap& route, const ParameterSet& params);
+std::vector<ComparedItem> compared_items(const RouteMap& route, const TurnSignalParameters& params);
 
 /// What one run (one driver) of a scenario left.
 struct DriverRun {

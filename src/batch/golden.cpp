@@ -7,6 +7,8 @@
 #include <cstdio>
 #include <limits>
 
+#include "core/number_text.hpp"
+
 namespace signalsim {
 namespace {
 
@@ -16,15 +18,9 @@ bool same_key(const TimelineEvent& a, const TimelineEvent& b) {
   return a.kind == b.kind && a.from == b.from && a.to == b.to && a.source == b.source;
 }
 
-std::string format(const char* fmt, auto... args) {
-  char buf[512];
-  std::snprintf(buf, sizeof buf, fmt, args...);
-  return buf;
-}
-
 std::string describe(const TimelineEvent& e) {
-  return format("%9.3f s %9.3f m  %s %s -> %s (%s)", e.time, e.s_front, e.kind.c_str(), e.from.c_str(), e.to.c_str(),
-                e.source.c_str());
+  return format_text("%9.3f s %9.3f m  %s %s -> %s (%s)", e.time, e.s_front, e.kind.c_str(), e.from.c_str(),
+                     e.to.c_str(), e.source.c_str());
 }
 
 }  // namespace
@@ -90,8 +86,8 @@ std::string format_diff(const std::vector<EventDiff>& diff, const std::string& i
         break;
       case EventDiff::Op::Moved:
         out += indent + "~  " + describe(*d.run) +
-               format("   golden %.3f s %.3f m: ds %+.3f m, dt %+.3f s\n", d.golden->time, d.golden->s_front,
-                      d.run->s_front - d.golden->s_front, d.run->time - d.golden->time);
+               format_text("   golden %.3f s %.3f m: ds %+.3f m, dt %+.3f s\n", d.golden->time, d.golden->s_front,
+                           d.run->s_front - d.golden->s_front, d.run->time - d.golden->time);
         break;
       case EventDiff::Op::Missing:
         out += indent + "-  " + describe(*d.golden) + "   missing in this run\n";

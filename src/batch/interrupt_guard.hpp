@@ -1,4 +1,4 @@
-// Ctrl-C and SIGTERM while a batch's runs are under way (process_pool, worker_pool): while an
+// Ctrl-C and SIGTERM while a batch's runs are under way (child_supervisor, the Slurm wait): while an
 // InterruptGuard lives, SIGINT and SIGTERM only set a flag (no SA_RESTART, so a blocking poll or
 // read returns at once) and SIGPIPE is ignored (a worker that died must not take the batch with it
 // when it is written to) and SIGCHLD is at its default (so waitpid sees how each worker ended); the

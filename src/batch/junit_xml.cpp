@@ -6,14 +6,10 @@
 
 #include <pugixml.hpp>
 
+#include "core/number_text.hpp"
+
 namespace signalsim {
 namespace {
-
-std::string seconds_text(double seconds) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.3f", seconds);
-  return buf;
-}
 
 // `text` with every character XML 1.0 cannot hold (the control characters but tab, line feed and
 // carriage return) replaced by a space; pugixml escapes the rest (&, <, >, ").
@@ -56,7 +52,7 @@ void add_suite_attributes(pugi::xml_node node, const std::string& suite, const s
   add_attribute(node, "failures", std::to_string(failures));
   add_attribute(node, "errors", std::to_string(errors));
   add_attribute(node, "skipped", std::to_string(skipped));
-  add_attribute(node, "time", seconds_text(time));
+  add_attribute(node, "time", format_text("%.3f", time));
 }
 
 void add_test_case(pugi::xml_node suite_node, const std::string& suite, const JUnitCase& c) {
@@ -64,7 +60,7 @@ void add_test_case(pugi::xml_node suite_node, const std::string& suite, const JU
   add_attribute(node, "classname", suite);
   add_attribute(node, "name", c.name);
   add_attribute(node, "file", c.file);
-  add_attribute(node, "time", seconds_text(c.time));
+  add_attribute(node, "time", format_text("%.3f", c.time));
   if (const char* tag = outcome_tag(c.result)) {
     pugi::xml_node outcome = node.append_child(tag);
     add_attribute(outcome, "message", c.message);

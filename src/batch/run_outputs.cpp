@@ -206,7 +206,7 @@ nlohmann::ordered_json metrics_from_run_dir(const std::string& run_dir, const st
       record.lane_changes.push_back(std::move(r));
     }
   record.maneuver_lines = maneuver_lines(plan_lateral(scenario, route->plan, *route->net), record.lane_changes,
-                                         scenario.params.number("turn_signal_shift_length_threshold"));
+                                         scenario.run_params.decider.turn_signal_shift_length_threshold);
   return metrics_json(scenario, route->plan.map, record);
 }
 

@@ -1,5 +1,5 @@
 // A run's finished row kept in its own run directory, RUNDIR/row.csv: a back-end that runs the runs
-// elsewhere (a Slurm task, slurm_backend.hpp) writes it as each run ends, atomically, and the
+// elsewhere (a Slurm task, batch/slurm/slurm_backend.hpp) writes it as each run ends, atomically, and the
 // submitting side merges results.csv from these files. The file is a results.csv of one row (the
 // same cells, the same text), so the merged table equals the local back-end's byte for byte.
 // A run without the file did not finish.

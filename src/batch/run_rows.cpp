@@ -5,7 +5,7 @@
 #include <filesystem>
 
 #include "batch/run_outputs.hpp"
-#include "batch/text_format.hpp"
+#include "core/number_text.hpp"
 #include "report/atomic_file.hpp"
 #include "report/metric_columns.hpp"
 

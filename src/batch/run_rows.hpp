@@ -5,7 +5,7 @@
 #include <cstddef>
 #include <string>
 
-#include "batch/process_pool.hpp"
+#include "batch/child_supervisor.hpp"
 #include "batch/results_table.hpp"
 #include "batch/run_spec.hpp"
 

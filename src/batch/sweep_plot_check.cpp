@@ -159,7 +159,7 @@ void check_plot_metric(const Sweep& sweep, const SweepPlot& plot, const std::vec
       }
       std::map<std::string, int> counts = route->second.counts;
       for (const ManeuverLine& line : maneuver_lines(plan_lateral(scenario, route->second.plan, *net), {},
-                                                     scenario.params.number("turn_signal_shift_length_threshold")))
+                                                     scenario.run_params.decider.turn_signal_shift_length_threshold))
         ++counts[line.kind];
       for (const auto& [kind, n] : counts) most[kind] = std::max(most[kind], n);
       planned = true;

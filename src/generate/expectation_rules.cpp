@@ -5,7 +5,7 @@
 #include <cmath>
 #include <optional>
 
-#include "generate/number_text.hpp"
+#include "core/number_text.hpp"
 
 namespace signalsim::generate {
 namespace {
@@ -54,11 +54,13 @@ Activation guaranteed_activation(const Section& s, const SpeedProfile& speed, co
   }
   const double failing = grid(k + 1);
   if (s.search_override) {
-    a.why = "the lanelet's turn_signal_distance " + fixed(*s.search_override) + " m (docs/behaviour.md §T4.3)";
+    a.why =
+        "the lanelet's turn_signal_distance " + rounded_fixed(*s.search_override, 1) + " m (docs/behaviour.md §T4.3)";
   } else {
     const double v = speed.lower(failing);
-    a.why = "search " + fixed(p.search_time) + " s x " + fixed(v) + " m/s + " + fixed(s.search_distance) + " m = " +
-            fixed(search_at(failing)) + " m (docs/behaviour.md §T4.1/§T5.1) at the lowest speed the ego can have there (" +
+    a.why = "search " + rounded_fixed(p.search_time, 1) + " s x " + rounded_fixed(v, 1) + " m/s + " +
+            rounded_fixed(s.search_distance, 1) + " m = " + rounded_fixed(search_at(failing), 1) +
+            " m (docs/behaviour.md §T4.1/§T5.1) at the lowest speed the ego can have there (" +
             speed.lower_reason(failing) + ")";
   }
   return a;
@@ -86,9 +88,11 @@ Window initial_window(const Section& s, const SpeedProfile& speed, const RulePar
       w.possible_from = s.exit_desired_start;
       w.from = std::max(s.exit_desired_start, depart);
       w.from_why = s.exit_desired_start < s.start - 1e-6
-                       ? "from the start of the enable_exit_turn_signal chain at s " + fixed(s.exit_desired_start) +
+                       ? "from the start of the enable_exit_turn_signal chain at s " +
+                             rounded_fixed(s.exit_desired_start, 1) +
                              " (docs/behaviour.md §T5.3; the exit-signal marking from the previous exit)"
-                       : "from the exit lanelet's start: exit signals have no search distance (docs/behaviour.md §T5.3, §T12.1.8)";
+                       : "from the exit lanelet's start: exit signals have no search distance (docs/behaviour.md "
+                         "§T5.3, §T12.1.8)";
       break;
     case SectionKind::LaneChange: {
       const double v = speed.max_planned(s.lane_change_at - 150.0, s.lane_change_at) + kSpeedSlack;
@@ -205,17 +209,19 @@ Derivation derive_expectations(const std::vector<Section>& sections, const Route
       e.kind = s.target.junction.empty() ? Kind::ThroughLanelet : Kind::ThroughJunction;
       e.target = s.target.junction.empty() ? s.target.lanelet : s.target.junction;
       e.lead = std::max(0.0, floor_tenth(s.start - w.from - kMargin));
-      e.why = name_of(s) + " (s " + fixed(s.start) + "-" + fixed(s.end) + "): " + e.blinker + " from " + fixed(e.lead) +
-              " m before it (" + fixed(kMargin) + " m kept): " + w.from_why + "; " + w.to_why;
+      e.why = name_of(s) + " (s " + rounded_fixed(s.start, 1) + "-" + rounded_fixed(s.end, 1) + "): " + e.blinker +
+              " from " + rounded_fixed(e.lead, 1) + " m before it (" + rounded_fixed(kMargin, 1) +
+              " m kept): " + w.from_why + "; " + w.to_why;
     } else if (w.to - w.from >= std::max(kMinBlinkerOn, step_room(speed, w.from, w.to)) + 2 * kMargin) {
       e.kind = Kind::BlinkerOn;
       e.from_s = ceil_tenth(w.from + kMargin);
       e.to_s = floor_tenth(w.to - kMargin);
-      e.why = name_of(s) + " (s " + fixed(s.start) + "-" + fixed(s.end) + "): " + e.blinker + " with the front in [" +
-              fixed(e.from_s) + ", " + fixed(e.to_s) + "] (" + fixed(kMargin) + " m kept): " + w.from_why + "; " +
-              w.to_why + (named ? "" : " (no single junction or lanelet to name)");
+      e.why = name_of(s) + " (s " + rounded_fixed(s.start, 1) + "-" + rounded_fixed(s.end, 1) + "): " + e.blinker +
+              " with the front in [" + rounded_fixed(e.from_s, 1) + ", " + rounded_fixed(e.to_s, 1) + "] (" +
+              rounded_fixed(kMargin, 1) + " m kept): " + w.from_why + "; " + w.to_why +
+              (named ? "" : " (no single junction or lanelet to name)");
     } else {
-      d.notes.push_back(name_of(s) + " (s " + fixed(s.start) + "-" + fixed(s.end) +
+      d.notes.push_back(name_of(s) + " (s " + rounded_fixed(s.start, 1) + "-" + rounded_fixed(s.end, 1) +
                         "): no blinker expectation, the rules leave no stretch where its blinker is certain (" +
                         w.from_why + "; " + w.to_why + ")");
       continue;
@@ -236,7 +242,8 @@ Derivation derive_expectations(const std::vector<Section>& sections, const Route
     e.kind = Kind::NoBlinker;
     e.from_s = ceil_tenth(q.first);
     e.to_s = floor_tenth(q.second);
-    e.why = "no request can be valid with the front in [" + fixed(e.from_s) + ", " + fixed(e.to_s) +
+    e.why = "no request can be valid with the front in [" + rounded_fixed(e.from_s, 1) + ", " +
+            rounded_fixed(e.to_s, 1) +
             "]: it is outside every turn's, roundabout's and lane change's possible stretch (search distance at "
             "the upper speed, docs/behaviour.md §T4.1, §T5, §T8.2)";
     stated.push_back(q);

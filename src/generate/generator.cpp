@@ -8,7 +8,7 @@
 #include <set>
 
 #include "generate/net_graph.hpp"
-#include "generate/number_text.hpp"
+#include "core/number_text.hpp"
 #include "generate/output_dir.hpp"
 #include "scenario/countries.hpp"
 #include "report/expectations.hpp"
@@ -31,7 +31,7 @@ ParameterSet resolved_parameters(const std::string& country) {
   }
   // docs/behaviour.md §T5.2: with persistence the entry request lasts to the exit's end; the rules here do
   // not model that (no preset sets it).
-  if (params.boolean("turn_signal_roundabout_entry_indicator_persistence"))
+  if (run_parameters(params).decider.turn_signal_roundabout_entry_indicator_persistence)
     throw GenerateError("--country " + country +
                         ": turn_signal_roundabout_entry_indicator_persistence is true, which generate does not model");
   return params;
@@ -94,8 +94,8 @@ GenerateReport generate(const GenerateOptions& o) {
   if (!std::isfinite(o.scenario.max_speed) || !std::isfinite(o.scenario.straight))
     throw GenerateError("--max-speed and --straight must be finite numbers");
   if (!(o.min_length > 0.0) || !(o.max_length >= o.min_length) || !std::isfinite(o.max_length))
-    throw GenerateError("--min-length " + fixed(o.min_length, 0) + " and --max-length " + fixed(o.max_length, 0) +
-                        ": need 0 < min <= max");
+    throw GenerateError("--min-length " + rounded_fixed(o.min_length, 0) + " and --max-length " +
+                        rounded_fixed(o.max_length, 0) + ": need 0 < min <= max");
   const ParameterSet params = resolved_parameters(o.scenario.country);
   sumo::NetIndex net;
   try {
@@ -152,9 +152,9 @@ GenerateReport generate(const GenerateOptions& o) {
       const std::string name = file_name(stem, number, o.count);
       ScenarioDraft& d = made->draft;
       d.name = name.substr(0, name.size() - 5);
-      d.description = "generated route " + std::to_string(number) + " on " + stem + ": " + fixed(made->length) + " m, " +
-                      std::to_string(made->features.turns.size()) + " turn(s), " +
-                      std::to_string(made->features.lights.size()) + " light(s), " +
+      d.description = "generated route " + std::to_string(number) + " on " + stem + ": " +
+                      rounded_fixed(made->length, 1) + " m, " + std::to_string(made->features.turns.size()) +
+                      " turn(s), " + std::to_string(made->features.lights.size()) + " light(s), " +
                       std::to_string(made->features.roundabouts.size()) + " roundabout(s)";
       std::vector<std::string> header = {
           std::string(kScenarioMarker + 2) + " (route " + std::to_string(number) + ", random walk " +
@@ -185,9 +185,10 @@ GenerateReport generate(const GenerateOptions& o) {
   }
   for (const auto& [reason, n] : rejected) report.rejections.push_back({reason, n});
   if (report.files.empty())
-    throw GenerateError(o.net + ": no route of " + fixed(o.min_length, 0) + "-" + fixed(o.max_length, 0) +
-                        " m a passenger car can drive through " + to_string(o.through) + " (" +
-                        std::to_string(report.walks) + " random walks tried): nothing to generate");
+    throw GenerateError(o.net + ": no route of " + rounded_fixed(o.min_length, 0) + "-" +
+                        rounded_fixed(o.max_length, 0) + " m a passenger car can drive through " +
+                        to_string(o.through) + " (" + std::to_string(report.walks) +
+                        " random walks tried): nothing to generate");
   write_file_atomically((fs::path(o.out_dir) / kIndexFile).string(), index_text(o, report));
   return report;
 }

@@ -6,7 +6,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "generate/number_text.hpp"
+#include "core/number_text.hpp"
 
 namespace signalsim::generate {
 namespace fs = std::filesystem;
@@ -90,7 +90,7 @@ std::string index_text(const GenerateOptions& o, const GenerateReport& report) {
   out << "`" << o.command_line << "`\n\n";
   out << report.files.size() << " scenario(s) of " << o.count << " asked, from " << report.walks
       << " random walks (seed " << o.seed << ", through " << to_string(o.through) << ", "
-      << fixed(o.min_length, 0) << "-" << fixed(o.max_length, 0) << " m"
+      << rounded_fixed(o.min_length, 0) << "-" << rounded_fixed(o.max_length, 0) << " m"
       << (o.scenario.country.empty() ? "" : ", country " + o.scenario.country) << ").\n";
   out << "Run them with `signalsim batch " << o.out_dir << "` or `signalsim check " << o.out_dir
       << " --golden GOLDEN --update`. Each file's comment block says how every expectation's number was derived.\n\n";
@@ -102,7 +102,7 @@ std::string index_text(const GenerateOptions& o, const GenerateReport& report) {
   out << "| file | length [m] | turns | lights | roundabouts | lane changes | expectations | route |\n";
   out << "|---|---|---|---|---|---|---|---|\n";
   for (const GeneratedFile& f : report.files)
-    out << "| " << f.file << " | " << fixed(f.length) << " | " << joined(f.features.turns) << " | "
+    out << "| " << f.file << " | " << rounded_fixed(f.length, 1) << " | " << joined(f.features.turns) << " | "
         << joined(f.features.lights) << " | " << joined(f.features.roundabouts) << " | " << f.features.lane_changes
         << " | " << f.expectations << " | " << joined(f.route) << " |\n";
   return out.str();

@@ -6,7 +6,7 @@
 #include <sstream>
 
 #include "generate/expectation_rules.hpp"
-#include "generate/number_text.hpp"
+#include "core/number_text.hpp"
 #include "generate/route_facts.hpp"
 #include "generate/speed_profile.hpp"
 #include "planning/stop/jerk_limited_stop.hpp"
@@ -31,6 +31,7 @@ Scenario planning_scenario(const std::string& path, const std::string& net_path,
   s.net = net_path;
   s.country = o.country;
   s.params = params;
+  s.run_params = run_parameters(params);
   s.ego.route = edges;
   s.ego.max_speed = o.max_speed;
   s.ego.length = o.length;
@@ -82,7 +83,7 @@ std::string lanelet_list(const RouteMap& route) {
         (l.turn_direction == TurnDirection::Left || l.turn_direction == TurnDirection::Right))
       out << " (" << to_string(l.turn_direction) << ")";
     if (l.roundabout_role != RoundaboutRole::None) out << " [" << to_string(l.roundabout_role) << "]";
-    out << " " << fixed(l.s_start) << "-" << fixed(l.s_end());
+    out << " " << rounded_fixed(l.s_start, 1) << "-" << rounded_fixed(l.s_end(), 1);
   }
   return out.str();
 }
@@ -110,7 +111,7 @@ std::optional<RouteScenario> route_scenario(const sumo::NetIndex& net, const std
   }
   const RouteMap& route = plan.map;
   if (route.at(0).length < o.min_edge || route.at(route.size() - 1).length < o.min_edge) {
-    rejection.reason = "first or last edge shorter than " + fixed(o.min_edge, 0) + " m";
+    rejection.reason = "first or last edge shorter than " + rounded_fixed(o.min_edge, 0) + " m";
     return std::nullopt;
   }
 
@@ -119,7 +120,8 @@ std::optional<RouteScenario> route_scenario(const sumo::NetIndex& net, const std
     rejection.reason = "a light never lets the route's link go";
     return std::nullopt;
   }
-  const double v0 = depart_speed(route, facts.lights, params.number("stop_margin"), o);
+  const RunParameters& typed = planning.run_params;
+  const double v0 = depart_speed(route, facts.lights, typed.judge.stop_margin, o);
   const SpeedLimits limits{o.max_speed, o.accel, o.decel};
   // Stop zones from the planned speed without stops (the ego is no faster than that).
   const SpeedProfile free_run(route, 0.0, v0, limits, kStepLength, {});
@@ -131,14 +133,14 @@ std::optional<RouteScenario> route_scenario(const sumo::NetIndex& net, const std
   const SpeedProfile speed(route, 0.0, v0, limits, kStepLength, stops);
 
   SectionParameters section_params;
-  section_params.intersection_search_distance = params.number("turn_signal_intersection_search_distance");
-  section_params.roundabout_search_distance = params.number("turn_signal_roundabout_search_distance");
-  section_params.on_entry = params.text("turn_signal_roundabout_on_entry");
-  section_params.on_exit = params.text("turn_signal_roundabout_on_exit");
+  section_params.intersection_search_distance = typed.decider.turn_signal_intersection_search_distance;
+  section_params.roundabout_search_distance = typed.decider.turn_signal_roundabout_search_distance;
+  section_params.on_entry = typed.decider.turn_signal_roundabout_on_entry;
+  section_params.on_exit = typed.decider.turn_signal_roundabout_on_exit;
   const std::vector<Section> sections = route_sections(route, section_params, facts.lane_changes);
   RuleParameters rules;
-  rules.search_time = params.number("turn_signal_search_time");
-  rules.minimum_search_distance = params.number("turn_signal_minimum_search_distance");
+  rules.search_time = typed.decider.turn_signal_search_time;
+  rules.minimum_search_distance = typed.decider.turn_signal_minimum_search_distance;
   rules.base_link_to_front = o.base_link_to_front;
   rules.straight = o.straight;
   RouteFacts route_facts_for_rules{0.0, route.length(), facts.lights};
@@ -183,26 +185,30 @@ std::optional<RouteScenario> route_scenario(const sumo::NetIndex& net, const std
   d.expect = derivation.expectations;
 
   std::vector<std::string>& h = d.header;
-  h.push_back("Parameters: Autoware's defaults" + (o.country.empty() ? std::string() : " + country preset " + o.country) +
-              ": search " + fixed(rules.search_time) + " s x v + " + fixed(section_params.intersection_search_distance) +
-              " m (turns), + " + fixed(section_params.roundabout_search_distance) + " m (roundabout entries); entry " +
+  h.push_back("Parameters: Autoware's defaults" +
+              (o.country.empty() ? std::string() : " + country preset " + o.country) + ": search " +
+              rounded_fixed(rules.search_time, 1) + " s x v + " +
+              rounded_fixed(section_params.intersection_search_distance, 1) + " m (turns), + " +
+              rounded_fixed(section_params.roundabout_search_distance, 1) + " m (roundabout entries); entry " +
               section_params.on_entry + ", exit " + section_params.on_exit + "; exit signal from the previous exit: " +
-              (params.boolean("turn_signal_roundabout_exit_signal_from_previous_exit") ? "yes" : "no"));
-  h.push_back("Ego: " + fixed(o.length) + " m, front " + fixed(o.base_link_to_front) + " m ahead of base_link, at most " +
-              fixed(o.max_speed, 2) + " m/s, accel/decel " + fixed(o.accel) + "/" + fixed(o.decel) +
-              " m/s^2; departs at s 0 on " + route.at(0).lane_id + " at " + fixed(v0) +
+              (typed.decider.turn_signal_roundabout_exit_signal_from_previous_exit ? "yes" : "no"));
+  h.push_back("Ego: " + rounded_fixed(o.length, 1) + " m, front " + rounded_fixed(o.base_link_to_front, 1) +
+              " m ahead of base_link, at most " + rounded_fixed(o.max_speed, 2) + " m/s, accel/decel " +
+              rounded_fixed(o.accel, 1) + "/" + rounded_fixed(o.decel, 1) + " m/s^2; departs at s 0 on " +
+              route.at(0).lane_id + " at " + rounded_fixed(v0, 1) +
               " m/s (the least of its top speed, the lane limit, the speed planner's braking envelope, what SUMO "
               "can stop from by the edge's end and what a normal stop sheds before the first light)");
-  h.push_back("Duration " + fixed(duration, 0) + " s = " + fixed(kDurationFactor) + " x (" + fixed(speed.travel_time()) +
-              " s planned travel + " + fixed(waits) + " s of light cycles and yields) + " + fixed(kDurationSlack, 0) +
-              " s, in 10 s steps");
+  h.push_back("Duration " + rounded_fixed(duration, 0) + " s = " + rounded_fixed(kDurationFactor, 1) + " x (" +
+              rounded_fixed(speed.travel_time(), 1) + " s planned travel + " + rounded_fixed(waits, 1) +
+              " s of light cycles and yields) + " + rounded_fixed(kDurationSlack, 0) + " s, in 10 s steps");
   h.push_back("Speed: the step loop's planner (planning/speed_limit_planner) rolled out from the departure; where the "
               "ego may stop (lights, yields), braking may start earlier and it restarts from rest (generate/speed_profile)");
   h.push_back("Lanelets (route s of the front bumper, m):");
   split_lines(lanelet_list(route), h);
   if (!facts.stops.empty()) {
     h.push_back("Where the ego may stop (braking may start that far before):");
-    for (const StopPoint& s : speed.stops()) h.push_back("  " + s.what + " at s " + fixed(s.s) + " (" + fixed(s.braking) + " m)");
+    for (const StopPoint& s : speed.stops())
+      h.push_back("  " + s.what + " at s " + rounded_fixed(s.s, 1) + " (" + rounded_fixed(s.braking, 1) + " m)");
   }
   if (!sections.empty()) {
     h.push_back("Sections (front bumper; possible: its request may be valid; certain: its blinker is sure to show):");
@@ -210,11 +216,13 @@ std::optional<RouteScenario> route_scenario(const sumo::NetIndex& net, const std
       const Section& s = sections[i];
       const SectionWindows& w = derivation.windows[i];
       std::string line = "  " + std::string(to_string(s.kind)) + " " + s.id + " " + to_string(s.side) + ", s " +
-                         fixed(s.start) + "-" + fixed(s.end);
-      if (s.side != Side::None) line += ": possible " + fixed(w.possible_from) + "-" + fixed(w.possible_to);
+                         rounded_fixed(s.start, 1) + "-" + rounded_fixed(s.end, 1);
+      if (s.side != Side::None)
+        line += ": possible " + rounded_fixed(w.possible_from, 1) + "-" + rounded_fixed(w.possible_to, 1);
       if (s.side == Side::Left || s.side == Side::Right)
-        line += w.guaranteed_to > w.guaranteed_from ? ", certain " + fixed(w.guaranteed_from) + "-" + fixed(w.guaranteed_to)
-                                                    : ", never certain";
+        line += w.guaranteed_to > w.guaranteed_from
+                    ? ", certain " + rounded_fixed(w.guaranteed_from, 1) + "-" + rounded_fixed(w.guaranteed_to, 1)
+                    : ", never certain";
       h.push_back(line);
     }
   }

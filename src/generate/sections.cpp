@@ -1,34 +1,19 @@
-// A route's sections: turn groups, roundabout entries and exits, lane changes.
+// A route's sections: turn groups, roundabout entries and exits (the decider's own,
+// turn_signal/signal_sections), lane changes.
 #include "generate/sections.hpp"
 
 #include <algorithm>
 #include <map>
 
+#include "turn_signal/signal_sections.hpp"
+
 namespace signalsim::generate {
 namespace {
 
-Side side_of(TurnDirection d) {
-  return d == TurnDirection::Left ? Side::Left : d == TurnDirection::Right ? Side::Right : Side::None;
-}
-
-Side side_of_setting(const std::string& value) {  // "Left" / "Right" / anything else (docs/behaviour.md §T1.4)
-  return value == "Left" ? Side::Left : value == "Right" ? Side::Right : Side::None;
-}
-
-// docs/behaviour.md §T5.2 tag format: brackets, commas and spaces all separate.
-bool tag_lists(const Lanelet& entry, const std::string& key, const std::vector<std::string>& names) {
-  const auto it = entry.params.find(key);
-  if (it == entry.params.end()) return false;
-  std::string token;
-  for (const char c : it->second + ' ') {
-    if (c == ',' || c == ' ' || c == '[' || c == ']') {
-      if (!token.empty() && std::find(names.begin(), names.end(), token) != names.end()) return true;
-      token.clear();
-    } else {
-      token += c;
-    }
-  }
-  return false;
+Side side_of(TurnIndicator command) {
+  return command == TurnIndicator::EnableLeft    ? Side::Left
+         : command == TurnIndicator::EnableRight ? Side::Right
+                                                 : Side::None;
 }
 
 struct Spans {
@@ -76,10 +61,6 @@ Section section_of(const RouteMap& route, const Spans& spans, SectionKind kind, 
   return s;
 }
 
-bool same_connection(const Lanelet& a, const Lanelet& b) {
-  return a.roundabout_role == b.roundabout_role && a.roundabout_id == b.roundabout_id;
-}
-
 }  // namespace
 
 const char* to_string(Side side) {
@@ -116,66 +97,16 @@ std::vector<Section> route_sections(const RouteMap& route, const SectionParamete
                                     const std::vector<LaneChangeFact>& lane_changes) {
   std::vector<Section> out;
   const Spans spans = spans_of(route);
-  for (std::size_t i = 0; i < route.size(); ++i) {
-    const Lanelet& l = route.at(i);
-    if (l.roundabout_role == RoundaboutRole::Entry || l.roundabout_role == RoundaboutRole::Exit) {
-      std::size_t last = i;
-      while (last + 1 < route.size() && same_connection(route.at(last + 1), l)) ++last;
-      if (l.roundabout_role == RoundaboutRole::Entry) {
-        Section s = section_of(route, spans, SectionKind::RoundaboutEntry, i, last);
-        s.search_distance = params.roundabout_search_distance;
-        s.side = side_of_setting(params.on_entry);
-        // The exit this route takes: the last lanelet of this roundabout after the entry (§T5.2), named
-        // by its connection's lanelets and the normal edge it leads onto (signalsim's SUMO names).
-        std::optional<std::size_t> exit;
-        for (std::size_t n = last + 1; n < route.size() && route.at(n).roundabout_role != RoundaboutRole::None &&
-                                       route.at(n).roundabout_id == l.roundabout_id;
-             ++n)
-          exit = n;
-        if (exit && !l.roundabout_id.empty()) {
-          std::vector<std::string> names;
-          std::size_t front = *exit;
-          if (route.at(*exit).roundabout_role == RoundaboutRole::Exit)
-            while (front > 0 && same_connection(route.at(front - 1), route.at(*exit))) --front;
-          for (std::size_t k = front; k <= *exit; ++k) names.push_back(route.at(k).lane_id);
-          for (std::size_t k = *exit + 1; k < route.size(); ++k)
-            if (!route.at(k).is_internal) {
-              names.push_back(route.at(k).edge_id);
-              break;
-            }
-          if (tag_lists(l, "exit_turn_signal_left", names)) s.side = Side::Left;
-          else if (tag_lists(l, "exit_turn_signal_right", names)) s.side = Side::Right;
-        }
-        out.push_back(std::move(s));
-      } else {
-        Section s = section_of(route, spans, SectionKind::RoundaboutExit, i, last);
-        s.side = side_of_setting(params.on_exit);
-        // docs/behaviour.md §T5.3: the earliest route predecessor of the chain tagged enable_exit_turn_signal.
-        std::size_t z = i;
-        while (z > 0) {
-          const auto& p = route.at(z - 1).params;
-          const auto it = p.find("enable_exit_turn_signal");
-          if (it == p.end() || it->second != "true") break;
-          --z;
-        }
-        s.exit_desired_start = route.at(z).s_start;
-        out.push_back(std::move(s));
-      }
-      i = last;
-      continue;
-    }
-    if (l.roundabout_role != RoundaboutRole::None) continue;
-    const Side side = side_of(l.turn_direction);
-    if (side == Side::None) continue;
-    std::size_t last = i;  // docs/behaviour.md §T4.2 grouping
-    while (last + 1 < route.size() && route.at(last + 1).roundabout_role == RoundaboutRole::None &&
-           route.at(last + 1).turn_direction == l.turn_direction)
-      ++last;
-    Section s = section_of(route, spans, SectionKind::Turn, i, last);
-    s.side = side;
-    s.search_distance = params.intersection_search_distance;
+  for (const RouteSignalSection& r : route_signal_sections(route, params.on_entry, params.on_exit)) {
+    const SectionKind kind = r.kind == SignalSectionKind::RoundaboutEntry  ? SectionKind::RoundaboutEntry
+                             : r.kind == SignalSectionKind::RoundaboutExit ? SectionKind::RoundaboutExit
+                                                                           : SectionKind::Turn;
+    Section s = section_of(route, spans, kind, r.front_index, r.back_index);
+    s.side = side_of(r.command);
+    if (kind == SectionKind::Turn) s.search_distance = params.intersection_search_distance;
+    if (kind == SectionKind::RoundaboutEntry) s.search_distance = params.roundabout_search_distance;
+    if (kind == SectionKind::RoundaboutExit) s.exit_desired_start = route.at(r.desired_start_index).s_start;
     out.push_back(std::move(s));
-    i = last;
   }
   for (const LaneChangeFact& lc : lane_changes) {
     Section s;

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "generate/number_text.hpp"
+#include "core/number_text.hpp"
 
 namespace signalsim::generate {
 
@@ -71,7 +71,7 @@ std::string SpeedProfile::lower_reason(double s) const {
       }
     }
   if (restart) return "it may be restarting from rest at " + restart->what;
-  return "the planned speed less " + fixed(kSpeedSlack, 1) + " m/s";
+  return "the planned speed less " + rounded_fixed(kSpeedSlack, 1) + " m/s";
 }
 
 double SpeedProfile::max_planned(double from, double to) const {

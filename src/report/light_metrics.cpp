@@ -6,7 +6,7 @@
 #include <limits>
 #include <map>
 
-#include "report/rounding.hpp"
+#include "core/number_text.hpp"
 
 namespace signalsim {
 
@@ -24,7 +24,7 @@ std::vector<LightMetrics> measure_lights(const RouteMap& route, const RunRecord&
     LightMetrics m;
     m.id = l.traffic_light->tls_id;
     m.link_index = l.traffic_light->link_index;
-    m.stop_line_s = round3(l.stop_line_s());
+    m.stop_line_s = rounded(l.stop_line_s(), 3);
     std::size_t k = from_row;  // the first row at or beyond the stop line
     while (k < rows.size() && rows[k].s_front < m.stop_line_s) ++k;
     m.reached = k < rows.size() && k > 0;
@@ -76,7 +76,7 @@ std::vector<LightMetrics> measure_lights(const RouteMap& route, const RunRecord&
     for (const LightStop& stop : record.stops)
       if (stop.tl_id == m.id && stop.time >= t_from && stop.time <= t_to && stop.queued_behind.empty() &&
           stop.waiting_at.empty()) {
-        m.stop_position_error = round3(stop.error);
+        m.stop_position_error = rounded(stop.error, 3);
         break;
       }
     for (const RedLightViolation& v : record.red_violations)

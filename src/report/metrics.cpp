@@ -7,7 +7,7 @@
 #include <string>
 
 #include "report/outputs.hpp"
-#include "report/rounding.hpp"
+#include "core/number_text.hpp"
 
 namespace signalsim {
 namespace {
@@ -24,7 +24,7 @@ RunMetrics compute_metrics(const Scenario& scenario, const RouteMap& route, cons
   const auto& rows = record.rows;
   // The acceleration as timeline.csv has it, so that metrics recomputed from the files (batch's
   // fallback) are the run's own: the jerk divides its rounding by the step.
-  const auto written = [](double v) { return std::stod(fixed(v, 3)); };
+  const auto written = [](double v) { return as_written(v, 3); };
   double min_accel = 0.0, max_jerk = 0.0;
   for (std::size_t i = 0; i < rows.size(); ++i) {
     min_accel = std::min(min_accel, written(rows[i].accel));
@@ -32,15 +32,15 @@ RunMetrics compute_metrics(const Scenario& scenario, const RouteMap& route, cons
       max_jerk = std::max(max_jerk, std::abs(written(rows[i].accel) - written(rows[i - 1].accel)) /
                                         (rows[i].time - rows[i - 1].time));
   }
-  m.max_decel = round3(-min_accel);
-  m.max_jerk = round3(max_jerk);
+  m.max_decel = rounded(-min_accel, 3);
+  m.max_jerk = rounded(max_jerk, 3);
   m.collisions = record.collisions;
   m.blinker_events = static_cast<int>(std::count_if(record.events.begin(), record.events.end(),
                                                     [](const TimelineEvent& e) { return e.kind == "blinker"; }));
   m.flickers = count_flickers(rows, scenario.step_length);
 
   // The route's sections and the maneuvers' lateral motions (front bumper at base_link's start), by start.
-  std::vector<SignalSection> sections = signal_sections(route, scenario.params);
+  std::vector<SignalSection> sections = signal_sections(route, scenario.run_params.decider);
   for (const ManeuverLine& line : record.maneuver_lines)
     sections.push_back({line.kind, line.id, line.blinker, line.s_start + record.base_link_to_front, line.s_end, {}});
   std::stable_sort(sections.begin(), sections.end(),
@@ -67,8 +67,8 @@ nlohmann::ordered_json to_json(const RunMetrics& m) {
     j["kind"] = s.section.kind;
     j["id"] = s.section.id;
     j["blinker"] = to_string(s.section.blinker);
-    j["s_start"] = round3(s.section.s_start);
-    j["s_end"] = round3(s.section.s_end);
+    j["s_start"] = rounded(s.section.s_start, 3);
+    j["s_end"] = rounded(s.section.s_end, 3);
     j["lanelets"] = s.section.lanelets;
     j["reached"] = s.reached;
     j["lead_distance"] = optional_json(s.lead_distance);

@@ -7,7 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "report/atomic_file.hpp"
-#include "report/fixed_text.hpp"
+#include "core/number_text.hpp"
 #include "report/metrics.hpp"
 #include "scenario/take_over.hpp"
 #include "session/sumo_session.hpp"
@@ -108,7 +108,7 @@ RunStatus run_status(const std::vector<ExpectationResult>& results) {
   return RunStatus::Passed;
 }
 
-// One row a step: numbers appended in place (fixed_text.hpp), no temporary strings.
+// One row a step: numbers appended in place (core/number_text.hpp), no temporary strings.
 void write_timeline_csv(const std::string& path, const std::vector<TimelineRow>& rows, bool v2i_column) {
   std::string out =
       "time,s_front,x,y,speed,accel,edge,lane,lateral_offset,blinker,blinker_source,sumo_signals,"
@@ -204,10 +204,10 @@ void write_run_outputs(const std::string& dir, const Scenario& scenario, const s
   ego["id"] = departed.id.empty() ? std::string(sumo::kDefaultEgoId) : departed.id;
   ego["taken_over"] = !scenario.ego.id.empty();
   ego["type"] = departed.type;
-  ego["length"] = std::stod(fixed(scenario.ego.length, 3));
+  ego["length"] = as_written(scenario.ego.length, 3);
   ego["width"] = departed.width;
-  ego["base_link_to_front"] = std::stod(fixed(scenario.ego.base_link_to_front, 3));
-  ego["base_link_to_rear"] = std::stod(fixed(scenario.ego.length - scenario.ego.base_link_to_front, 3));
+  ego["base_link_to_front"] = as_written(scenario.ego.base_link_to_front, 3);
+  ego["base_link_to_rear"] = as_written(scenario.ego.length - scenario.ego.base_link_to_front, 3);
   if (!scenario.ego.vehicle_info.empty()) {
     ego["vehicle_info"] = scenario.ego.vehicle_info;
     ego["vehicle_info_unused_keys"] = scenario.ego.vehicle_info_unused;
@@ -217,19 +217,19 @@ void write_run_outputs(const std::string& dir, const Scenario& scenario, const s
   ego["decel"] = scenario.ego.decel;
   ego["type_decel"] = departed.decel;
   ego["emergency_decel"] = scenario.ego.emergency_decel;
-  ego["depart_time"] = std::stod(fixed(departed.depart_time, 3));
+  ego["depart_time"] = as_written(departed.depart_time, 3);
   ego["depart_lane"] = departed.depart_lane;
-  ego["depart_pos"] = std::stod(fixed(departed.depart_pos, 3));
-  ego["depart_speed"] = std::stod(fixed(departed.depart_speed, 3));
+  ego["depart_pos"] = as_written(departed.depart_pos, 3);
+  ego["depart_speed"] = as_written(departed.depart_speed, 3);
   ego["source"] = ego_sources(scenario, departed.type);
   summary["ego"] = ego;
   summary["route"] = {{"edges", scenario.ego.route},
                       {"lanelets", plan.map.size()},
-                      {"length", std::stod(fixed(plan.map.length(), 3))},
+                      {"length", as_written(plan.map.length(), 3)},
                       {"lane_changes", plan.lane_changes}};
   nlohmann::ordered_json counts;
   counts["steps"] = record.rows.size();
-  counts["simulated_time"] = record.rows.empty() ? 0.0 : std::stod(fixed(record.rows.back().time, 3));
+  counts["simulated_time"] = record.rows.empty() ? 0.0 : as_written(record.rows.back().time, 3);
   counts["arrived"] = record.arrived;
   counts["collisions"] = record.collisions;
   counts["off_route_steps"] = record.off_route_steps;
@@ -261,14 +261,14 @@ void write_run_outputs(const std::string& dir, const Scenario& scenario, const s
   nlohmann::ordered_json not_arrived = nullptr;
   if (const auto& n = record.not_arrived) {
     nlohmann::ordered_json leader = nullptr;
-    if (n->leader) leader = {{"id", n->leader->id}, {"gap", std::stod(fixed(n->leader->gap, 3))}};
+    if (n->leader) leader = {{"id", n->leader->id}, {"gap", as_written(n->leader->gap, 3)}};
     not_arrived = {{"reason", n->reason},
                    {"detail", n->detail},
-                   {"time", std::stod(fixed(n->time, 3))},
-                   {"s_front", std::stod(fixed(n->s_front, 3))},
+                   {"time", as_written(n->time, 3)},
+                   {"s_front", as_written(n->s_front, 3)},
                    {"edge", n->edge},
                    {"lane", n->lane},
-                   {"at_rest_for", std::stod(fixed(n->at_rest_for, 3))},
+                   {"at_rest_for", as_written(n->at_rest_for, 3)},
                    {"held_by", n->held_by},
                    {"leader", leader},
                    {"junction", n->junction}};
@@ -277,16 +277,16 @@ void write_run_outputs(const std::string& dir, const Scenario& scenario, const s
   {  // where SUMO left the lane plan (its own lane changes; with signalsim, another connection)
     nlohmann::ordered_json off_plan = nlohmann::ordered_json::array();
     for (const OffPlanStretch& o : record.off_plan)
-      off_plan.push_back({{"lane", o.lane}, {"planned_lane", o.planned_lane}, {"s_from", std::stod(fixed(o.s_from, 3))},
-                          {"s_to", std::stod(fixed(o.s_to, 3))}, {"steps", o.steps}});
+      off_plan.push_back({{"lane", o.lane}, {"planned_lane", o.planned_lane}, {"s_from", as_written(o.s_from, 3)},
+                          {"s_to", as_written(o.s_to, 3)}, {"steps", o.steps}});
     summary["off_plan"] = off_plan;
   }
   nlohmann::ordered_json lights;
   nlohmann::ordered_json stops = nlohmann::ordered_json::array();
   for (const LightStop& stop : record.stops)
-    stops.push_back({{"light", stop.tl_id}, {"time", std::stod(fixed(stop.time, 3))},
-                     {"stop_s", std::stod(fixed(stop.stop_s, 3))}, {"rest_s", std::stod(fixed(stop.rest_s, 3))},
-                     {"error", std::stod(fixed(stop.error, 3))},
+    stops.push_back({{"light", stop.tl_id}, {"time", as_written(stop.time, 3)},
+                     {"stop_s", as_written(stop.stop_s, 3)}, {"rest_s", as_written(stop.rest_s, 3)},
+                     {"error", as_written(stop.error, 3)},
                      {"decision", stop.by_judge ? nlohmann::ordered_json(to_string(stop.decision)) : nullptr},
                      {"level", stop.by_judge ? nlohmann::ordered_json(to_string(stop.worst_level)) : nullptr},
                      {"queued_behind", stop.queued_behind.empty() ? nlohmann::ordered_json(nullptr)
@@ -296,8 +296,8 @@ void write_run_outputs(const std::string& dir, const Scenario& scenario, const s
   lights["stops"] = stops;
   nlohmann::ordered_json violations = nlohmann::ordered_json::array();
   for (const RedLightViolation& v : record.red_violations)
-    violations.push_back({{"light", v.tl_id}, {"time", std::stod(fixed(v.time, 3))},
-                          {"s_front", std::stod(fixed(v.s_front, 3))}});
+    violations.push_back({{"light", v.tl_id}, {"time", as_written(v.time, 3)},
+                          {"s_front", as_written(v.s_front, 3)}});
   lights["red_light_violations"] = violations;
   std::size_t emergency = 0;
   for (const TimelineEvent& e : record.events) emergency += e.kind == "light" && e.to == "emergency_stop";
@@ -312,31 +312,31 @@ void write_run_outputs(const std::string& dir, const Scenario& scenario, const s
       }
     nlohmann::ordered_json first_stop = nullptr;
     if (first)
-      first_stop = {{"light", first->tl_id}, {"time", std::stod(fixed(first->time, 3))},
-                    {"s_front", std::stod(fixed(first->s_front, 3))},
+      first_stop = {{"light", first->tl_id}, {"time", as_written(first->time, 3)},
+                    {"s_front", as_written(first->s_front, 3)},
                     {"light_state", first->tl_state ? std::string(1, first->tl_state) : std::string()},
-                    {"time_to_red", first->v2i_time_to_red ? nlohmann::ordered_json(std::stod(fixed(*first->v2i_time_to_red, 3)))
+                    {"time_to_red", first->v2i_time_to_red ? nlohmann::ordered_json(as_written(*first->v2i_time_to_red, 3))
                                                            : nlohmann::ordered_json(nullptr)},
-                    {"stop_distance", first->stop_distance ? nlohmann::ordered_json(std::stod(fixed(*first->stop_distance, 3)))
+                    {"stop_distance", first->stop_distance ? nlohmann::ordered_json(as_written(*first->stop_distance, 3))
                                                            : nlohmann::ordered_json(nullptr)}};
     lights["v2i"] = {{"stop_steps", stop_steps}, {"first_stop", first_stop}};
   }
   summary["lights"] = lights;
   // Each lane change as executed (docs/behaviour.md §T8.2): blinker, approval, prepare, lateral motion.
   nlohmann::ordered_json lane_changes = nlohmann::ordered_json::array();
-  const auto rounded = [](const std::optional<double>& v) -> nlohmann::ordered_json {
-    return v ? nlohmann::ordered_json(std::stod(fixed(*v, 3))) : nlohmann::ordered_json(nullptr);
+  const auto optional_written = [](const std::optional<double>& v) -> nlohmann::ordered_json {
+    return v ? nlohmann::ordered_json(as_written(*v, 3)) : nlohmann::ordered_json(nullptr);
   };
   for (const LaneChangeRecord& lc : record.lane_changes)
     lane_changes.push_back({{"edge", lc.edge},
                             {"phase", lc.phase},
-                            {"shift", std::stod(fixed(lc.shift, 3))},
-                            {"blinker_on_time", rounded(lc.blinker_on_time)},
-                            {"approval_time", rounded(lc.approval_time)},
-                            {"approval_s_base", rounded(lc.approval_s_base)},
-                            {"prepare_duration", rounded(lc.prepare_duration)},
-                            {"lateral_start_s", rounded(lc.start)},
-                            {"lateral_end_s", rounded(lc.end)}});
+                            {"shift", as_written(lc.shift, 3)},
+                            {"blinker_on_time", optional_written(lc.blinker_on_time)},
+                            {"approval_time", optional_written(lc.approval_time)},
+                            {"approval_s_base", optional_written(lc.approval_s_base)},
+                            {"prepare_duration", optional_written(lc.prepare_duration)},
+                            {"lateral_start_s", optional_written(lc.start)},
+                            {"lateral_end_s", optional_written(lc.end)}});
   summary["lane_changes"] = lane_changes;
   summary["metrics"] = metrics_json(scenario, plan.map, record);
   nlohmann::ordered_json expectations = nlohmann::ordered_json::array();

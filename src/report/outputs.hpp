@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "report/fixed_text.hpp"  // fixed(): numbers as the files write them
+#include "core/number_text.hpp"  // fixed(): numbers as the files write them
 #include "scenario/scenario.hpp"
 #include "report/timeline.hpp"
 #include "route/route_builder.hpp"

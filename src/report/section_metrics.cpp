@@ -5,7 +5,7 @@
 #include <limits>
 #include <utility>
 
-#include "report/rounding.hpp"
+#include "core/number_text.hpp"
 
 namespace signalsim {
 namespace {
@@ -82,9 +82,9 @@ SectionMetrics measure_section(const SignalSection& section, const RunRecord& re
   if (k > 0 && rows[k].s_front > rows[k - 1].s_front)
     t_enter = rows[k - 1].time + (section.s_start - rows[k - 1].s_front) /
                                      (rows[k].s_front - rows[k - 1].s_front) * (rows[k].time - rows[k - 1].time);
-  m.lead_distance = round3(section.s_start - rows[first].s_front);
-  m.lead_time = round3(t_enter - rows[first].time);
-  m.time_on = round3(duration_of(rows, first, last, step));
+  m.lead_distance = rounded(section.s_start - rows[first].s_front, 3);
+  m.lead_time = rounded(t_enter - rows[first].time, 3);
+  m.time_on = rounded(duration_of(rows, first, last, step), 3);
   return m;
 }
 

@@ -1,12 +1,14 @@
-// The route's signal sections: the stretches of the route that ask for a blinker, found from the
-// route alone (RouteMap), in route order:
+// The route's signal sections for the metrics: the stretches of the route that ask for a blinker,
+// found from the route alone (RouteMap), in route order, by the decider's own rules
+// (turn_signal/signal_sections.hpp):
 //
 //   turn              consecutive turn lanelets with the same left/right direction (a left turn's
 //                     two chained internal lanes are one section), outside roundabouts; the expected
 //                     blinker is the direction
-//   roundabout_entry  an entry lanelet; expected blinker turn_signal_roundabout_on_entry, or
-//                     left/right when the entry's exit_turn_signal_left/right lists the exit lanelet
-//                     the route takes (docs/behaviour.md §T5.2)
+//   roundabout_entry  an entry lanelet (one section per lanelet of the connection); expected blinker
+//                     turn_signal_roundabout_on_entry, or left/right when the entry's
+//                     exit_turn_signal_left/right names the exit the route takes: one of its lanelets or
+//                     the edge it leads onto (docs/behaviour.md §T5.2)
 //   roundabout_exit   an exit lanelet; expected blinker turn_signal_roundabout_on_exit
 //
 // A run adds its maneuvers' lateral motions (lane_change, avoidance, pull_out, pull_over) from
@@ -17,7 +19,7 @@
 #include <vector>
 
 #include "map/route_map.hpp"
-#include "scenario/parameters.hpp"
+#include "turn_signal/turn_signal_parameters.hpp"
 #include "scenario/scenario.hpp"  // Blinker
 
 namespace signalsim {
@@ -33,6 +35,6 @@ struct SignalSection {
 };
 
 /// The route's signal sections in route order. `params` gives the roundabout on_entry/on_exit.
-std::vector<SignalSection> signal_sections(const RouteMap& route, const ParameterSet& params);
+std::vector<SignalSection> signal_sections(const RouteMap& route, const TurnSignalParameters& params);
 
 }  // namespace signalsim

@@ -159,6 +159,8 @@ TurnSignalParameters turn_signal_parameters(const ParameterSet& set, double base
   p.turn_signal_remaining_distance_to_bound_threshold =
       set.number("turn_signal_remaining_distance_to_bound_threshold");
   p.turn_signal_on_swerving = set.boolean("turn_signal_on_swerving");
+  p.turn_signal_roundabout_exit_signal_from_previous_exit =
+      set.boolean("turn_signal_roundabout_exit_signal_from_previous_exit");
   return p;
 }
 
@@ -202,6 +204,19 @@ TrafficLightJudgeParameters traffic_light_parameters(const ParameterSet& set) {
   p.v2i.required_time_to_departure = set.number("v2i.required_time_to_departure");
   p.stop_release_confirmation_time = set.number("stop_release_confirmation_time");  // signalsim's own
   return p;
+}
+
+RunParameters run_parameters(const ParameterSet& set) {
+  RunParameters r;
+  r.decider = turn_signal_parameters(set, r.decider.base_link_to_front);
+  const BehaviorSignalParameters footprint;  // the struct's: the ego's is set per scenario
+  r.behavior = behavior_parameters(set, r.decider, 0.0, footprint.vehicle_width);
+  r.behavior.rear_overhang = footprint.rear_overhang;
+  r.judge = traffic_light_parameters(set);
+  r.lane_change_safety_rear_gap = set.number("lane_change_safety_rear_gap");
+  r.lane_change_safety_front_gap = set.number("lane_change_safety_front_gap");
+  r.stuck_rest_time = set.number("stuck_rest_time");
+  return r;
 }
 
 }  // namespace signalsim

@@ -1,5 +1,6 @@
 // Parameter sets with Autoware's names: a fixed schema (name, type, default, range), filled from
-// parameter files and inline overrides, each value checked where it is read.
+// parameter files and inline overrides, each value checked where it is read; and the typed structs
+// made from a resolved set (RunParameters), the only form the rooms above scenario/ read.
 #pragma once
 
 #include <map>
@@ -91,6 +92,29 @@ class ParameterSet {
   std::map<std::string, std::string> origins_;
   std::vector<UnusedParameters> unused_;
 };
+
+/// A resolved set as typed values with units: everything the decider, the behaviour modules, the
+/// judge and the run read. Made once from a resolved set (run_parameters(); a scenario keeps it as
+/// Scenario::run_params when it is read); outside scenario/ no parameter is read by its name.
+/// The ego's footprint is not a parameter: `decider.base_link_to_front` and the footprint fields of
+/// `behavior` keep their struct defaults here, and turn_signal_parameters(const Scenario&) /
+/// behavior_parameters(const Scenario&) (scenario.hpp) give the structs with the ego's.
+struct RunParameters {
+  TurnSignalParameters decider;        ///< the turn-signal decider's (docs/behaviour.md §T10)
+  BehaviorSignalParameters behavior;   ///< lane change, avoidance, start planner (docs/behaviour.md §T8.2)
+  TrafficLightJudgeParameters judge;   ///< the traffic-light judge's (docs/behaviour.md §L4)
+  /// [m] the target lane is kept free this far behind the rear bumper before a lane change is approved.
+  double lane_change_safety_rear_gap = 10.0;
+  /// [m] the target lane is kept free this far beyond the lane change's end before it is approved.
+  double lane_change_safety_front_gap = 10.0;
+  /// [s] the ego at rest this long while signalsim commands it to drive ends the run as not arrived (0: off).
+  double stuck_rest_time = 60.0;
+
+  bool operator==(const RunParameters&) const = default;
+};
+
+/// The typed form of a resolved set (every field from its schema entry).
+RunParameters run_parameters(const ParameterSet& set);
 
 /// The judge's parameters from a resolved set.
 TrafficLightJudgeParameters traffic_light_parameters(const ParameterSet& set);

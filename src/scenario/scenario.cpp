@@ -1,7 +1,8 @@
 // Loading a scenario file: the overrides applied to its YAML tree, then each part read through its
 // key table (scenario_keys.hpp) in a fixed order - the simulation keys, the ego, obstacles and
-// maneuvers, the traffic-light inputs, parameters, expectations - and last the check that the top
-// level holds no other key.
+// maneuvers, the traffic-light inputs, parameters (kept by name and typed), expectations - and last
+// the check that the top level holds no other key. Also the decider's and the behaviour modules'
+// parameters with the ego's footprint.
 #include "scenario/scenario.hpp"
 
 #include "scenario/countries.hpp"
@@ -42,6 +43,7 @@ void read_parameters(const YamlFields& top, const std::string& path, const YAML:
   if (parameter_overrides.size() > 0) s.params.apply(parameter_overrides, ParameterOrigin{"--set", "--set"});
   s.params.check_consistency(path);
   for (const UnusedParameters& file : s.params.unused()) s.notes.push_back(unused_parameters_note(file));
+  s.run_params = run_parameters(s.params);
 }
 
 }  // namespace
@@ -73,6 +75,20 @@ Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrid
   top.finish();
   for (const std::string& note : s.notes) note_once(note);  // the scenario loaded: say what it ignored
   return s;
+}
+
+TurnSignalParameters turn_signal_parameters(const Scenario& scenario) {
+  TurnSignalParameters p = scenario.run_params.decider;
+  p.base_link_to_front = scenario.ego.base_link_to_front;
+  return p;
+}
+
+BehaviorSignalParameters behavior_parameters(const Scenario& scenario) {
+  BehaviorSignalParameters p =
+      behavior_signal_parameters(turn_signal_parameters(scenario), scenario.run_params.behavior);
+  p.rear_overhang = scenario.ego.length - scenario.ego.base_link_to_front;
+  p.vehicle_width = kObstacleWidth;
+  return p;
 }
 
 }  // namespace signalsim

@@ -225,6 +225,9 @@ struct Scenario {
   V2iChannelParameters v2i_channel;
   std::map<std::string, double> light_offsets;  ///< `light_offsets: {tls: seconds}` program shifts
   ParameterSet params;                  ///< defaults, params.files, the country, params.set, overrides
+  /// `params` typed, made once when they are read: what the run, the report and generate read (the
+  /// decider's and the modules' with the ego's footprint: the functions below).
+  RunParameters run_params;
   /// Facts about the input that are not errors (unused keys of parameter files, vehicle_info values
   /// replaced by ego keys); printed once each as "signalsim: note: ..." (scenario/notes).
   std::vector<std::string> notes;
@@ -241,5 +244,11 @@ struct Scenario {
 /// Reads and checks a scenario file. Throws InputError naming the file, line and key for a missing
 /// file, malformed YAML, an unknown or missing key, a wrong type or an out-of-range value.
 Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrides = {});
+
+/// The decider's parameters for this scenario: run_params.decider with the ego's base_link_to_front.
+TurnSignalParameters turn_signal_parameters(const Scenario& scenario);
+/// The behaviour modules' parameters for this scenario: run_params.behavior with the decider's shared
+/// values and the ego's footprint (its length, base_link_to_front, SUMO's default width kObstacleWidth).
+BehaviorSignalParameters behavior_parameters(const Scenario& scenario);
 
 }  // namespace signalsim

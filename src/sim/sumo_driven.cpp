@@ -129,7 +129,7 @@ RunRecord observe_sumo_drive(const StartedRun& run, const sumo::NetIndex& net) {
   record.sumo.ego = session.ego_vehicle();
   record.sumo.args = run.config.extra_args;
   record.sumo.log = run.config.log_file;
-  LightWatch lights(sumo::approach_lights(net, route), route, traffic_light_parameters(scenario.params).stop_margin);
+  LightWatch lights(sumo::approach_lights(net, route), route, scenario.run_params.judge.stop_margin);
   const auto state_of = [&session](const std::string& tls) -> const std::string& { return session.light_state(tls); };
 
   for (const auto& [tls, offset] : scenario.light_offsets) session.shift_light_program(tls, offset);

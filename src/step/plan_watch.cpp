@@ -3,14 +3,10 @@
 
 #include <cstdio>
 
+#include "core/number_text.hpp"
+
 namespace signalsim {
 namespace {
-
-std::string metres(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.2f", v);
-  return buf;
-}
 
 }  // namespace
 
@@ -56,8 +52,9 @@ void PlanWatch::explain(NotArrived& n, const RunRecord& record) const {
   n.junction.clear();
   const OffPlanStretch& left = record.off_plan[since_index_];  // where SUMO left the plan
   n.detail = "SUMO left the lane plan: on route edge '" + n.edge + "' it drives the ego on lane '" + o->lane +
-             "', the plan's lane is '" + o->planned_lane + "' (off the plan since " + metres(since_time_) +
-             " s, s_front " + metres(left.s_from) + " m, on lane '" + left.lane + "' instead of '" + left.planned_lane +
+             "', the plan's lane is '" + o->planned_lane + "' (off the plan since " + format_text("%.2f", since_time_) +
+             " s, s_front " + format_text("%.2f", left.s_from) + " m, on lane '" + left.lane + "' instead of '" +
+             left.planned_lane +
              "'); signalsim turned SUMO's lane changes off for the ego, so the route may not go on from there";
 }
 

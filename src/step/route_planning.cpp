@@ -12,8 +12,8 @@
 
 namespace signalsim {
 
-sumo::RoutePlan prepare_route(sumo::RoutePlan plan, const ParameterSet& params) {
-  if (params.boolean("turn_signal_roundabout_exit_signal_from_previous_exit"))
+sumo::RoutePlan prepare_route(sumo::RoutePlan plan, const TurnSignalParameters& params) {
+  if (params.turn_signal_roundabout_exit_signal_from_previous_exit)
     plan.map = mark_exit_signal_lanes(std::move(plan.map));
   return plan;
 }
@@ -71,8 +71,7 @@ std::vector<LateralSegment> plan_lane_changes(const Scenario& scenario, const su
   std::vector<LateralSegment> out;
   const double b2f = scenario.ego.base_link_to_front;
   const auto& edges = scenario.ego.route;
-  const BehaviorSignalParameters module_params = behavior_parameters(
-      scenario.params, turn_signal_parameters(scenario.params, b2f), scenario.ego.length, kObstacleWidth);
+  const BehaviorSignalParameters module_params = behavior_parameters(scenario);
   for (const LaneChangeManeuver& m : scenario.lane_changes)
     if (!m.edge.empty() && std::find(edges.begin(), edges.end(), m.edge) == edges.end())
       fail(scenario, "maneuvers: lane_change: edge '" + m.edge + "' is not on the ego's route");
@@ -334,7 +333,7 @@ std::vector<int> required_exit_lanes(const Scenario& scenario) {
 sumo::RoutePlan plan_route(const Scenario& scenario, const sumo::NetIndex& net) {
   sumo::RoutePlan plan;
   try {
-    plan = prepare_route(build_scenario_route(scenario, net), scenario.params);
+    plan = prepare_route(build_scenario_route(scenario, net), scenario.run_params.decider);
   } catch (const sumo::NetDefectError& e) {
     // The defect's own file and line (the net's), and which scenario route uses it.
     throw InputError(e.file(), e.line(), e.detail() + " in ego.route of " + scenario.path);

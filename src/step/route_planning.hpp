@@ -80,6 +80,6 @@ sumo::RoutePlan build_scenario_route(const Scenario& scenario, const sumo::NetIn
 std::string no_room_message(const sumo::RoutePlan& plan);
 
 /// The same preparation for a route built elsewhere (inspect).
-sumo::RoutePlan prepare_route(sumo::RoutePlan plan, const ParameterSet& params);
+sumo::RoutePlan prepare_route(sumo::RoutePlan plan, const TurnSignalParameters& params);
 
 }  // namespace signalsim

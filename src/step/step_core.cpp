@@ -39,12 +39,11 @@ StopSpeedPlanner stop_planner_for(const EgoSpec& ego) {
 
 BehaviorStageConfig behavior_config_for(const Scenario& scenario, const RouteMap& route) {
   BehaviorStageConfig config;
-  config.path_forward = scenario.params.number("forward_path_length");
+  config.path_forward = scenario.run_params.decider.forward_path_length;
   config.route_length = route.length();
   config.vehicle_length = scenario.ego.length;
   config.max_speed = scenario.ego.max_speed;
-  config.gaps = {scenario.params.number("lane_change_safety_rear_gap"),
-                 scenario.params.number("lane_change_safety_front_gap")};
+  config.gaps = {scenario.run_params.lane_change_safety_rear_gap, scenario.run_params.lane_change_safety_front_gap};
   return config;
 }
 
@@ -61,7 +60,7 @@ TrafficLightStage light_stage_for(const StartedRun& run, const sumo::NetIndex& n
   v2i.programs_of = [&session](const std::string& tls) { return session.light_programs(tls); };
   v2i.timing_of = [&session](const std::string& tls) { return session.light_timing(tls); };
   return TrafficLightStage(std::move(approaches), judge, run.scenario.perception,
-                           run.scenario.params.number("forward_path_length"), std::move(v2i));
+                           run.scenario.run_params.decider.forward_path_length, std::move(v2i));
 }
 
 }  // namespace
@@ -74,15 +73,13 @@ StepLoop::StepLoop(const StartedRun& run, const sumo::NetIndex& net)
       b2f_(scenario_.ego.base_link_to_front),
       dt_(scenario_.step_length),
       limits_{scenario_.ego.max_speed, scenario_.ego.accel, scenario_.ego.decel},
-      judge_params_(traffic_light_parameters(scenario_.params)),
-      decider_(turn_signal_parameters(scenario_.params, b2f_)),
-      behavior_(lateral_,
-                behavior_parameters(scenario_.params, decider_.parameters(), scenario_.ego.length, kObstacleWidth),
-                behavior_config_for(scenario_, route_)),
+      judge_params_(scenario_.run_params.judge),
+      decider_(turn_signal_parameters(scenario_)),
+      behavior_(lateral_, behavior_parameters(scenario_), behavior_config_for(scenario_, route_)),
       lights_(light_stage_for(run, net, judge_params_)),
       stop_speed_(stop_planner_for(scenario_.ego)),
       outcomes_(judge_params_.stop_margin),
-      stuck_(scenario_.params.number("stuck_rest_time")),
+      stuck_(scenario_.run_params.stuck_rest_time),
       plan_watch_(route_, lateral_),
       leader_([this](double range) -> std::optional<LeaderInfo> {
         // Vehicle::getLeader: also on the lanes ahead.
@@ -275,7 +272,7 @@ RunRecord StepLoop::finish() {
   record_.collisions = session_.ego_collisions();
   record_.lane_changes = behavior_.lane_change_records();
   record_.maneuver_lines = maneuver_lines(behavior_.plan(), record_.lane_changes,
-                                          scenario_.params.number("turn_signal_shift_length_threshold"));
+                                          scenario_.run_params.decider.turn_signal_shift_length_threshold);
   return std::move(record_);
 }
 

@@ -2,17 +2,13 @@
 
 #include <cstdio>
 
+#include "core/number_text.hpp"
+
 namespace signalsim {
 
 namespace {
 
 constexpr double kJunctionApproach = 10.0;  // [m] the front this close to a junction waits at it
-
-std::string format(const char* fmt, double value) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, fmt, value);
-  return buf;
-}
 
 // The junction the front is in, or at the entry of (the next route lanelet is internal).
 std::string junction_at(const RouteMap& route, double s_front) {
@@ -74,27 +70,28 @@ NotArrived not_arrived(const std::string& reason, double duration, const Timelin
   if (free_rest) n.leader = leader;
   if (free_rest && !n.leader) n.junction = junction_at(route, last.s_front);
 
-  const std::string where = format("s_front %.2f m", last.s_front) + " (edge " + last.edge + ", lane " + last.lane + ")";
+  const std::string where =
+      format_text("s_front %.2f m", last.s_front) + " (edge " + last.edge + ", lane " + last.lane + ")";
   std::string why;  // SUMO's side, for a rest signalsim did not ask for
   if (n.leader) {
-    why = "behind vehicle '" + n.leader->id + "' (gap " + format("%.2f", n.leader->gap) + " m)";
+    why = "behind vehicle '" + n.leader->id + "' (gap " + format_text("%.2f", n.leader->gap) + " m)";
   } else if (!n.junction.empty()) {
     why = "no leader within 100 m: held by SUMO at junction " + n.junction;
   } else {
     why = "SUMO gives no reason (no leader within 100 m, not at a junction)";
   }
   if (reason == "stuck") {
-    n.detail = "at rest for " + format("%.1f", watch.stuck_for()) + " s at " + where +
+    n.detail = "at rest for " + format_text("%.1f", watch.stuck_for()) + " s at " + where +
                " while signalsim commanded it to drive; " + why;
   } else if (!watch.at_rest()) {
-    n.detail = "duration " + format("%g", duration) + " s reached at " + where + ", moving at " +
-               format("%.2f", last.speed) + " m/s";
+    n.detail = "duration " + format_text("%g", duration) + " s reached at " + where + ", moving at " +
+               format_text("%.2f", last.speed) + " m/s";
   } else if (!n.held_by.empty()) {
-    n.detail = "duration " + format("%g", duration) + " s reached at " + where + ", at rest for " +
-               format("%.1f", n.at_rest_for) + " s, held by signalsim: " + n.held_by;
+    n.detail = "duration " + format_text("%g", duration) + " s reached at " + where + ", at rest for " +
+               format_text("%.1f", n.at_rest_for) + " s, held by signalsim: " + n.held_by;
   } else {
-    n.detail = "duration " + format("%g", duration) + " s reached at " + where + ", at rest for " +
-               format("%.1f", n.at_rest_for) + " s while signalsim commanded it to drive; " + why;
+    n.detail = "duration " + format_text("%g", duration) + " s reached at " + where + ", at rest for " +
+               format_text("%.1f", n.at_rest_for) + " s while signalsim commanded it to drive; " + why;
   }
   return n;
 }

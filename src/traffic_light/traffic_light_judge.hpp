@@ -114,6 +114,8 @@ struct TrafficLightJudgeParameters {
   struct RestartSuppression {
     double min_behind_distance_to_stop = 0.5;  ///< [m]
     double max_behind_distance_to_stop = 1.0;  ///< [m]
+
+    bool operator==(const RestartSuppression&) const = default;
   };
 
   double stop_margin = 0.0;  ///< [m] front bumper to stop line at standstill; see distance_to_stop_point()
@@ -132,6 +134,8 @@ struct TrafficLightJudgeParameters {
   /// [s] >= 0, signalsim's own (beyond the reference): a latched stop is released only after no stop
   /// signal for this long without a break (see "Stop release confirmation" above); 0: the reference.
   double stop_release_confirmation_time = 0.0;
+
+  bool operator==(const TrafficLightJudgeParameters&) const = default;
 };
 
 /// Throws std::invalid_argument naming the first bad member: a non-finite value, a negative

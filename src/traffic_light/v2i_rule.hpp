@@ -25,6 +25,8 @@ struct V2iParameters {
   double last_time_allowed_to_pass = 2.0;  ///< [s] margin added to t_pass
   double velocity_threshold = 0.5;         ///< [m/s] above: t_pass = d / v
   double required_time_to_departure = 3.0; ///< [s] t_pass at or below the threshold
+
+  bool operator==(const V2iParameters&) const = default;
 };
 
 /// What the rule found this step.

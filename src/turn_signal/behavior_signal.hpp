@@ -63,6 +63,8 @@ struct BehaviorSignalParameters {
   double prepare_time_before_start = 0.0;                 ///< [s]
   /// signalsim: spacing of the footprint samples of the lane-bound test [m] (Autoware: path points).
   double bound_check_interval = 1.0;
+
+  bool operator==(const BehaviorSignalParameters&) const = default;
 };
 
 /// The shared decider values copied into `base` (thresholds, search time/distance, swerving flag,

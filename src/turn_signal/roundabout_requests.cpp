@@ -7,6 +7,7 @@
 
 #include "turn_signal/intersection_requests.hpp"
 #include "turn_signal/required_end.hpp"
+#include "turn_signal/signal_sections.hpp"
 
 namespace signalsim {
 namespace {
@@ -15,31 +16,7 @@ bool is_entry_or_exit(const Lanelet& l) {
   return l.roundabout_role == RoundaboutRole::Entry || l.roundabout_role == RoundaboutRole::Exit;
 }
 
-bool same_connection(const Lanelet& a, const Lanelet& b) {
-  return a.roundabout_role == b.roundabout_role && a.roundabout_id == b.roundabout_id;
-}
-
-// A lanelet of the roundabout `roundabout_id` (any role): docs/behaviour.md §T5 isRoundaboutLanelet.
-bool in_roundabout(const Lanelet& l, const std::string& roundabout_id) {
-  return l.roundabout_role != RoundaboutRole::None && l.roundabout_id == roundabout_id;
-}
-
-
 }  // namespace
-
-TurnIndicator roundabout_command(std::string_view setting) {
-  if (setting == "Left") return TurnIndicator::EnableLeft;
-  if (setting == "Right") return TurnIndicator::EnableRight;
-  return TurnIndicator::Disable;
-}
-
-RoundaboutConnection roundabout_connection_at(const RouteMap& route, std::size_t index) {
-  RoundaboutConnection c{index, index, route.at(index).roundabout_role};
-  const Lanelet& seed = route.at(index);
-  while (c.front_index > 0 && same_connection(route.at(c.front_index - 1), seed)) --c.front_index;
-  while (c.back_index + 1 < route.size() && same_connection(route.at(c.back_index + 1), seed)) ++c.back_index;
-  return c;
-}
 
 std::vector<RoundaboutConnection> roundabout_connections(const RouteMap& route, RouteMap::Window window) {
   std::vector<RoundaboutConnection> out;
@@ -50,69 +27,6 @@ std::vector<RoundaboutConnection> roundabout_connections(const RouteMap& route, 
     out.push_back(roundabout_connection_at(route, i));
   }
   return out;
-}
-
-std::optional<std::size_t> roundabout_exit_used(const RouteMap& route, const RoundaboutConnection& entry) {
-  const std::string& ring = route.at(entry.front_index).roundabout_id;
-  if (ring.empty()) return std::nullopt;  // "E has >= 1 roundabout"
-  std::optional<std::size_t> exit;
-  for (std::size_t n = entry.back_index + 1; n < route.size(); ++n) {
-    if (!in_roundabout(route.at(n), ring)) break;  // left E's (first) roundabout
-    exit = n;
-  }
-  return exit;
-}
-
-std::vector<std::string> split_exit_tag(std::string_view value) {
-  std::vector<std::string> items;
-  std::string current;
-  for (char ch : value) {
-    if (ch == ',' || ch == ' ' || ch == '[' || ch == ']') {
-      if (!current.empty()) items.push_back(std::move(current));
-      current.clear();
-    } else {
-      current.push_back(ch);
-    }
-  }
-  if (!current.empty()) items.push_back(std::move(current));
-  return items;
-}
-
-std::vector<std::string> exit_names(const RouteMap& route, std::size_t exit) {
-  const Lanelet& x = route.at(exit);
-  if (x.roundabout_role != RoundaboutRole::Exit) return {x.lane_id};
-  std::vector<std::string> names;
-  const RoundaboutConnection connection = roundabout_connection_at(route, exit);
-  for (std::size_t i = connection.front_index; i <= exit; ++i) names.push_back(route.at(i).lane_id);
-  // signalsim's SUMO-friendly addition: the normal edge the exit leads onto.
-  for (std::size_t i = exit + 1; i < route.size(); ++i) {
-    if (!route.at(i).is_internal) {
-      names.push_back(route.at(i).edge_id);
-      break;
-    }
-  }
-  return names;
-}
-
-bool exit_tag_lists(const Lanelet& entry, const std::string& tag_key, const std::vector<std::string>& names) {
-  const auto it = entry.params.find(tag_key);
-  if (it == entry.params.end()) return false;
-  for (const std::string& item : split_exit_tag(it->second))
-    if (std::find(names.begin(), names.end(), item) != names.end()) return true;
-  return false;
-}
-
-std::optional<std::size_t> exit_signal_chain_start(const RouteMap& route, std::size_t exit_front_index) {
-  // The route is a line: the only route predecessor of lanelet i is i - 1.
-  std::optional<std::size_t> start;
-  std::size_t z = exit_front_index;
-  while (z > 0) {
-    const auto& params = route.at(z - 1).params;
-    const auto it = params.find("enable_exit_turn_signal");
-    if (it == params.end() || it->second != "true") break;
-    start = --z;
-  }
-  return start;
 }
 
 const LaneSpanGeometry& RoundaboutRequests::geometry(const RouteMap& route, const RoundaboutConnection& connection,
@@ -162,11 +76,8 @@ TurnSignalInfo RoundaboutRequests::update(const RouteMap& route, RouteMap::Windo
 
     // The exit this route uses, and the per-exit override tags on the entry lanelet.
     const std::optional<std::size_t> exit = roundabout_exit_used(route, entry);
-    const std::vector<std::string> names = exit ? exit_names(route, *exit) : std::vector<std::string>{};
-    if (exit && exit_tag_lists(e, "exit_turn_signal_left", names)) {
-      info.turn = TurnIndicator::EnableLeft;
-    } else if (exit && exit_tag_lists(e, "exit_turn_signal_right", names)) {
-      info.turn = TurnIndicator::EnableRight;
+    if (const std::optional<TurnIndicator> tagged = exit_tag_command(route, entry)) {
+      info.turn = *tagged;
     } else if (on_entry == TurnIndicator::Disable) {
       desired_starts_.erase(entry.front_index);  // no entry signal at all
       continue;

@@ -23,6 +23,11 @@ struct TurnSignalParameters {
   double turn_signal_remaining_shift_length_threshold = 0.1;  ///< [m] (§T8)
   double turn_signal_remaining_distance_to_bound_threshold = 1.3;  ///< [m] (§T8, pull out)
   bool turn_signal_on_swerving = true;                      ///< (§T8, §T12.1.1)
+  /// signalsim: ring lanes from the previous exit on are marked enable_exit_turn_signal before the
+  /// decider sees the route (turn_signal/exit_signal_marking.hpp; Japan's rule).
+  bool turn_signal_roundabout_exit_signal_from_previous_exit = false;
+
+  bool operator==(const TurnSignalParameters&) const = default;
 };
 
 }  // namespace signalsim

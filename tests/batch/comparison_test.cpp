@@ -87,7 +87,7 @@ ScenarioComparison both() {
   ScenarioComparison sc;
   sc.scenario = "synthetic";
   sc.base_link_to_front = 3.7;
-  sc.items = compared_items(route(), ParameterSet());
+  sc.items = compared_items(route(), TurnSignalParameters());
   sc.runs.push_back(finished("signalsim", record([](double s) {
     return (s >= 40 && s <= 118) || (s >= 280 && s <= 295) ? Blinker::Left : Blinker::None;
   })));
@@ -108,7 +108,7 @@ std::map<std::string, std::string> cells(const std::vector<std::string>& row) {
 }
 
 TEST(Comparison, ItemsInRouteOrderTheStopLineBeforeTheTurnAtTheSameS) {
-  const auto items = compared_items(route(), ParameterSet());
+  const auto items = compared_items(route(), TurnSignalParameters());
   ASSERT_EQ(items.size(), 4u);
   EXPECT_EQ(items[0].name, "light1");
   EXPECT_EQ(items[0].id, "T");

@@ -75,7 +75,7 @@ Blinker good_driver(double s) {
 }
 
 TEST(Metrics, SectionsComeFromTurnGroupsAndRoundaboutRoles) {
-  const auto sections = signal_sections(route(), ParameterSet());
+  const auto sections = signal_sections(route(), TurnSignalParameters());
   ASSERT_EQ(sections.size(), 3u);
   EXPECT_EQ(sections[0].kind, "turn");
   EXPECT_EQ(sections[0].id, "J");
@@ -87,6 +87,22 @@ TEST(Metrics, SectionsComeFromTurnGroupsAndRoundaboutRoles) {
   EXPECT_EQ(sections[1].blinker, Blinker::None);  // turn_signal_roundabout_on_entry "None"
   EXPECT_EQ(sections[2].kind, "roundabout_exit");
   EXPECT_EQ(sections[2].blinker, Blinker::Left);  // turn_signal_roundabout_on_exit "Left"
+}
+
+// The entry's expected blinker names the exit the route takes as the decider does (docs/behaviour.md
+// §T5.2): by a lane of the exit connection or by the normal edge the exit leads onto.
+TEST(Metrics, EntryExpectsTheBlinkerItsExitTagGivesTheExitTaken) {
+  const auto entry_blinker = [](const std::string& key, const std::string& value) {
+    const RouteMap base = route();
+    std::vector<Lanelet> ls(base.lanelets().begin(), base.lanelets().end());
+    ls[6].params[key] = value;  // the entry :R_0_0; the route leaves by :R_1_0 onto d
+    const auto sections = signal_sections(RouteMap(std::move(ls)), TurnSignalParameters());
+    return sections.at(1).blinker;
+  };
+  EXPECT_EQ(entry_blinker("exit_turn_signal_left", "[:R_1_0]"), Blinker::Left);    // the exit lane
+  EXPECT_EQ(entry_blinker("exit_turn_signal_left", "[d]"), Blinker::Left);         // the edge it leads onto
+  EXPECT_EQ(entry_blinker("exit_turn_signal_right", "[x, d]"), Blinker::Right);
+  EXPECT_EQ(entry_blinker("exit_turn_signal_left", "[d_0, ring]"), Blinker::None);  // names neither
 }
 
 TEST(Metrics, LeadTimeOnFlickersAndTheRide) {

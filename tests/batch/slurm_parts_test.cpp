@@ -6,13 +6,13 @@
 
 #include <filesystem>
 
-#include "batch/program_output.hpp"
 #include "batch/run_outputs.hpp"
 #include "batch/run_row_file.hpp"
-#include "batch/slurm_chunks.hpp"
-#include "batch/slurm_commands.hpp"
-#include "batch/slurm_queue.hpp"
-#include "batch/slurm_wait.hpp"
+#include "batch/slurm/program_output.hpp"
+#include "batch/slurm/slurm_chunks.hpp"
+#include "batch/slurm/slurm_commands.hpp"
+#include "batch/slurm/slurm_queue.hpp"
+#include "batch/slurm/slurm_wait.hpp"
 #include "test_files.hpp"
 
 namespace signalsim {

@@ -588,7 +588,7 @@ class Decider:
             X = self.r[x] if x is not None else None
             tagged = None
             if X is not None:
-                ids = {X.id, X.edge}
+                ids = _exit_names(self.r, x)
                 if ids & set(_tag_list(E.params.get("exit_turn_signal_left"))):
                     tagged = LEFT
                 elif ids & set(_tag_list(E.params.get("exit_turn_signal_right"))):
@@ -696,6 +696,25 @@ def _float_or_none(v):
 
 def _tag_list(v) -> list[str]:
     return [t for t in re.split(r"[,\s\[\]]+", v or "") if t]
+
+
+def _exit_names(route: list[Lanelet], x: int) -> set[str]:
+    """The names an exit tag item may give the exit ending at route[x] (docs/behaviour.md §T5.2): the lane ids
+    of the exit connection's lanelets and the normal edge the exit leads onto; an exit that is not an exit
+    lanelet (the route ends on the ring) only by its own lane id."""
+    X = route[x]
+    if X.role != "exit":
+        return {X.id}
+    names = {X.id}
+    k = x
+    while k > 0 and route[k - 1].role == "exit" and route[k - 1].ring == X.ring:
+        k -= 1
+        names.add(route[k].id)
+    for later in route[x + 1:]:
+        if not later.internal:
+            names.add(later.edge)
+            break
+    return names
 
 
 # ----------------------------------------------------------------------------------------------
@@ -871,9 +890,9 @@ def conditions(route, dec: Decider, p, b2f) -> list[str]:
             x += 1
         X = route[x]
         tag = None
-        if set(_tag_list(E.params.get("exit_turn_signal_left"))) & {X.id, X.edge}:
+        if set(_tag_list(E.params.get("exit_turn_signal_left"))) & _exit_names(route, x):
             tag = LEFT
-        elif set(_tag_list(E.params.get("exit_turn_signal_right"))) & {X.id, X.edge}:
+        elif set(_tag_list(E.params.get("exit_turn_signal_right"))) & _exit_names(route, x):
             tag = RIGHT
         cmd = tag or on_entry
         if cmd == NONE:

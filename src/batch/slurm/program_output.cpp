@@ -1,5 +1,5 @@
 // A program run to completion with its stdout and stderr captured (program_output.hpp).
-#include "batch/program_output.hpp"
+#include "batch/slurm/program_output.hpp"
 
 #include <fcntl.h>
 #include <poll.h>

@@ -1,5 +1,5 @@
 // Waiting for a Slurm job's row files, squeue, error rows for runs of tasks that died (slurm_wait.hpp).
-#include "batch/slurm_wait.hpp"
+#include "batch/slurm/slurm_wait.hpp"
 
 #include <poll.h>
 
@@ -10,7 +10,7 @@
 
 #include "batch/interrupt_guard.hpp"
 #include "batch/run_row_file.hpp"
-#include "batch/slurm_commands.hpp"
+#include "batch/slurm/slurm_commands.hpp"
 
 namespace signalsim {
 namespace fs = std::filesystem;

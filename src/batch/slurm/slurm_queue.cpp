@@ -1,5 +1,5 @@
 // Reading squeue's task lines (slurm_queue.hpp).
-#include "batch/slurm_queue.hpp"
+#include "batch/slurm/slurm_queue.hpp"
 
 #include <cctype>
 #include <set>

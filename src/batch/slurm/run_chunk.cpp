@@ -1,5 +1,5 @@
 // A Slurm array task: one chunk of runs through the local pool, a row file per run (run_chunk.hpp).
-#include "batch/run_chunk.hpp"
+#include "batch/slurm/run_chunk.hpp"
 
 #include <unistd.h>
 
@@ -13,7 +13,7 @@
 #include "batch/batch_runner.hpp"
 #include "batch/run_row_file.hpp"
 #include "batch/run_rows.hpp"
-#include "batch/slurm_chunks.hpp"
+#include "batch/slurm/slurm_chunks.hpp"
 #include "report/exit_codes.hpp"
 
 namespace signalsim {

@@ -14,7 +14,7 @@
 
 #include "batch/batch_progress.hpp"
 #include "batch/batch_runner.hpp"
-#include "batch/slurm_chunks.hpp"
+#include "batch/slurm/slurm_chunks.hpp"
 
 namespace signalsim {
 

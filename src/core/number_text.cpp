@@ -1,6 +1,7 @@
-// Fixed-point text, the same text as printf's "%.*f" (fixed_text.hpp): the files' usual numbers by
-// integer rounding where that is provably exact, everything else with std::to_chars.
-#include "report/fixed_text.hpp"
+// Numbers as signalsim writes them (number_text.hpp). Fixed-point text is printf's "%.*f": the
+// files' usual numbers by integer rounding where that is provably exact, everything else with
+// std::to_chars.
+#include "core/number_text.hpp"
 
 #include <charconv>
 #include <cmath>
@@ -88,6 +89,21 @@ std::string fixed(double v, int decimals) {
 }
 
 void append_fixed(std::string& out, double v, int decimals) { append_fixed_text(out, v, decimals); }
+
+double as_written(double v, int decimals) {
+  const std::string text = fixed(v, decimals);
+  double value = 0.0;
+  std::from_chars(text.data(), text.data() + text.size(), value);
+  return value;
+}
+
+double rounded(double v, int decimals) {
+  const double scale = decimals >= 0 && decimals <= 9 ? kPowersOfTen[decimals] : std::pow(10.0, decimals);
+  const double r = std::round(v * scale) / scale;
+  return r == 0.0 ? 0.0 : r;  // no "-0"
+}
+
+std::string rounded_fixed(double v, int decimals) { return fixed(rounded(v, decimals), decimals); }
 
 void append_integer(std::string& out, long long v) {
   char text[24];

@@ -1,10 +1,10 @@
 // sbatch, squeue, scancel and scontrol as functions (slurm_commands.hpp).
-#include "batch/slurm_commands.hpp"
+#include "batch/slurm/slurm_commands.hpp"
 
 #include <stdexcept>
 
-#include "batch/program_output.hpp"
 #include "batch/run_rows.hpp"
+#include "batch/slurm/program_output.hpp"
 
 namespace signalsim {
 

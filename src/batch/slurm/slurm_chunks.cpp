@@ -1,5 +1,5 @@
 // OUT/slurm/: the chunk list, the task script and the job record (slurm_chunks.hpp).
-#include "batch/slurm_chunks.hpp"
+#include "batch/slurm/slurm_chunks.hpp"
 
 #include <sys/stat.h>
 

@@ -1,33 +1,23 @@
 // Submitting a batch as a Slurm job array, waiting for it, collecting it (slurm_backend.hpp).
-#include "batch/slurm_backend.hpp"
+#include "batch/slurm/slurm_backend.hpp"
 
 #include <cstdio>
 #include <filesystem>
 #include <stdexcept>
 
-#include "batch/batch_progress.hpp"
+#include "batch/child_process.hpp"
 #include "batch/interrupt_guard.hpp"
-#include "batch/process_pool.hpp"
-#include "batch/program_output.hpp"
 #include "batch/run_outputs.hpp"
 #include "batch/run_rows.hpp"
-#include "batch/slurm_chunks.hpp"
-#include "batch/slurm_commands.hpp"
-#include "batch/slurm_wait.hpp"
+#include "batch/slurm/program_output.hpp"
+#include "batch/slurm/slurm_chunks.hpp"
+#include "batch/slurm/slurm_commands.hpp"
+#include "batch/slurm/slurm_wait.hpp"
 #include "scenario/input_error.hpp"
 
 namespace signalsim {
 namespace fs = std::filesystem;
 namespace {
-
-// The not-loaded runs' error rows, through the progress output.
-void add_load_error_rows(BatchStart& batch, BatchProgress& progress) {
-  for (const RunSpec* run : batch.not_loaded) {
-    ResultRow row = load_error_row(*run);
-    progress.finished(*run, row);
-    batch.result.rows[run->index] = std::move(row);
-  }
-}
 
 std::string plural(std::size_t n, const char* word) { return std::to_string(n) + " " + word + (n == 1 ? "" : "s"); }
 
@@ -69,12 +59,7 @@ SlurmOutcome run_batch_on_slurm(const std::vector<RunSpec>& runs, const BatchSet
 
   SlurmOutcome outcome;
   BatchStart batch = start_batch(runs, settings);
-  BatchResult& result = batch.result;
-  if (!settings.quiet && result.skipped > 0)
-    std::printf("resuming: %zu of %zu runs already done, %zu to run\n", result.skipped, runs.size(),
-                batch.to_run.size());
-  BatchProgress progress(batch.to_run.size() + batch.not_loaded.size(), settings.quiet);
-  add_load_error_rows(batch, progress);
+  BatchProgress progress = begin_progress(batch, settings);
   if (batch.to_run.empty()) {
     progress.end();
     outcome.result = finish_batch(batch, settings, true);
@@ -142,8 +127,7 @@ BatchResult collect_slurm_batch(const std::vector<RunSpec>& runs, const BatchSet
   BatchStart batch;
   batch.lock = std::make_unique<OutputLock>(settings.out_dir);
   batch.result.total = runs.size();
-  batch.run_dirs.resize(runs.size());
-  for (const RunSpec& run : runs) batch.run_dirs[run.index] = run_dir_name(run, runs.size());
+  batch.run_dirs = run_dir_names(runs);
   std::vector<bool> submitted(runs.size(), false);
   for (const auto& chunk : list.chunks)
     for (const ChunkRun& run : chunk) {

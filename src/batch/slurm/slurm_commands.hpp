@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "batch/slurm_queue.hpp"
+#include "batch/slurm/slurm_queue.hpp"
 
 namespace signalsim {
 

@@ -1,17 +1,19 @@
-// fixed() and append_fixed() (report/fixed_text.hpp) against the text printf's "%.*f" gives, the
-// way the output files were written before std::to_chars: random doubles of every magnitude, exact
-// binary ties, values just off a tie, signed zeros, NaN and infinities, huge values.
+// Numbers as signalsim writes them (core/number_text.hpp). fixed() and append_fixed() against the
+// text printf's "%.*f" gives: random doubles of every magnitude, exact binary ties, values just off a
+// tie, signed zeros, NaN and infinities, huge values. as_written(), rounded(), rounded_fixed() and
+// format_text() against what they promise, and the one place their roundings part.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <limits>
 #include <random>
 #include <string>
 #include <vector>
 
-#include "report/fixed_text.hpp"
+#include "core/number_text.hpp"
 
 namespace signalsim {
 namespace {
@@ -124,6 +126,55 @@ TEST(FixedText, Integers) {
     append_integer(out, v);
     EXPECT_EQ(out, "a" + std::to_string(v));
   }
+}
+
+TEST(AsWritten, IsTheValueItsTextReadsBackAs) {
+  EXPECT_EQ(as_written(1.23456, 3), 1.235);
+  EXPECT_EQ(as_written(-0.0004, 3), 0.0);
+  EXPECT_FALSE(std::signbit(as_written(-0.0004, 3)));  // no -0 in summary.json
+  EXPECT_EQ(as_written(215.68, 3), 215.68);
+  EXPECT_EQ(as_written(0.0625, 3), 0.062);  // the text's rounding: ties to even
+  std::mt19937_64 random(7);
+  std::uniform_real_distribution<double> value(-1e6, 1e6);
+  for (int i = 0; i < 20000; ++i) {
+    const double v = value(random);
+    EXPECT_EQ(as_written(v, 3), std::strtod(fixed(v, 3).c_str(), nullptr)) << std::hexfloat << v;
+  }
+}
+
+TEST(Rounded, RoundsTheScaledValueHalfAwayFromZero) {
+  EXPECT_EQ(rounded(1.23456, 3), 1.235);
+  EXPECT_EQ(rounded(0.0625, 3), 0.063);  // where it parts from as_written: the scaled value 62.5 is a tie
+  EXPECT_EQ(rounded(-0.0625, 3), -0.063);
+  EXPECT_EQ(rounded(2.5, 0), 3.0);
+  EXPECT_EQ(rounded(0.15, 1), 0.2);  // 0.15 * 10 rounds to the tie 1.5 in binary
+  EXPECT_FALSE(std::signbit(rounded(-0.0004, 3)));
+  EXPECT_FALSE(std::signbit(rounded(-0.04, 1)));
+  for (int k = -5000; k <= 5000; ++k) {  // the metrics' 1 mm rule, as it always read
+    const double v = k / 1024.0 + 0.00049;
+    const double r = std::round(v * 1000.0) / 1000.0;
+    EXPECT_EQ(rounded(v, 3), r == 0.0 ? 0.0 : r);
+  }
+}
+
+TEST(RoundedFixed, WritesTheRoundedValueWithItsDecimals) {
+  EXPECT_EQ(rounded_fixed(28.94, 1), "28.9");
+  EXPECT_EQ(rounded_fixed(0.3, 2), "0.30");
+  EXPECT_EQ(rounded_fixed(13.5, 0), "14");
+  EXPECT_EQ(rounded_fixed(0.15, 1), "0.2");  // fixed(0.15, 1) is "0.1"
+  EXPECT_EQ(fixed(0.15, 1), "0.1");
+  EXPECT_EQ(rounded_fixed(-0.04, 1), "0.0");
+  EXPECT_EQ(rounded_fixed(-3.25, 1), "-3.3");
+  EXPECT_EQ(rounded_fixed(13.889, 2), "13.89");
+}
+
+TEST(FormatText, IsPrintfsTextOfAnyLength) {
+  EXPECT_EQ(format_text("%.2f m", 3.14159), "3.14 m");
+  EXPECT_EQ(format_text("%9.3f s %s", 1.5, "x"), "    1.500 s x");
+  EXPECT_EQ(format_text("%04zu-", std::size_t{7}), "0007-");
+  const std::string long_name(600, 'n');
+  EXPECT_EQ(format_text("<%s>", long_name.c_str()), "<" + long_name + ">");  // beyond the stack buffer
+  EXPECT_EQ(format_text("none"), "none");
 }
 
 }  // namespace
