@@ -72,6 +72,7 @@ struct StepObservation {
 struct LateralCommand {
   double offset = 0.0;
   std::string reference_lane;
+  bool operator==(const LateralCommand&) const = default;
 };
 
 /// Everything a step writes to SUMO. A SUMO-driven run commands nothing (`drive` false).
@@ -84,6 +85,7 @@ struct Commands {
   double speed = 0.0;               ///< [m/s]
   std::optional<LateralCommand> lateral;
   double move_back = 0.0;           ///< [m] emulated backward driving this step
+  bool operator==(const Commands&) const = default;
 };
 
 /// What SUMO says after executing the commands and advancing one step.
