@@ -5,7 +5,7 @@
 #include "app/command.hpp"
 #include "app/inspect.hpp"
 #include "scenario/countries.hpp"
-#include "sim/route_planning.hpp"
+#include "step/route_planning.hpp"
 #include "route/route_builder.hpp"
 
 namespace signalsim::app {

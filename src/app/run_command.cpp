@@ -15,10 +15,9 @@
 #include "scenario/input_error.hpp"
 #include "scenario/notes.hpp"
 #include "report/outputs.hpp"
-#include "sim/route_planning.hpp"
+#include "step/route_planning.hpp"
 #include "scenario/scenario.hpp"
 #include "sim/step_loop.hpp"
-#include "sim/sumo_driven.hpp"
 #include "net/net_index.hpp"
 #include "route/route_builder.hpp"
 #include "session/interruption.hpp"
@@ -116,7 +115,7 @@ int run(const RunOptions& options) {
     sumo::RoutePlan plan;
     {
       StartedRun started = start_run(std::move(planned), net, context);
-      record = context.sumo_drives ? observe_sumo_drive(started, net) : drive(started, net);
+      record = drive(started, net);
       scenario = started.scenario;  // as run: a taken-over vehicle's values
       plan = std::move(started.plan);
     }  // SUMO closes here: its log is complete

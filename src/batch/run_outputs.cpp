@@ -8,9 +8,9 @@
 #include <stdexcept>
 
 #include "batch/csv.hpp"
-#include "sim/behavior_stage.hpp"
+#include "step/behavior_stage.hpp"
 #include "report/metrics.hpp"
-#include "sim/route_planning.hpp"
+#include "step/route_planning.hpp"
 #include "net/net_index.hpp"
 #include "route/route_builder.hpp"
 

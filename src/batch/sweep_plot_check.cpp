@@ -12,8 +12,8 @@
 #include "scenario/input_error.hpp"
 #include "scenario/scenario.hpp"
 #include "scenario/take_over.hpp"
-#include "sim/behavior_stage.hpp"
-#include "sim/route_planning.hpp"
+#include "step/behavior_stage.hpp"
+#include "step/route_planning.hpp"
 #include "net/net_index.hpp"
 
 namespace signalsim {

@@ -13,7 +13,7 @@
 #include "scenario/countries.hpp"
 #include "report/expectations.hpp"
 #include "scenario/input_error.hpp"
-#include "sim/route_planning.hpp"
+#include "step/route_planning.hpp"
 #include "session/sumo_session.hpp"
 
 namespace signalsim::generate {

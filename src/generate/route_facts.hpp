@@ -9,7 +9,7 @@
 #include "generate/expectation_rules.hpp"
 #include "generate/sections.hpp"
 #include "generate/speed_profile.hpp"
-#include "sim/route_planning.hpp"
+#include "step/route_planning.hpp"
 #include "net/net_index.hpp"
 
 namespace signalsim::generate {

@@ -11,7 +11,7 @@
 #include "generate/speed_profile.hpp"
 #include "planning/stop/jerk_limited_stop.hpp"
 #include "scenario/input_error.hpp"
-#include "sim/route_planning.hpp"
+#include "step/route_planning.hpp"
 
 namespace signalsim::generate {
 namespace {

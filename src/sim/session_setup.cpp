@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <utility>
 
+#include "route/approach_lights.hpp"
 #include "scenario/input_error.hpp"
 #include "scenario/take_over.hpp"
 
@@ -182,6 +183,31 @@ StartedRun start_run(PlannedRun planned, const sumo::NetIndex& net, const RunCon
   }
   run.plan = std::move(plan);
   return run;
+}
+
+RunSumoInfo run_sumo_info(const StartedRun& run) {
+  const sumo::SumoSession& session = *run.session;
+  RunSumoInfo info;
+  info.backend = session.backend();
+  if (run.config.backend.kind == sumo::BackendKind::Connect)
+    info.endpoint = run.config.backend.host + ":" + std::to_string(run.config.backend.port);
+  info.ego = session.ego_vehicle();
+  info.args = run.config.extra_args;
+  info.out_dir = run.out_dir;
+  info.log = run.config.log_file;
+  info.server_options = session.server_options();
+  info.notes = run.notes;
+  return info;
+}
+
+// The route's lights with arrow bulbs from every program SUMO loaded (additional files may replace the
+// net's program); then the scenario's light offsets shift the programs.
+CoreSetup core_setup(const StartedRun& run, const sumo::NetIndex& net) {
+  sumo::SumoSession& session = *run.session;
+  std::vector<sumo::ApproachLight> lights = sumo::approach_lights(net, run.plan.map);
+  for (sumo::ApproachLight& a : lights) a.has_arrow = sumo::shows_arrow(session.program_states(a.tls_id), a);
+  for (const auto& [tls, offset] : run.scenario.light_offsets) session.shift_light_program(tls, offset);
+  return CoreSetup{run.scenario, run.plan.map, run.lateral, std::move(lights), run_sumo_info(run), session.time()};
 }
 
 }  // namespace signalsim

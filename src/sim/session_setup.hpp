@@ -8,12 +8,13 @@
 #include <optional>
 #include <string>
 
-#include "sim/route_planning.hpp"
+#include "step/route_planning.hpp"
 #include "scenario/scenario.hpp"
 #include "net/net_index.hpp"
 #include "route/route_builder.hpp"
 #include "net/route_files.hpp"
 #include "session/sumo_session.hpp"
+#include "step/step_core.hpp"
 
 namespace signalsim {
 
@@ -24,8 +25,8 @@ struct RunContext {
   /// sumo_args (and of the sumocfg's outputs) land here. Empty: no log, paths as written.
   std::string out_dir;
   /// SUMO drives the ego (`run --driver sumo`): same insertion, vType, traffic and lights, but SUMO's
-  /// own speed, lane changes and blinkers (sumo::SessionConfig::sumo_drives); observe with
-  /// observe_sumo_drive (sumo_driven.hpp), never drive().
+  /// own speed, lane changes and blinkers (sumo::SessionConfig::sumo_drives); drive() then runs the
+  /// SUMO-driven core (step/sumo_driven_core.hpp), which commands nothing.
   bool sumo_drives = false;
 };
 
@@ -71,5 +72,17 @@ struct StartedRun {
 /// and fills in what SUMO says it is. Throws InputError (a key that contradicts the vehicle's vType),
 /// sumo::SumoError.
 StartedRun start_run(PlannedRun planned, const sumo::NetIndex& net, const RunContext& context);
+
+/// The record's `sumo` fields of a started run (summary.json `sumo`, `ego`): the back-end, its
+/// endpoint with --connect, the ego as SUMO had it at departure, the options passed through, the
+/// output directory and log, the server's options and the back-end's notes. Never throws.
+RunSumoInfo run_sumo_info(const StartedRun& run);
+
+RunSumoInfo run_sumo_info(const StartedRun& run);
+
+/// What a run's core is built from (step_core.hpp CoreSetup): the route's lights with arrow bulbs from
+/// SUMO's loaded programs, the record's SUMO fields and SUMO's time now. Shifts the light programs by
+/// the scenario's light_offsets (call once, before the first step). Throws sumo::SumoError.
+CoreSetup core_setup(const StartedRun& run, const sumo::NetIndex& net);
 
 }  // namespace signalsim

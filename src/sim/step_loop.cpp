@@ -1,8 +1,9 @@
-// The step loop of a signalsim-driven run, one step read top to bottom (step_loop.hpp has the
-// algorithm; the stages and what persists between steps are in step_stages.hpp).
+// The step loop of a run, one step read top to bottom (step_loop.hpp has the algorithm).
 #include "sim/step_loop.hpp"
 
-#include "sim/step_stages.hpp"
+#include "sim/session_ports.hpp"
+#include "step/step_core.hpp"
+#include "step/sumo_driven_core.hpp"
 
 namespace signalsim {
 
@@ -13,18 +14,25 @@ RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, co
 }
 
 RunRecord drive(const StartedRun& run, const sumo::NetIndex& net) {
-  StepLoop loop(run, net);  // the stages, their state, the record; shifts the light programs
-  while (true) {
-    const StepObservation now = loop.observe();                        // ego on the route, from SUMO
-    const StepManeuver maneuver = loop.maneuver(now);                  // behaviour modules, lane changes
-    const BlinkerChoice blinker = loop.decide(now, maneuver);          // window + turn-signal decider
-    const StepLights lights = loop.light(now);                         // perception + judge, each light
-    const SpeedPlan plan = loop.plan_speed(now, maneuver, lights);     // limits, stops
-    const bool alive = loop.apply(now, blinker, lights, plan);         // commands to SUMO, SUMO steps
-    loop.record_step(now, maneuver, blinker, lights, plan, alive);     // row, events, stops
-    if (loop.ended(alive, plan)) break;                                // arrived, stuck or duration
+  CoreSetup setup = core_setup(run, net);  // shifts the light programs
+  if (run.config.sumo_drives) {
+    SumoDrivenCore core(std::move(setup));
+    return run_steps(*run.session, core);
   }
-  return loop.finish();
+  StepCore core(std::move(setup));
+  return run_steps(*run.session, core);
+}
+
+RunRecord run_steps(sumo::SumoSession& session, RunCore& core) {
+  while (true) {
+    const sumo::EgoState ego = session.ego();                       // SUMO's ego at the step's start
+    const ObservationDemand want = core.demand(ego);                // located; what else to read
+    const StepObservation seen = observe(session, ego, want);       // exactly that, from SUMO
+    const Commands commands = core.step(seen);                      // maneuver, decide, light, plan
+    const StepFeedback feedback = apply(session, commands);         // the one writer; SUMO steps
+    if (core.record(seen, feedback)) break;                         // row, events, stops; the end
+  }
+  return core.finish(session.ego_collisions());
 }
 
 }  // namespace signalsim

@@ -1,31 +1,28 @@
-// The step loop (docs/architecture.md, docs/run.md): observe -> maneuver -> decide ->
-// light -> plan -> apply -> record, every step.
+// The step loop (docs/architecture.md "The step as a system", docs/run.md): SUMO's ports around a
+// run's core, every step.
 //
 //   start SUMO, insert the ego on the planned first lane, wait for its departure (session_setup)
-//   shift the light programs by the scenario's light_offsets
-//   loop until the ego arrives, `duration` simulated seconds have passed, or the stuck rule ends
-//   the run (at rest stuck_rest_time while signalsim commands it to drive, sim/stuck_watch):
-//     observe   ego lane/position/speed from SUMO; s_front from the RouteMap; s_base = s_front - b2f;
-//               whether SUMO left the lane plan (sim/plan_watch); the offset from the planned lane
-//     maneuver  the behaviour modules' request and the lane changes' phases (sim/behavior_stage)
-//     decide    window and blinker = TurnSignalDecider::decide(route, ego, behaviour)    (docs/behaviour.md §T3)
-//     light     every light in the window: perception, then TrafficLightJudge::step    (docs/behaviour.md §L1-§L2)
-//     plan      speed under the lane limits ahead, lowered by a jerk-limited stop for each stop
-//               point (light, pull-over goal, hold point) only once a normal stop must begin
-//               (normal, limit, then emergency constraint set)   (planning/stop/stop_speed_planner)
-//     apply     SUMO's speed mode, blinker bits + speed (re-sent every step, docs/behaviour.md §S4), the
-//               lateral offset, a back-up; SUMO advances one step
-//     record    the row: observation, decision, and the mask SUMO showed while executing it;
-//               events on change; stops and red crossings (sim/step_record, sim/light_outcomes)
-//     end       arrived, stuck or out of time: the record says which
-// Each stage is a member function of StepLoop (sim/step_stages.hpp), which also holds what lives
-// from one step to the next.
+//   shift the light programs by the scenario's light_offsets (session_setup core_setup)
+//   loop until the core says the run is over:
+//     ego       SUMO's ego at the step's start
+//     demand    the core locates the ego on the route and says what else the step reads
+//     observe   exactly that, from SUMO, at the same moment (sim/session_ports)
+//     step      the core's stages on the observation, no SUMO: maneuver, decide, light, plan
+//               (step/step_core.hpp) -> Commands
+//     apply     the one writer: SUMO's modes, blinker bits, speed, lateral offset, back-up; SUMO
+//               advances one step and says whether the ego is still there and its signal mask
+//     record    the core's row, events, stops; the end: arrived, stuck or out of time
+// A SUMO-driven run (RunContext::sumo_drives) runs the same loop with the SUMO-driven core
+// (step/sumo_driven_core.hpp), which commands nothing.
 #pragma once
 
-#include "scenario/scenario.hpp"
+#include "net/net_index.hpp"
 #include "report/timeline.hpp"
-#include "sim/session_setup.hpp"
 #include "route/route_builder.hpp"
+#include "scenario/scenario.hpp"
+#include "session/sumo_session.hpp"
+#include "sim/session_setup.hpp"
+#include "step/run_core.hpp"
 
 namespace signalsim {
 
@@ -34,8 +31,12 @@ namespace signalsim {
 RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, const sumo::NetIndex& net,
                        const RunContext& context = {});
 
-/// The step loop on a run whose SUMO is started (session_setup.hpp start_run). Throws
-/// sumo::SumoError when SUMO fails.
+/// The step loop on a run whose SUMO is started (session_setup.hpp start_run), with the core its
+/// configuration asks for (signalsim drives, or SUMO does). Throws sumo::SumoError when SUMO fails.
 RunRecord drive(const StartedRun& run, const sumo::NetIndex& net);
+
+/// The step loop of `core` on `session` until the core says the run is over. Throws
+/// sumo::SumoError when SUMO fails.
+RunRecord run_steps(sumo::SumoSession& session, RunCore& core);
 
 }  // namespace signalsim

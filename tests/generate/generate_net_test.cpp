@@ -11,7 +11,7 @@
 #include "generate/route_facts.hpp"
 #include "report/expectations.hpp"
 #include "scenario/input_error.hpp"
-#include "sim/route_planning.hpp"
+#include "step/route_planning.hpp"
 #include "net/net_index.hpp"
 
 namespace signalsim::generate {

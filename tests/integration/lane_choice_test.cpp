@@ -14,8 +14,8 @@
 
 #include "report/expectations.hpp"
 #include "report/metrics.hpp"
-#include "sim/plan_watch.hpp"
-#include "sim/route_planning.hpp"
+#include "step/plan_watch.hpp"
+#include "step/route_planning.hpp"
 #include "scenario/scenario.hpp"
 #include "sim/session_setup.hpp"
 #include "sim/step_loop.hpp"

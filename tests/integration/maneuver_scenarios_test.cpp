@@ -15,7 +15,7 @@
 #include "scenario/input_error.hpp"
 #include "report/metrics.hpp"
 #include "report/outputs.hpp"
-#include "sim/route_planning.hpp"
+#include "step/route_planning.hpp"
 #include "scenario/scenario.hpp"
 #include "sim/step_loop.hpp"
 #include "net/net_index.hpp"

@@ -12,7 +12,7 @@
 #include "report/expectations.hpp"
 #include "report/metrics.hpp"
 #include "report/outputs.hpp"
-#include "sim/route_planning.hpp"
+#include "step/route_planning.hpp"
 #include "sim/step_loop.hpp"
 #include "net/net_index.hpp"
 

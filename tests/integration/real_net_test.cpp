@@ -16,7 +16,7 @@
 
 #include "report/expectations.hpp"
 #include "scenario/input_error.hpp"
-#include "sim/route_planning.hpp"
+#include "step/route_planning.hpp"
 #include "scenario/scenario.hpp"
 #include "sim/step_loop.hpp"
 #include "net/net_index.hpp"

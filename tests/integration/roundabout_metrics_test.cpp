@@ -11,7 +11,7 @@
 #include "net/net_index.hpp"
 #include "report/expectations.hpp"
 #include "report/metrics.hpp"
-#include "sim/route_planning.hpp"
+#include "step/route_planning.hpp"
 #include "sim/step_loop.hpp"
 
 namespace signalsim {

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "scenario/scenario.hpp"
-#include "sim/route_planning.hpp"
+#include "step/route_planning.hpp"
 #include "sim/step_loop.hpp"
 #include "net/net_index.hpp"
 #include "route/route_builder.hpp"

@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <string>
 
-#include "sim/route_planning.hpp"
+#include "step/route_planning.hpp"
 #include "scenario/scenario.hpp"
 #include "sim/step_loop.hpp"
 #include "net/net_index.hpp"

@@ -8,10 +8,10 @@
 
 #include "report/expectations.hpp"
 #include "report/outputs.hpp"
-#include "sim/route_planning.hpp"
+#include "step/route_planning.hpp"
 #include "scenario/scenario.hpp"
 #include "sim/step_loop.hpp"
-#include "sim/stuck_watch.hpp"
+#include "step/stuck_watch.hpp"
 #include "net/net_index.hpp"
 #include "route/route_builder.hpp"
 
@@ -161,7 +161,7 @@ TEST(StuckWatch, WithoutALeaderTheJunctionTheEgoWaitsAtIsNamed) {
   row.s_front = 95.0;
   row.edge = "in";
   row.lane = "in_0";
-  const LeaderQuery none = [](double) { return std::optional<LeaderInfo>(); };
+  const std::optional<LeaderInfo> none;
   const NotArrived n = not_arrived("stuck", 60.0, row, w, none, route);
   EXPECT_EQ(n.junction, "K");
   EXPECT_NE(n.detail.find("held by SUMO at junction K"), std::string::npos) << n.detail;

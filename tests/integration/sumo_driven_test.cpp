@@ -6,13 +6,18 @@
 // stop at a red light on its own; its own lane changes, located on the route's edge.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <algorithm>
+#include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "report/metrics.hpp"
 #include "scenario/scenario.hpp"
 #include "sim/session_setup.hpp"
-#include "sim/sumo_driven.hpp"
+#include "sim/step_loop.hpp"
+#include "step/sumo_driven_core.hpp"
 #include "net/net_index.hpp"
 
 namespace signalsim {
@@ -33,7 +38,7 @@ Driven drive_by_sumo(const std::string& name) {
   RunContext context;
   context.sumo_drives = true;
   StartedRun run = start_run(plan_run(scenario, net), net, context);
-  d.record = observe_sumo_drive(run, net);
+  d.record = drive(run, net);
   d.scenario = run.scenario;
   d.plan = std::move(run.plan);
   return d;
@@ -73,51 +78,6 @@ TEST(SumoSignals, DecodeTraciBits) {
   EXPECT_EQ(blinker_of_signals(2), Blinker::Left);
   EXPECT_EQ(blinker_of_signals(3), Blinker::Hazard);
   EXPECT_EQ(blinker_of_signals(4), Blinker::Hazard);
-}
-
-// The locating rules on a synthetic route (no SUMO): a_0 | junction J, two chained internal lanes
-// :J_0_0 (5 m) and :J_1_0 (10 m) | b_0.
-RouteMap junction_route() {
-  const auto lanelet = [](const std::string& lane, const std::string& junction, double s, double length) {
-    Lanelet l;
-    l.lane_id = lane;
-    l.edge_id = lane.substr(0, lane.rfind('_'));
-    l.junction_id = junction;
-    l.is_internal = !junction.empty();
-    l.s_start = s;
-    l.length = length;
-    return l;
-  };
-  return RouteMap({lanelet("a_0", "", 0, 100), lanelet(":J_0_0", "J", 100, 5), lanelet(":J_1_0", "J", 105, 10),
-                   lanelet("b_0", "", 115, 50)});
-}
-
-TEST(SumoDrivenLocate, PlannedLaneAnotherLaneOfTheEdgeAndOffTheRoute) {
-  const RouteMap route = junction_route();
-  const RoutePosition planned = locate_on_route(route, "a_0", "a", 40.0, 0, 39.0);
-  EXPECT_TRUE(planned.on_plan);
-  EXPECT_DOUBLE_EQ(*planned.s, 40.0);
-  const RoutePosition other_lane = locate_on_route(route, "b_1", "b", 20.0, 3, 130.0);
-  EXPECT_FALSE(other_lane.on_plan);
-  EXPECT_DOUBLE_EQ(*other_lane.s, 135.0);  // b's route lanelet + the lane position
-  EXPECT_FALSE(locate_on_route(route, "c_0", "c", 5.0, 3, 140.0).s.has_value());
-}
-
-TEST(SumoDrivenLocate, AnotherConnectionNeverGoesBackNorPastTheJunction) {
-  const RouteMap route = junction_route();
-  // :J_5_0, 20 m long, another connection of J: placed from J's first route lanelet (s 100).
-  RoutePosition p = locate_on_route(route, ":J_5_0", ":J_5", 3.0, 1, 101.0);
-  EXPECT_FALSE(p.on_plan);
-  EXPECT_DOUBLE_EQ(*p.s, 103.0);
-  p = locate_on_route(route, ":J_5_0", ":J_5", 1.0, 1, 103.0);  // behind the last s: held there
-  EXPECT_DOUBLE_EQ(*p.s, 103.0);
-  p = locate_on_route(route, ":J_5_0", ":J_5", 4.0, 1, 112.0);  // s_of gives 104 < 112: held
-  EXPECT_DOUBLE_EQ(*p.s, 112.0);
-  // Longer than the route's lanelet: at most its end, never past the junction (which ends at 115).
-  p = locate_on_route(route, ":J_5_0", ":J_5", 8.0, 1, 104.0);
-  EXPECT_DOUBLE_EQ(*p.s, 105.0);
-  p = locate_on_route(route, ":J_5_0", ":J_5", 19.0, 2, 114.0);
-  EXPECT_DOUBLE_EQ(*p.s, 115.0);
 }
 
 // intersection_left: SUMO's left blinker comes on at the first step the front is within 7 s x 13.89
@@ -266,6 +226,50 @@ TEST(SumoDriven, AnotherConnectionThroughTheJunctionIsLocatedInIt) {
     EXPECT_LE(rows[i].s_front, junction.s_end());
   }
   EXPECT_GT(inside, 5u);
+}
+
+}  // namespace
+}  // namespace signalsim
+
+namespace signalsim {
+namespace {
+
+// A SUMO-driven run ends at the sumocfg's `end` when that comes before `duration` after departure
+// (docs/sumo.md), as a signalsim-driven run does, and records the same SUMO fields: the output
+// directory, SUMO's log there, the options passed through and the back-end's notes.
+TEST(SumoDriven, EndsAtTheSumocfgEndAndRecordsTheRunsSumoFields) {
+  namespace fs = std::filesystem;
+  const fs::path work = fs::temp_directory_path() / ("signalsim_sumocfg_end_" + std::to_string(::getpid()));
+  fs::create_directories(work);
+  std::ofstream(work / "short.sumocfg")
+      << "<configuration><input><net-file value=\"" << SIGNALSIM_SOURCE_DIR
+      << "/sumo_nets/cross/cross.net.xml\"/></input><time><begin value=\"0\"/><end value=\"8\"/>"
+         "<step-length value=\"0.1\"/></time></configuration>\n";
+  std::ofstream(work / "short.yaml") << "name: short\nsumocfg: short.sumocfg\nduration: 60\n"
+                                        "ego: {route: [in_S, out_W], depart_speed: 8.33}\n";
+  const Scenario scenario = load_scenario((work / "short.yaml").string());
+  const sumo::NetIndex net = sumo::NetIndex::load(scenario.net);
+  const auto run_with = [&](bool sumo_drives) {
+    RunContext context;
+    context.sumo_drives = sumo_drives;
+    context.out_dir = (work / (sumo_drives ? "sumo" : "signalsim")).string();
+    fs::create_directories(context.out_dir);
+    const StartedRun run = start_run(plan_run(scenario, net), net, context);
+    return drive(run, net);
+  };
+  const RunRecord by_sumo = run_with(true), by_signalsim = run_with(false);
+  for (const RunRecord* r : {&by_sumo, &by_signalsim}) {
+    ASSERT_FALSE(r->rows.empty());
+    EXPECT_FALSE(r->arrived);  // 8 s are not enough for the 300 m
+    EXPECT_NEAR(r->rows.back().time, 7.9, 1e-9);  // the last step ends at the sumocfg's end
+  }
+  EXPECT_EQ(by_sumo.sumo.out_dir, (work / "sumo").string());
+  EXPECT_EQ(by_sumo.sumo.log, (work / "sumo" / "sumo.log").string());
+  EXPECT_EQ(by_sumo.sumo.args, by_signalsim.sumo.args);
+  EXPECT_EQ(by_sumo.sumo.notes, by_signalsim.sumo.notes);
+  EXPECT_EQ(by_sumo.sumo.server_options, by_signalsim.sumo.server_options);
+  EXPECT_EQ(by_sumo.sumo.backend, by_signalsim.sumo.backend);
+  fs::remove_all(work);
 }
 
 }  // namespace

@@ -12,16 +12,16 @@
 //   for objects within the path), until its last line is behind base_link;
 // - start planner (pull out): from departure until base_link passes the pull-out end;
 // - goal planner (pull over): once the pull-over goal lies within the module path.
-// No SUMO here: the target lane's traffic is handed in by the caller.
+// No SUMO here: the stage names the lane whose traffic it may need (waiting_lane_change) and is handed
+// that traffic with the step's observation.
 #pragma once
 
-#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "planning/lane_change_execution.hpp"
-#include "sim/route_planning.hpp"
+#include "step/route_planning.hpp"
 #include "report/timeline.hpp"
 #include "turn_signal/behavior_modules.hpp"
 
@@ -47,9 +47,9 @@ class BehaviorStage {
     bool departed = false;  ///< the ego has moved (start planner has_departed)
     const LateralSegment* segment = nullptr;  ///< plan().on_edge(the ego's edge)
     double lateral_offset = 0.0;  ///< measured from segment->reference_lane's centre [m]
+    /// The other vehicles on waiting_lane_change(ego.s_base)'s target lane, in route s.
+    std::vector<OccupiedSpan> target_lane;
   };
-  /// The other vehicles on a lane change's target lane (segment.reference_lane), in route s.
-  using TargetLaneTraffic = std::function<std::vector<OccupiedSpan>(const LateralSegment&)>;
 
   struct Transition {
     std::string edge;  ///< the lane change's edge
@@ -62,8 +62,12 @@ class BehaviorStage {
     std::optional<double> hold_distance;   ///< [m] base_link must come to rest within this (a lane change not yet approved)
   };
 
-  /// One step. `traffic` is asked only while a lane change waits for approval.
-  Result step(const Observation& observation, const TargetLaneTraffic& traffic);
+  /// The lane change whose target lane's traffic a step with base_link at `s_base` may need: the one
+  /// the step runs, unless it is already running (its approval needs the traffic). nullptr: none.
+  const LateralSegment* waiting_lane_change(double s_base) const;
+
+  /// One step. observation.target_lane is read only while a lane change waits for approval.
+  Result step(const Observation& observation);
 
   /// The offset `seg` plans for base_link at s (left positive, from its reference lane's centre).
   /// Backing up: the pull out's road-side offset. A lane change not yet approved: its original lane.
@@ -76,6 +80,9 @@ class BehaviorStage {
 
  private:
   const LaneChangeExecution* execution_of(const LateralSegment& seg) const;
+  /// The index of the lane change a step with base_link at `s_base` runs (the first not done whose
+  /// earliest start lies within the module path), or the number of segments.
+  std::size_t current_lane_change(double s_base) const;
 
   LateralPlan plan_;
   BehaviorSignalParameters params_;

@@ -9,18 +9,12 @@
 #include <vector>
 
 #include "report/timeline.hpp"
-#include "sim/behavior_stage.hpp"
-#include "sim/light_stage.hpp"
-#include "sim/session_setup.hpp"
+#include "step/behavior_stage.hpp"
+#include "step/light_stage.hpp"
 #include "route/approach_lights.hpp"
 #include "session/sumo_session.hpp"
 
 namespace signalsim {
-
-/// The record's `sumo` fields of a started run (summary.json `sumo`, `ego`): the back-end, its
-/// endpoint with --connect, the ego as SUMO had it at departure, the options passed through, the
-/// output directory and log, the server's options and the back-end's notes. Never throws.
-RunSumoInfo run_sumo_info(const StartedRun& run);
 
 /// One step's timeline row as far as signalsim knows it: SUMO's observation at the step's start
 /// (`observed`), the ego's route position and signed speed (`ego`), the measured and planned lateral

@@ -1,5 +1,5 @@
 // The lane-plan watch of a signalsim-driven run; see the header.
-#include "sim/plan_watch.hpp"
+#include "step/plan_watch.hpp"
 
 #include <cstdio>
 

@@ -2,12 +2,12 @@
 // the horizon ahead (down to 2 m behind the front) has its own judge and its own perception model
 // (docs/behaviour.md §L1.1: one scene module per light on the path); a light is dropped once the front is
 // more than 2 m past its stop line (the judge's GO_OUT dead line, docs/behaviour.md §L1.2), whatever its state.
-// With V2I on (docs/behaviour.md §L1.7) each light also has its own V2I channel: its programs are read once,
-// when the light is first judged, its timing every step, and the predicted phases, as signal elements
-// of the ego's approach, reach its judge through the channel's faults.
+// With V2I on (docs/behaviour.md §L1.7) each light also has its own V2I channel: its programs are asked for
+// once, when the light is first judged, its timing every step, and the predicted phases, as signal
+// elements of the ego's approach, reach its judge through the channel's faults. The stage reads no
+// SUMO: it says what it needs (demand) and is handed the step's observation.
 #pragma once
 
-#include <functional>
 #include <optional>
 #include <string>
 #include <utility>
@@ -15,6 +15,7 @@
 
 #include "route/approach_lights.hpp"
 #include "session/signal_timing.hpp"
+#include "step/step_ports.hpp"
 #include "traffic_light/perception_model.hpp"
 #include "traffic_light/traffic_light_judge.hpp"
 #include "traffic_light/v2i_channel.hpp"
@@ -31,13 +32,6 @@ struct LightStep {
   TrafficLightJudgeResult result;
 };
 
-/// Where V2I predictions come from (used only with judge.v2i.use_remaining_time).
-struct V2iSource {
-  V2iChannelParameters channel;  ///< its faults and seed (each light's channel is seeded apart)
-  std::function<std::vector<sumo::LightProgram>(const std::string&)> programs_of;  ///< read once per light
-  std::function<sumo::LightTiming(const std::string&)> timing_of;                  ///< every step
-};
-
 /// The V2I predictions of one light as signal elements of this approach (docs/behaviour.md §L1.7, §S3):
 /// the program's predicted phases (signal_timing.hpp) from `timing`, each turned into what the ego's
 /// approach shows (phases where the ego's link is off are left out). Empty when the running program
@@ -47,16 +41,18 @@ std::vector<SignalPrediction> v2i_predictions(const std::vector<sumo::LightProgr
 
 class TrafficLightStage {
  public:
+  /// `v2i`: the channels' faults and seed (each light's channel is seeded apart), used only with
+  /// judge.v2i.use_remaining_time.
   TrafficLightStage(std::vector<sumo::ApproachLight> lights, const TrafficLightJudgeParameters& judge,
-                    const PerceptionModelParameters& perception, double horizon, V2iSource v2i = {});
+                    const PerceptionModelParameters& perception, double horizon, V2iChannelParameters v2i = {});
 
-  /// A light's live state string, by light id, never null (kept by the caller at least until the next
-  /// call). A pointer, not a reference: a callable that returned the string by value would bind a
-  /// returned reference to a temporary without a word from the compiler, a pointer does not compile.
-  using StateOf = std::function<const std::string*(const std::string&)>;
+  /// What a step at `s_front` reads of the lights: the state of every light in the window (with V2I
+  /// its timing, and its programs until it has them), else the state of the next light beyond it.
+  void demand(double s_front, ObservationDemand& want) const;
 
-  /// One step for every light in the window, nearest first (empty when none).
-  std::vector<LightStep> step(double now, double s_front, double speed, double accel, const StateOf& state_of);
+  /// One step for every light in the window, nearest first (empty when none). `seen` holds the
+  /// readings demand() asked for at this `s_front`.
+  std::vector<LightStep> step(double now, double s_front, double speed, double accel, const StepObservation& seen);
 
   /// The next light ahead that is not yet dropped (for the timeline when none is in the window).
   const sumo::ApproachLight* next_light() const;
@@ -70,7 +66,7 @@ class TrafficLightStage {
     std::optional<TrafficLightJudge> judge;
     bool dropped = false;
     std::optional<V2iChannel> v2i;                ///< with V2I on
-    std::optional<std::vector<sumo::LightProgram>> programs;  ///< read when first judged
+    std::optional<std::vector<sumo::LightProgram>> programs;  ///< read when first judged (V2I)
     // What the last state showed the ego, and the text of the last observation: a light's state
     // changes a few times a cycle, so most steps reuse them.
     bool truth_known = false;
@@ -87,7 +83,7 @@ class TrafficLightStage {
   std::size_t first_ = 0;  // lights before this one are all dropped
   TrafficLightJudgeParameters judge_params_;
   double horizon_;
-  V2iSource v2i_;
+  V2iChannelParameters v2i_;
 };
 
 /// Whether the next junction the ego enters is a light showing the ego's link red or yellow: the ego

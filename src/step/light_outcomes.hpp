@@ -11,8 +11,8 @@
 
 #include "map/route_map.hpp"
 #include "report/timeline.hpp"
-#include "sim/light_stage.hpp"
-#include "sim/stuck_watch.hpp"
+#include "step/light_stage.hpp"
+#include "step/stuck_watch.hpp"
 
 namespace signalsim {
 
@@ -22,11 +22,15 @@ class LightOutcomes {
   explicit LightOutcomes(double stop_margin) : stop_margin_(stop_margin) {}
 
   /// One step's row. `lights`: every light in the window this step. `stopping`: the light whose
-  /// stop the ego is braking for this step, if any. `leader`: SUMO's vehicle ahead, to tell a rest
-  /// in the queue before a light from the ego's own stop. Appends to record.stops and
-  /// record.red_violations.
+  /// stop the ego is braking for this step, if any. `leader`: SUMO's vehicle ahead at the row (within
+  /// kLeaderRange, observed when needs_leader said so), to tell a rest in the queue before a light
+  /// from the ego's own stop. Appends to record.stops and record.red_violations.
   void observe(const TimelineRow& row, const std::vector<LightStep>& lights, const LightStep* stopping,
-               const LeaderQuery& leader, const RouteMap& route, RunRecord& record);
+               const std::optional<LeaderInfo>& leader, const RouteMap& route, RunRecord& record);
+
+  /// Whether a row with this signed `speed` may begin a stop (the ego comes to rest): the step's
+  /// observation must then hold SUMO's leader.
+  bool needs_leader(double speed) const { return speed < kRestSpeed && !resting_; }
 
  private:
   struct Previous {

@@ -1,5 +1,5 @@
 // The record of a signalsim-driven run: SUMO fields, rows, events, light log; see step_record.hpp.
-#include "sim/step_record.hpp"
+#include "step/step_record.hpp"
 
 #include <utility>
 
@@ -12,21 +12,6 @@ void record_event(RunRecord& record, const TimelineRow& row, std::string kind, s
 }
 
 }  // namespace
-
-RunSumoInfo run_sumo_info(const StartedRun& run) {
-  const sumo::SumoSession& session = *run.session;
-  RunSumoInfo info;
-  info.backend = session.backend();
-  if (run.config.backend.kind == sumo::BackendKind::Connect)
-    info.endpoint = run.config.backend.host + ":" + std::to_string(run.config.backend.port);
-  info.ego = session.ego_vehicle();
-  info.args = run.config.extra_args;
-  info.out_dir = run.out_dir;
-  info.log = run.config.log_file;
-  info.server_options = session.server_options();
-  info.notes = run.notes;
-  return info;
-}
 
 TimelineRow timeline_row(const sumo::EgoState& observed, const EgoOnRoute& ego, double lateral_offset,
                          std::optional<double> planned_offset, Blinker blinker, RequestSource source,

@@ -11,7 +11,6 @@
 //           of (front within 10 m of it), else "SUMO gives no reason"
 #pragma once
 
-#include <functional>
 #include <optional>
 #include <string>
 
@@ -24,10 +23,6 @@ namespace signalsim {
 /// commanded speed that holds the ego.
 inline constexpr double kRestSpeed = 0.01;
 
-/// A read-only query the step loop answers from the SUMO session: the vehicle ahead of the ego on
-/// its route within `range` metres and the gap from the ego's front to its rear (nothing if none).
-using LeaderQuery = std::function<std::optional<LeaderInfo>(double range)>;
-
 class StuckWatch {
  public:
   /// `stuck_rest_time` [s]; 0 switches the rule off.
@@ -38,6 +33,10 @@ class StuckWatch {
   /// ego rests short of it (behind others): the stuck clock pauses, it does not restart. Returns true
   /// when the run must end as stuck.
   bool observe(double time, double speed, const std::string& held_by, bool queued = false);
+
+  /// Whether observe(time, speed, "", false) would end the run: the step at `time` may end it as
+  /// stuck when signalsim does not hold the ego (its leader is then asked for, to say why).
+  bool may_end_at(double time, double speed) const;
 
   /// The ego was at rest at the last observation.
   bool at_rest() const { return rest_since_.has_value(); }
@@ -59,8 +58,9 @@ class StuckWatch {
 
 /// The record of a run that ends at `last` without arriving: `reason` "stuck" or "duration",
 /// `duration` [s] the scenario's (for the sentence), the watch's rest times, and SUMO's view
-/// (`leader`, asked only when the ego is at rest and not held; `route` gives the junction).
+/// (`leader`: SUMO's leader of the ego at `last`, within kLeaderRange, used when the ego is at rest and
+/// not held; `route` gives the junction).
 NotArrived not_arrived(const std::string& reason, double duration, const TimelineRow& last, const StuckWatch& watch,
-                       const LeaderQuery& leader, const RouteMap& route);
+                       const std::optional<LeaderInfo>& leader, const RouteMap& route);
 
 }  // namespace signalsim

@@ -1,4 +1,4 @@
-#include "sim/stuck_watch.hpp"
+#include "step/stuck_watch.hpp"
 
 #include <cstdio>
 
@@ -8,7 +8,6 @@ namespace signalsim {
 
 namespace {
 
-constexpr double kLeaderRange = 100.0;     // [m] how far ahead a leader explains a rest
 constexpr double kJunctionApproach = 10.0;  // [m] the front this close to a junction waits at it
 
 // The junction the front is in, or at the entry of (the next route lanelet is internal).
@@ -23,6 +22,12 @@ std::string junction_at(const RouteMap& route, double s_front) {
 }
 
 }  // namespace
+
+bool StuckWatch::may_end_at(double time, double speed) const {
+  if (limit_ <= 0.0 || !(speed < kRestSpeed && speed > -kRestSpeed)) return false;
+  const double clock = counting_ ? free_for_ + (time - last_time_) : free_for_;
+  return clock >= limit_ - 1e-9;
+}
 
 bool StuckWatch::observe(double time, double speed, const std::string& held_by, bool queued) {
   const double since_last = observed_ ? time - last_time_ : 0.0;
@@ -52,7 +57,7 @@ bool StuckWatch::observe(double time, double speed, const std::string& held_by, 
 }
 
 NotArrived not_arrived(const std::string& reason, double duration, const TimelineRow& last, const StuckWatch& watch,
-                       const LeaderQuery& leader, const RouteMap& route) {
+                       const std::optional<LeaderInfo>& leader, const RouteMap& route) {
   NotArrived n;
   n.reason = reason;
   n.time = last.time;
@@ -62,7 +67,7 @@ NotArrived not_arrived(const std::string& reason, double duration, const Timelin
   n.at_rest_for = watch.at_rest_for();
   n.held_by = watch.held_by();
   const bool free_rest = watch.at_rest() && n.held_by.empty();
-  if (free_rest && leader) n.leader = leader(kLeaderRange);
+  if (free_rest) n.leader = leader;
   if (free_rest && !n.leader) n.junction = junction_at(route, last.s_front);
 
   const std::string where =

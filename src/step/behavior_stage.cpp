@@ -1,4 +1,4 @@
-#include "sim/behavior_stage.hpp"
+#include "step/behavior_stage.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -31,7 +31,24 @@ double BehaviorStage::planned_offset(const LateralSegment& seg, double s, bool b
   return seg.plan.offset_at(s);
 }
 
-BehaviorStage::Result BehaviorStage::step(const Observation& o, const TargetLaneTraffic& traffic) {
+std::size_t BehaviorStage::current_lane_change(double s_base) const {
+  for (std::size_t i = 0; i < plan_.segments.size(); ++i) {
+    const LateralSegment& seg = plan_.segments[i];
+    const LaneChangePhase phase = executions_[i].phase();
+    if (seg.kind == LateralKind::LaneChange && phase != LaneChangePhase::Done && phase != LaneChangePhase::Missed &&
+        seg.lane_change.earliest_start <= s_base + config_.path_forward)
+      return i;
+  }
+  return plan_.segments.size();
+}
+
+const LateralSegment* BehaviorStage::waiting_lane_change(double s_base) const {
+  const std::size_t i = current_lane_change(s_base);
+  if (i == plan_.segments.size() || executions_[i].phase() == LaneChangePhase::Running) return nullptr;
+  return &plan_.segments[i];
+}
+
+BehaviorStage::Result BehaviorStage::step(const Observation& o) {
   const EgoOnRoute& ego = o.ego;
   const double path_back = std::min(config_.route_length, ego.s_base + config_.path_forward);
   const auto module_signal = [&](const LateralSegment& seg) {
@@ -136,7 +153,7 @@ BehaviorStage::Result BehaviorStage::step(const Observation& o, const TargetLane
     lc_step.blinker_on_since = modules_.lane_change.blinker_on_since();
     lc_step.prepare_duration = modules_.lane_change.actual_prepare_duration(o.now, ego.speed, params_);
     if (lc_step.module_active && current_lc->phase() != LaneChangePhase::Running)
-      lc_step.target_lane = traffic(*current_lc_segment);
+      lc_step.target_lane = o.target_lane;
     const LaneChangePhase before = current_lc->phase();
     if (current_lc->update(lc_step)) {
       // One transition per phase passed (pending -> waiting_approval -> running may be one step).

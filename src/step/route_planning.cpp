@@ -1,4 +1,4 @@
-#include "sim/route_planning.hpp"
+#include "step/route_planning.hpp"
 
 #include <algorithm>
 #include <cmath>

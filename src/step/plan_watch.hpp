@@ -17,7 +17,7 @@
 #include <string>
 
 #include "map/route_map.hpp"
-#include "sim/route_planning.hpp"
+#include "step/route_planning.hpp"
 #include "report/timeline.hpp"
 
 namespace signalsim {

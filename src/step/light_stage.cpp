@@ -1,4 +1,4 @@
-#include "sim/light_stage.hpp"
+#include "step/light_stage.hpp"
 
 #include <utility>
 
@@ -33,13 +33,14 @@ std::vector<SignalPrediction> v2i_predictions(const std::vector<sumo::LightProgr
 }
 
 TrafficLightStage::TrafficLightStage(std::vector<sumo::ApproachLight> lights, const TrafficLightJudgeParameters& judge,
-                                     const PerceptionModelParameters& perception, double horizon, V2iSource v2i)
+                                     const PerceptionModelParameters& perception, double horizon,
+                                     V2iChannelParameters v2i)
     : judge_params_(judge), horizon_(horizon), v2i_(std::move(v2i)) {
   for (std::size_t i = 0; i < lights.size(); ++i) {
     lights_.emplace_back(std::move(lights[i]), PerceptionModel(perception_for(perception, i)));
     // The channel counts a message while the judge would count a camera result (tl_state_timeout).
     if (judge_params_.v2i.use_remaining_time) {
-      V2iChannelParameters channel = channel_for(v2i_.channel, i);
+      V2iChannelParameters channel = channel_for(v2i_, i);
       channel.max_age = judge_params_.tl_state_timeout;
       lights_.back().v2i.emplace(channel);
     }
@@ -71,8 +72,26 @@ const std::string& TrafficLightStage::Tracked::describe(const std::vector<Signal
   return described_text;
 }
 
+void TrafficLightStage::demand(double s_front, ObservationDemand& want) const {
+  bool window_empty = true;
+  for (std::size_t i = first_; i < lights_.size(); ++i) {
+    const Tracked& t = lights_[i];
+    if (t.dropped) continue;
+    if (t.light.s_stop_line - s_front > horizon_) {  // route order: the rest are further ahead
+      if (window_empty) want.light(t.light.tls_id);  // the next light, for the timeline row
+      break;
+    }
+    window_empty = false;
+    LightDemand& light = want.light(t.light.tls_id);
+    if (t.v2i) {
+      light.timing = true;
+      if (!t.programs) light.programs = true;
+    }
+  }
+}
+
 std::vector<LightStep> TrafficLightStage::step(double now, double s_front, double speed, double accel,
-                                               const StateOf& state_of) {
+                                               const StepObservation& seen) {
   std::vector<LightStep> out;
   std::size_t in_window = 0;  // an upper bound (dropped lights counted): one allocation a step
   while (first_ + in_window < lights_.size() && lights_[first_ + in_window].light.s_stop_line - s_front <= horizon_)
@@ -86,7 +105,8 @@ std::vector<LightStep> TrafficLightStage::step(double now, double s_front, doubl
     LightStep step;
     step.light = &t.light;
     step.front_to_stop_line = front_to_line;
-    const std::string& state = *state_of(t.light.tls_id);
+    const LightReading& reading = *seen.light(t.light.tls_id);  // demanded: in the window
+    const std::string& state = reading.state;
     step.own_state = t.light.link_index >= 0 && static_cast<std::size_t>(t.light.link_index) < state.size()
                          ? state[static_cast<std::size_t>(t.light.link_index)]
                          : '?';
@@ -109,8 +129,8 @@ std::vector<LightStep> TrafficLightStage::step(double now, double s_front, doubl
       in.is_turn_lane = t.light.direction == TurnDirection::Left || t.light.direction == TurnDirection::Right;
       in.has_static_arrow = t.light.has_arrow;
       if (t.v2i) {  // docs/behaviour.md §L1.7: the program once, the timing every step
-        if (!t.programs) t.programs = v2i_.programs_of(t.light.tls_id);
-        in.predictions = t.v2i->step(v2i_predictions(*t.programs, v2i_.timing_of(t.light.tls_id), t.light), now);
+        if (!t.programs) t.programs = *reading.programs;
+        in.predictions = t.v2i->step(v2i_predictions(*t.programs, *reading.timing, t.light), now);
       }
       step.result = t.judge->step(in);
       step.judged = true;

@@ -1,5 +1,5 @@
 // Stops and red-light crossings of a signalsim-driven run; see light_outcomes.hpp.
-#include "sim/light_outcomes.hpp"
+#include "step/light_outcomes.hpp"
 
 #include <algorithm>
 
@@ -11,7 +11,7 @@ bool is_red(char state) { return state == 'r' || state == 'u'; }
 }  // namespace
 
 void LightOutcomes::observe(const TimelineRow& row, const std::vector<LightStep>& lights, const LightStep* stopping,
-                            const LeaderQuery& leader, const RouteMap& route, RunRecord& record) {
+                            const std::optional<LeaderInfo>& leader, const RouteMap& route, RunRecord& record) {
   // A stop: the first step at rest while a stop is requested; a new one only after moving again.
   // The error is measured against the stop line minus stop_margin, not the judge's stop point,
   // which restart suppression moves to wherever the ego stands (docs/behaviour.md §L1.6).
@@ -28,7 +28,7 @@ void LightOutcomes::observe(const TimelineRow& row, const std::vector<LightStep>
     stop.worst_level = worst_level_;
     const double to_go = stop_s - row.s_front;
     if (to_go > kQueueGap) {
-      if (const auto ahead = leader(to_go); ahead && ahead->gap < to_go) stop.queued_behind = ahead->id;
+      if (leader && leader->gap < to_go) stop.queued_behind = leader->id;
       const std::size_t here = route.index_at(row.s_front);
       if (stop.queued_behind.empty() && here != stopping->light->route_index)
         for (std::size_t i = here; i < stopping->light->route_index; ++i)

@@ -1,0 +1,275 @@
+// The stages of one signalsim-driven step between SUMO's ports; see step_core.hpp.
+#include "step/step_core.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <utility>
+
+#include "planning/stop/jerk_limited_stop.hpp"
+#include "step/route_planning.hpp"
+
+namespace signalsim {
+namespace {
+
+Blinker blinker_of(const TurnSignalDecision& d) {
+  if (d.hazard == HazardLights::Enable) return Blinker::Hazard;
+  if (d.turn == TurnIndicator::EnableLeft) return Blinker::Left;
+  if (d.turn == TurnIndicator::EnableRight) return Blinker::Right;
+  return Blinker::None;
+}
+
+// The nearest stop line ahead of a light the judge passes on a stop signal (docs/behaviour.md §L2.3 "can pass
+// through during yellow lamp"), or +infinity.
+double passed_on_stop_signal(const std::vector<LightStep>& lights) {
+  double line = std::numeric_limits<double>::infinity();
+  for (const LightStep& l : lights)
+    if (l.judged && l.front_to_stop_line > 0.0 && l.result.decision == JudgeDecision::Pass &&
+        l.result.zone == JudgeZone::PassThroughYellow)
+      line = std::min(line, l.light->s_stop_line);
+  return line;
+}
+
+StopSpeedPlanner stop_planner_for(const EgoSpec& ego) {
+  StopPlannerParameters params;
+  params.emergency.min_acc = -ego.emergency_decel;
+  return StopSpeedPlanner(params, ego.emergency_decel);
+}
+
+BehaviorStageConfig behavior_config_for(const Scenario& scenario, const RouteMap& route) {
+  BehaviorStageConfig config;
+  config.path_forward = scenario.run_params.decider.forward_path_length;
+  config.route_length = route.length();
+  config.vehicle_length = scenario.ego.length;
+  config.max_speed = scenario.ego.max_speed;
+  config.gaps = {scenario.run_params.lane_change_safety_rear_gap, scenario.run_params.lane_change_safety_front_gap};
+  return config;
+}
+
+
+}  // namespace
+
+double run_end_time(const Scenario& scenario, double start_time) {
+  return std::min(start_time + scenario.duration, scenario.sumo.end.value_or(std::numeric_limits<double>::infinity()));
+}
+
+// The light stage on the route's lights; V2I (docs/behaviour.md §L1.7) reads SUMO's programs and
+// timing through the observation, only when it is on.
+StepCore::StepCore(CoreSetup setup)
+    : scenario_(setup.scenario),
+      route_(setup.route),
+      lateral_(setup.lateral),
+      b2f_(scenario_.ego.base_link_to_front),
+      dt_(scenario_.step_length),
+      limits_{scenario_.ego.max_speed, scenario_.ego.accel, scenario_.ego.decel},
+      judge_params_(scenario_.run_params.judge),
+      end_time_(run_end_time(scenario_, setup.start_time)),
+      decider_(turn_signal_parameters(scenario_)),
+      behavior_(lateral_, behavior_parameters(scenario_), behavior_config_for(scenario_, route_)),
+      lights_(std::move(setup.lights), judge_params_, scenario_.perception,
+              scenario_.run_params.decider.forward_path_length, scenario_.v2i_channel),
+      stop_speed_(stop_planner_for(scenario_.ego)),
+      outcomes_(judge_params_.stop_margin),
+      stuck_(scenario_.run_params.stuck_rest_time),
+      plan_watch_(route_, lateral_),
+      locator_(route_, scenario_.ego.depart_pos) {
+  for (const LateralSegment& seg : behavior_.plan().segments)
+    if (seg.kind == LateralKind::PullOver) pull_over_goal_ = &seg;
+  record_.base_link_to_front = b2f_;
+  record_.sumo = std::move(setup.sumo);
+  record_.v2i = judge_params_.v2i.use_remaining_time;
+}
+
+// demand: the front located on the route (monotonic: searched from the lanelet it was on), and what
+// the step will read at that place. The leader is asked for when this row may begin a stop at a
+// light or end the run (a rest behind a vehicle is explained by the vehicle ahead at the row).
+ObservationDemand StepCore::demand(const sumo::EgoState& ego) {
+  place_ = locator_.locate(ego.lane, ego.edge, ego.lane_pos);
+  const double s_front = place_.s_front;
+  const bool backing = backed_up_ < lateral_.backward - 1e-9;
+  const double row_speed = backing ? -kBackwardSpeed : ego.speed;
+  ObservationDemand want;
+  if (const LateralSegment* seg = behavior_.plan().on_edge(ego.edge)) want.lateral_reference_lane = seg->reference_lane;
+  if (const LateralSegment* waiting = behavior_.waiting_lane_change(s_front - b2f_))
+    want.lane_traffic = waiting->reference_lane;
+  lights_.demand(s_front, want);
+  want.leader = outcomes_.needs_leader(row_speed) || stuck_.may_end_at(ego.time, row_speed) ||
+                ego.time + dt_ >= end_time_ - 0.5 * dt_;
+  return want;
+}
+
+// observe: whether SUMO left the lane plan, and the lateral offset, measured against the planned lane
+// while the ego is on a segment's edge.
+StepCore::Now StepCore::observe(const StepObservation& seen) {
+  Now now;
+  now.sumo = seen.ego;
+  if (!place_.on_route) ++record_.off_route_steps;  // the lane is not on the route: s held (counted)
+  const double s_front = place_.s_front;
+  now.off_plan = plan_watch_.observe(now.sumo.lane, now.sumo.edge, place_.index, s_front, now.sumo.time, record_);
+  // Backing up (pull out with `backward`, emulated): not driving forward, negative speed.
+  now.backing = backed_up_ < lateral_.backward - 1e-9;
+  now.ego = EgoOnRoute{s_front, s_front - b2f_, now.backing ? -kBackwardSpeed : now.sumo.speed};
+  if (now.sumo.speed > kRestSpeed) departed_ = true;
+  now.segment = behavior_.plan().on_edge(now.sumo.edge);
+  now.lateral_offset = now.segment ? seen.lateral_offset.value() : now.sumo.lateral_offset;
+  return now;
+}
+
+// A waiting lane change's target lane: the other vehicles on it, in route s.
+std::vector<OccupiedSpan> StepCore::target_lane_traffic(const StepObservation& seen, double s_base) const {
+  std::vector<OccupiedSpan> spans;
+  const LateralSegment* waiting = behavior_.waiting_lane_change(s_base);
+  if (!waiting) return spans;
+  const double lane_start = route_.at(waiting->route_index).s_start;
+  for (const sumo::SumoSession::LaneVehicle& v : seen.lane_traffic)
+    spans.push_back({lane_start + v.pos - v.length, lane_start + v.pos});
+  return spans;
+}
+
+// One step: maneuver (the behaviour modules, docs/behaviour.md §T8, and the lane changes' phases),
+// decide (the decider takes the window of route lanelets around base_link itself, since its back
+// length depends on the roundabouts, docs/behaviour.md §T3.2), light, plan; then the commands.
+Commands StepCore::step(const StepObservation& seen) {
+  Pending& p = pending_.emplace();
+  p.now = observe(seen);
+  const Now& now = p.now;
+  p.behavior = behavior_.step({.now = now.sumo.time,
+                               .ego = now.ego,
+                               .accel = now.sumo.accel,
+                               .backing = now.backing,
+                               .departed = departed_,
+                               .segment = now.segment,
+                               .lateral_offset = now.lateral_offset,
+                               .target_lane = target_lane_traffic(seen, now.ego.s_base)});
+  if (now.segment) p.planned_offset = behavior_.planned_offset(*now.segment, now.ego.s_base, now.backing);
+  const TurnSignalDecision decision = decider_.decide(route_, now.ego, p.behavior.behavior);
+  p.blinker = {blinker_of(decision), decision.source};
+  p.lights = light(now, seen);
+  p.plan = plan_speed(now, p.behavior, p.lights);
+  return commands(p);
+}
+
+// light: every judge in the window (docs/behaviour.md §L); the ego brakes for the nearest stop requested by any
+// of them, and the timeline describes that light, else the nearest one.
+StepCore::Lights StepCore::light(const Now& now, const StepObservation& seen) {
+  Lights out;
+  out.steps = lights_.step(now.sumo.time, now.ego.s_front, now.sumo.speed, now.sumo.accel, seen);
+  for (const LightStep& l : out.steps)
+    if (l.result.stop_point_distance &&
+        (!out.stopping || *l.result.stop_point_distance < *out.stopping->result.stop_point_distance))
+      out.stopping = &l;
+  out.shown = out.stopping ? out.stopping : (out.steps.empty() ? nullptr : &out.steps.front());
+  // SUMO's right of way would hold the ego at a red line on its own (docs/behaviour.md §S4, measured): while
+  // the next junction is a light showing the ego red or yellow, the judge alone decides there.
+  out.sumo_right_of_way = !light_decides_next_junction(route_, now.ego.s_front, out.steps);
+  return out;
+}
+// plan: lane limits, and a jerk-limited stop for each stop point (planning/stop/stop_speed_planner).
+StepCore::SpeedPlan StepCore::plan_speed(const Now& now, const BehaviorStage::Result& behavior, const Lights& lights) {
+  SpeedPlan plan;
+  // A light the judge passes on a stop signal (pass_through_yellow: it cannot stop, and reaches the
+  // line within the yellow lamp period at its current speed) is crossed at that speed: the limits
+  // beyond its stop line apply from the line on (slowing before it for a turn would reach the line
+  // on red).
+  const double passed_line = passed_on_stop_signal(lights.steps);
+  const double limits_speed =
+      plan_speed_under_limits(route_, now.ego.s_front, now.sumo.speed, dt_, limits_, passed_line);
+  // SUMO would brake ahead of the turn's limit on its own (its safe speed looks at the next lanes'
+  // limits): while crossing such a line its lane limits are off, the planner's apply again beyond it.
+  plan.sumo_lane_limits = !std::isfinite(passed_line);
+  stop_speed_.begin_step(now.sumo.speed, now.sumo.accel, limits_speed, dt_);
+  if (lights.stopping) plan.stop_level = stop_speed_.add_stop(*lights.stopping->result.stop_point_distance);
+  // The pull-over goal: a jerk-limited stop with base_link at the goal (its level is not recorded).
+  std::optional<StopLevel> goal_level;
+  if (pull_over_goal_) goal_level = stop_speed_.add_stop(pull_over_goal_->goal_s - now.ego.s_base);
+  // A lane change not yet approved: base_link comes to rest before its last possible start (the
+  // stop constrains the speed from the step where a normal stop must begin, until approval).
+  std::optional<StopLevel> hold_level;
+  if (behavior.hold_distance) hold_level = stop_speed_.add_stop(*behavior.hold_distance);
+  plan.speed = stop_speed_.speed();
+  plan.emergency_braking = plan.stop_level == StopLevel::Emergency || hold_level == StopLevel::Emergency;
+  if (now.backing) plan.speed = 0.0;  // the back-up moves the ego (apply)
+  stop_speed_.end_step(plan.speed);
+  // What of signalsim holds the ego at rest this step, if anything (the stuck rule).
+  // Off the plan, signalsim's stops are for the planned lanes, not the one SUMO drives: it holds nothing.
+  if (plan.speed < kRestSpeed && !now.off_plan) {
+    plan.held_by = now.backing         ? "backing up"
+                   : plan.stop_level   ? "stopped for light " + lights.stopping->light->tls_id
+                   : hold_level        ? "the hold point of a lane change waiting for approval"
+                   : goal_level        ? "the pull-over goal"
+                                       : "its speed plan";
+  }
+  // In the queue before a red light the ego rests behind others, short of its own stop point: the
+  // stuck clock pauses while a judge asks for a stop (a red lasting longer than stuck_rest_time is
+  // no deadlock), but does not restart, so a car parked before a light is still found out.
+  plan.queued = lights.stopping != nullptr && plan.held_by.empty() && !now.off_plan;
+  return plan;
+}
+
+// The commands: SUMO's modes (right of way, lane limits, emergency braking), the blinker bits and the
+// speed (re-sent every step, docs/behaviour.md §S4), the lateral plan's offset where base_link will be
+// after the step (normal lanes of the plan's edge only), the back-up.
+Commands StepCore::commands(const Pending& step) {
+  const Now& now = step.now;
+  Commands c;
+  c.right_of_way = step.lights.sumo_right_of_way;
+  c.lane_limits = step.plan.sumo_lane_limits;
+  c.emergency_braking = step.plan.emergency_braking;
+  c.signal_mask = signal_mask(step.blinker.blinker);
+  c.speed = step.plan.speed;
+  if (now.segment)
+    c.lateral = LateralCommand{
+        behavior_.planned_offset(*now.segment, now.ego.s_base + step.plan.speed * dt_, now.backing),
+        now.segment->reference_lane};
+  if (now.backing) {
+    c.move_back = std::min(kBackwardSpeed * dt_, lateral_.backward - backed_up_);
+    backed_up_ += c.move_back;
+  }
+  return c;
+}
+
+// record: one timeline row, with the mask SUMO showed while executing the decision; the next light's
+// state as observed with the row; events on change; stops and red crossings; every light's own entry.
+bool StepCore::record(const StepObservation& seen, const StepFeedback& feedback) {
+  const Pending& p = *pending_;
+  const Now& now = p.now;
+  TimelineRow row = timeline_row(now.sumo, now.ego, now.lateral_offset, p.planned_offset, p.blinker.blinker,
+                                 p.blinker.source, p.lights.shown, p.plan.stop_level);
+  row.sumo_signals = feedback.alive ? feedback.signals : -1;
+  if (!p.lights.shown)
+    if (const sumo::ApproachLight* next = lights_.next_light())  // beyond the horizon
+      if (const LightReading* reading = seen.light(next->tls_id)) show_next_light(row, *next, reading->state);
+  events_.record(row, p.behavior.transitions, record_);
+  outcomes_.observe(row, p.lights.steps, p.lights.stopping, seen.leader, route_, record_);
+  log_lights(p.lights.steps, record_);
+  record_.rows.push_back(std::move(row));
+  return ended(seen, feedback, p.plan);
+}
+
+// end: the ego arrived, the stuck rule holds, or the run's time is over (step/stuck_watch).
+bool StepCore::ended(const StepObservation& seen, const StepFeedback& feedback, const SpeedPlan& plan) {
+  if (!feedback.alive) {
+    record_.arrived = true;
+    return true;
+  }
+  const TimelineRow& last = record_.rows.back();
+  if (stuck_.observe(last.time, last.speed, plan.held_by, plan.queued)) return end_not_arrived("stuck", seen.leader);
+  if (feedback.time >= end_time_ - 1e-9) return end_not_arrived("duration", seen.leader);
+  return false;
+}
+
+bool StepCore::end_not_arrived(const std::string& reason, const std::optional<LeaderInfo>& leader) {
+  record_.not_arrived = not_arrived(reason, scenario_.duration, record_.rows.back(), stuck_, leader, route_);
+  plan_watch_.explain(*record_.not_arrived, record_);
+  return true;
+}
+
+RunRecord StepCore::finish(int collisions) {
+  record_.collisions = collisions;
+  record_.lane_changes = behavior_.lane_change_records();
+  record_.maneuver_lines = maneuver_lines(behavior_.plan(), record_.lane_changes,
+                                          scenario_.run_params.decider.turn_signal_shift_length_threshold);
+  return std::move(record_);
+}
+
+}  // namespace signalsim

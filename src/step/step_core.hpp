@@ -1,0 +1,142 @@
+// The core of a signalsim-driven run (run_core.hpp): the stages of one step between SUMO's ports,
+// and what lives from one step to the next (the stages with their own state, the ego's progress
+// along the route, the record being filled). It reads SUMO only through the StepObservation it
+// asked for and writes only the Commands it returns: no session.
+//
+//   demand    locate the ego's front on the route (map/route_locator); ask for the offset from the
+//             lateral plan's lane on the ego's edge, a waiting lane change's target-lane traffic,
+//             the lights of the window (light_stage), and SUMO's leader when this row may need it
+//             (a stop may begin, the stuck rule or the end may end the run: the leader at the row)
+//   step      observe (the ego against the plans) -> maneuver -> decide -> light -> plan -> Commands
+//   record    the row with the mask SUMO showed while executing the commands; events on change;
+//             stops and red crossings; the end: arrived, stuck or out of time
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "map/route_locator.hpp"
+#include "planning/speed_limit_planner.hpp"
+#include "planning/stop/stop_speed_planner.hpp"
+#include "report/timeline.hpp"
+#include "route/approach_lights.hpp"
+#include "scenario/scenario.hpp"
+#include "step/behavior_stage.hpp"
+#include "step/light_outcomes.hpp"
+#include "step/light_stage.hpp"
+#include "step/plan_watch.hpp"
+#include "step/run_core.hpp"
+#include "step/step_record.hpp"
+#include "step/stuck_watch.hpp"
+#include "turn_signal/turn_signal_decider.hpp"
+
+namespace signalsim {
+
+/// What a core is built from: the run as SUMO started it, without SUMO.
+struct CoreSetup {
+  const Scenario& scenario;                   ///< as run (a taken-over vehicle's type filled in)
+  const RouteMap& route;                      ///< the route as driven
+  const LateralPlan& lateral;
+  std::vector<sumo::ApproachLight> lights;    ///< the route's lights, has_arrow from SUMO's programs
+  RunSumoInfo sumo;                           ///< the record's `sumo` fields
+  double start_time = 0.0;                    ///< [s] SUMO's time at the first step
+};
+
+/// [s] SUMO time at which a run started at `start_time` ends: `duration` after the ego's departure
+/// or the sumocfg's `end`, whichever comes first (docs/sumo.md).
+double run_end_time(const Scenario& scenario, double start_time);
+
+class StepCore final : public RunCore {
+ public:
+  explicit StepCore(CoreSetup setup);
+  StepCore(const StepCore&) = delete;  // pull_over_goal_ and the pending step point into members
+  StepCore& operator=(const StepCore&) = delete;
+
+  ObservationDemand demand(const sumo::EgoState& ego) override;
+  Commands step(const StepObservation& seen) override;
+  bool record(const StepObservation& seen, const StepFeedback& feedback) override;
+  RunRecord finish(int collisions) override;
+
+ private:
+  /// observe: the ego against the route and the plans, as demand() located it.
+  struct Now {
+    sumo::EgoState sumo;                      ///< as SUMO reports it
+    EgoOnRoute ego;                           ///< s_front, s_base; speed signed (negative while backing up)
+    bool backing = false;                     ///< emulated backward driving (pull out with `backward`)
+    bool off_plan = false;                    ///< on a lane the lane plan does not list (PlanWatch)
+    const LateralSegment* segment = nullptr;  ///< the lateral plan's segment on the ego's edge, if any
+    double lateral_offset = 0.0;              ///< [m] from the segment's planned lane, else from SUMO's lane
+  };
+  /// decide: the blinker and the request it came from.
+  struct BlinkerChoice {
+    Blinker blinker = Blinker::None;
+    RequestSource source = RequestSource::None;
+  };
+  /// light: every light in the judges' window this step, nearest first.
+  struct Lights {
+    std::vector<LightStep> steps;
+    const LightStep* stopping = nullptr;  ///< the light the ego brakes for: the nearest stop requested
+    const LightStep* shown = nullptr;     ///< the light the row describes: stopping, else the nearest
+    bool sumo_right_of_way = true;        ///< false while a light decides the next junction
+  };
+  /// plan: the speed commanded for the step, SUMO's modes for it, and what holds the ego.
+  struct SpeedPlan {
+    double speed = 0.0;                   ///< [m/s] commanded (0 while backing up)
+    std::optional<StopLevel> stop_level;  ///< the constraint set of the light's stop, if braking for one
+    bool sumo_lane_limits = true;         ///< false while crossing a line passed on a stop signal
+    bool emergency_braking = false;       ///< SUMO may brake beyond the ego's decel
+    std::string held_by;                  ///< what of signalsim holds the ego at rest ("" when nothing)
+    bool queued = false;                  ///< at rest in a queue before a light asking for a stop
+  };
+  /// A step between step() and record().
+  struct Pending {
+    Now now;
+    BehaviorStage::Result behavior;
+    std::optional<double> planned_offset;  ///< [m] on a segment's edge only
+    BlinkerChoice blinker;
+    Lights lights;
+    SpeedPlan plan;
+  };
+
+  Now observe(const StepObservation& seen);
+  std::vector<OccupiedSpan> target_lane_traffic(const StepObservation& seen, double s_base) const;
+  Lights light(const Now& now, const StepObservation& seen);
+  SpeedPlan plan_speed(const Now& now, const BehaviorStage::Result& behavior, const Lights& lights);
+  Commands commands(const Pending& step);
+  bool ended(const StepObservation& seen, const StepFeedback& feedback, const SpeedPlan& plan);
+  bool end_not_arrived(const std::string& reason, const std::optional<LeaderInfo>& leader);
+
+  // The run as started.
+  const Scenario& scenario_;
+  const RouteMap& route_;
+  const LateralPlan& lateral_;
+  const double b2f_;  // base_link_to_front [m]
+  const double dt_;   // step length [s]
+  const SpeedLimits limits_;
+  const TrafficLightJudgeParameters judge_params_;
+  const double end_time_;  // [s] SUMO time at which the run ends
+
+  // The stages, each with its own state.
+  TurnSignalDecider decider_;   // the remembered desired starts
+  BehaviorStage behavior_;      // the behaviour modules, the lane changes' phases
+  TrafficLightStage lights_;    // one judge and perception model per light
+  StopSpeedPlanner stop_speed_;
+  const LateralSegment* pull_over_goal_ = nullptr;  // the plan's last pull over, if any
+  LightOutcomes outcomes_;
+  StuckWatch stuck_;
+  PlanWatch plan_watch_;        // where SUMO leaves the lane plan
+  StepEvents events_;
+
+  // The ego's progress.
+  RouteLocator locator_;
+  RouteLocator::Place place_;   // where demand() located the front this step
+  bool departed_ = false;       // it has moved (start planner: has_departed)
+  double backed_up_ = 0.0;      // [m] emulated backward driving done so far
+
+  std::optional<Pending> pending_;
+  RunRecord record_;
+};
+
+}  // namespace signalsim

@@ -1,0 +1,139 @@
+// Writing, reading and replaying a run's recorded steps; see step_recording.hpp.
+#include "step/step_recording.hpp"
+
+#include <istream>
+#include <ostream>
+
+#include <nlohmann/json.hpp>
+
+#include "scenario/input_error.hpp"
+
+namespace signalsim {
+namespace sumo {
+
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(EgoState, time, edge, lane, lane_pos, speed, accel, x, y, lateral_offset)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(LightTiming, program, phase, next_switch)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(LightPhase, duration, state, next)
+NLOHMANN_JSON_SERIALIZE_ENUM(ProgramKind, {{ProgramKind::Other, "other"},
+                                           {ProgramKind::Static, "static"},
+                                           {ProgramKind::Actuated, "actuated"},
+                                           {ProgramKind::DelayBased, "delay_based"}})
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(LightProgram, id, kind, phases)
+
+}  // namespace sumo
+
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(LeaderInfo, id, gap)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(LateralCommand, offset, reference_lane)
+// A lateral command as null or the value.
+void to_json(nlohmann::json& j, const std::optional<LateralCommand>& v) {
+  j = v ? nlohmann::json(*v) : nlohmann::json(nullptr);
+}
+void from_json(const nlohmann::json& j, std::optional<LateralCommand>& v) {
+  v = j.is_null() ? std::nullopt : std::optional<LateralCommand>(j.get<LateralCommand>());
+}
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Commands, drive, right_of_way, lane_limits, emergency_braking, signal_mask, speed,
+                                   lateral, move_back)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(StepFeedback, alive, signals, time)
+
+namespace {
+
+using nlohmann::json;
+
+// An optional as null or the value (nlohmann has no std::optional conversion of its own).
+template <class T>
+json optional_json(const std::optional<T>& v) {
+  return v ? json(*v) : json(nullptr);
+}
+
+template <class T>
+std::optional<T> optional_of(const json& j, const char* key) {
+  if (!j.contains(key) || j.at(key).is_null()) return std::nullopt;
+  return j.at(key).get<T>();
+}
+
+json observation_json(const StepObservation& o) {
+  json lights = json::array();
+  for (const LightReading& l : o.lights)
+    lights.push_back({{"tls_id", l.tls_id},
+                      {"state", l.state},
+                      {"timing", optional_json(l.timing)},
+                      {"programs", optional_json(l.programs)}});
+  json traffic = json::array();
+  for (const sumo::SumoSession::LaneVehicle& v : o.lane_traffic)
+    traffic.push_back({{"id", v.id}, {"pos", v.pos}, {"length", v.length}});
+  return {{"ego", o.ego},         {"lateral_offset", optional_json(o.lateral_offset)},
+          {"lights", lights},     {"lane_traffic", traffic},
+          {"leader", optional_json(o.leader)}, {"signals", optional_json(o.signals)}};
+}
+
+StepObservation observation_of(const json& j) {
+  StepObservation o;
+  o.ego = j.at("ego").get<sumo::EgoState>();
+  o.lateral_offset = optional_of<double>(j, "lateral_offset");
+  for (const json& l : j.at("lights"))
+    o.lights.push_back({l.at("tls_id").get<std::string>(), l.at("state").get<std::string>(),
+                        optional_of<sumo::LightTiming>(l, "timing"),
+                        optional_of<std::vector<sumo::LightProgram>>(l, "programs")});
+  for (const json& v : j.at("lane_traffic"))
+    o.lane_traffic.push_back({v.at("id").get<std::string>(), v.at("pos").get<double>(), v.at("length").get<double>()});
+  o.leader = optional_of<LeaderInfo>(j, "leader");
+  o.signals = optional_of<int>(j, "signals");
+  return o;
+}
+
+}  // namespace
+
+RecordingCore::RecordingCore(RunCore& inner, std::ostream& out, double start_time) : inner_(inner), out_(out) {
+  out_ << json{{"format", "signalsim-steps"}, {"version", kStepRecordingVersion}, {"start_time", start_time}}.dump()
+       << '\n';
+}
+
+Commands RecordingCore::step(const StepObservation& seen) {
+  last_ = inner_.step(seen);
+  return last_;
+}
+
+bool RecordingCore::record(const StepObservation& seen, const StepFeedback& feedback) {
+  out_ << json{{"observation", observation_json(seen)}, {"commands", last_}, {"feedback", feedback}}.dump() << '\n';
+  return inner_.record(seen, feedback);
+}
+
+StepRecording read_step_recording(std::istream& in, const std::string& source) {
+  StepRecording recording;
+  std::string line;
+  std::size_t number = 0;
+  try {
+    while (std::getline(in, line)) {
+      ++number;
+      const json j = json::parse(line);
+      if (number == 1) {
+        if (j.value("format", "") != "signalsim-steps" || j.value("version", 0) != kStepRecordingVersion)
+          throw InputError(source, 1,
+                           "not a signalsim-steps recording of version " + std::to_string(kStepRecordingVersion));
+        recording.start_time = j.at("start_time").get<double>();
+        continue;
+      }
+      recording.steps.push_back({observation_of(j.at("observation")), j.at("commands").get<Commands>(),
+                                 j.at("feedback").get<StepFeedback>()});
+    }
+  } catch (const json::exception& e) {
+    throw InputError(source, static_cast<int>(number), e.what());
+  }
+  if (number == 0) throw InputError(source, 0, "empty, not a signalsim-steps recording");
+  return recording;
+}
+
+Replay replay(RunCore& core, const StepRecording& recording, int collisions) {
+  Replay out;
+  for (const RecordedStep& step : recording.steps) {
+    core.demand(step.observation.ego);
+    const Commands commands = core.step(step.observation);
+    if (!out.first_different_commands && !(commands == step.commands)) out.first_different_commands = out.steps;
+    ++out.steps;
+    if (core.record(step.observation, step.feedback)) break;
+  }
+  out.record = core.finish(collisions);
+  return out;
+}
+
+}  // namespace signalsim
