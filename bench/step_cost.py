@@ -27,7 +27,7 @@ SLOW = ["--set", "ego.max_speed=3", "--set", "ego.depart_speed=3"]
 # Session functions that run once a run, not once a step.
 ONCE = re.compile(r"insert_ego|add_ego|take_control|wait_for_departure|move_to_depart_offset|release_ego|"
                   r"program_states|light_programs|shift_light_program|delta_t|Session::|Session\(|~|"
-                  r"open_embedded|open_traci|net_load_error|StepLoop::StepLoop|attach|start_gui|try_connect")
+                  r"open_embedded|open_traci|net_load_error|core_setup|attach|start_gui|try_connect")
 
 
 def run(args, duration, out_dir, connect=None):

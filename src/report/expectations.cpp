@@ -249,7 +249,7 @@ std::vector<ExpectationResult> evaluate_expectations(const Scenario& scenario, c
       if (lc.blinker_on_time) detail << " (blinker on since t=" << *lc.blinker_on_time << " s)";
       results.push_back({"lane_change on " + lc.edge + " executed", false, detail.str()});
     }
-  // Built in: a run the stuck rule ended (scenario/stuck_watch) cannot arrive: a failure.
+  // Built in: a run the stuck rule ended (step/stuck_watch) cannot arrive: a failure.
   if (record.not_arrived && record.not_arrived->reason == "stuck")
     results.push_back({"ego arrives (not stuck)", false, record.not_arrived->detail});
   return results;

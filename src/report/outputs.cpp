@@ -257,7 +257,7 @@ void write_run_outputs(const std::string& dir, const Scenario& scenario, const s
   counts["steps_hazard"] = hazard;
   counts["sumo_signal_mismatches"] = mismatches;
   summary["counts"] = counts;
-  // Why the ego did not arrive (scenario/stuck_watch), null when it did.
+  // Why the ego did not arrive (step/stuck_watch), null when it did.
   nlohmann::ordered_json not_arrived = nullptr;
   if (const auto& n = record.not_arrived) {
     nlohmann::ordered_json leader = nullptr;

@@ -129,10 +129,10 @@ struct LeaderInfo {
   double gap = 0.0;  ///< [m] ego front bumper to the leader's rear bumper
 };
 
-/// Why a run ended before the ego arrived (scenario/stuck_watch).
+/// Why a run ended before the ego arrived (step/stuck_watch).
 struct NotArrived {
   std::string reason;              ///< "stuck" (the stuck rule ended the run), "duration", or
-                                   ///< "off_plan" (it ended off the lane plan: scenario/plan_watch)
+                                   ///< "off_plan" (it ended off the lane plan: step/plan_watch)
   double time = 0.0;               ///< [s] the last row's time
   double s_front = 0.0;            ///< [m] where the front was
   std::string edge, lane;
@@ -149,7 +149,7 @@ std::string_view to_string(Driver driver);
 
 /// Consecutive steps the ego spent on a lane the lane plan does not list there: another lane of a
 /// route edge (SUMO changed lanes, or took another connection) or an internal lane of another
-/// connection (scenario/plan_watch.hpp for a signalsim-driven run).
+/// connection (step/plan_watch.hpp for a signalsim-driven run).
 struct OffPlanStretch {
   std::string lane;          ///< the lane the ego was on
   std::string planned_lane;  ///< the route's lanelet at that position
