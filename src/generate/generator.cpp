@@ -88,7 +88,10 @@ std::string net_stem(const std::string& net_path) {
   return name;
 }
 
-GenerateReport generate(const GenerateOptions& o) {
+namespace {
+
+// The options' ranges; throws GenerateError naming the option.
+void check_options(const GenerateOptions& o) {
   if (o.count == 0) throw GenerateError("--count must be at least 1");
   if (o.count > kMaxCount) throw GenerateError("--count " + std::to_string(o.count) + ": at most " + std::to_string(kMaxCount));
   if (!std::isfinite(o.scenario.max_speed) || !std::isfinite(o.scenario.straight))
@@ -96,13 +99,32 @@ GenerateReport generate(const GenerateOptions& o) {
   if (!(o.min_length > 0.0) || !(o.max_length >= o.min_length) || !std::isfinite(o.max_length))
     throw GenerateError("--min-length " + rounded_fixed(o.min_length, 0) + " and --max-length " +
                         rounded_fixed(o.max_length, 0) + ": need 0 < min <= max");
-  const ParameterSet params = resolved_parameters(o.scenario.country);
-  sumo::NetIndex net;
+}
+
+// The whole net (the walk graph reads every edge); throws GenerateError when it cannot be read.
+sumo::NetIndex load_whole_net(const std::string& path) {
   try {
-    net = sumo::NetIndex::load(o.net, sumo::NetReading::Whole);  // the walk graph reads every edge
+    return sumo::NetIndex::load(path, sumo::NetReading::Whole);
   } catch (const sumo::NetError& e) {
     throw GenerateError(e.what());
   }
+}
+
+// The header lines of a generated file: where it comes from and how its expectations are made.
+std::vector<std::string> draft_header(const GenerateOptions& o, std::size_t number, std::size_t walks) {
+  return {std::string(kScenarioMarker + 2) + " (route " + std::to_string(number) + ", random walk " +
+              std::to_string(walks) + " of seed " + std::to_string(o.seed) + "):",
+          "  " + o.command_line,
+          "Net: " + o.net + " (net: below is relative to this file). The expectations come from the rules (docs/behaviour.md "
+          "§T4-§T6, §T8.2; docs/behaviour.md §L) and the route, never from a run; `signalsim run` on this file checks them."};
+}
+
+}  // namespace
+
+GenerateReport generate(const GenerateOptions& o) {
+  check_options(o);
+  const ParameterSet params = resolved_parameters(o.scenario.country);
+  const sumo::NetIndex net = load_whole_net(o.net);
   const RouteGraph graph = graph_of_net(net);
   if (graph.starts().empty())
     throw GenerateError(o.net + ": no edge a passenger car may drive on to another: nothing to generate");
@@ -156,12 +178,7 @@ GenerateReport generate(const GenerateOptions& o) {
                       rounded_fixed(made->length, 1) + " m, " + std::to_string(made->features.turns.size()) +
                       " turn(s), " + std::to_string(made->features.lights.size()) + " light(s), " +
                       std::to_string(made->features.roundabouts.size()) + " roundabout(s)";
-      std::vector<std::string> header = {
-          std::string(kScenarioMarker + 2) + " (route " + std::to_string(number) + ", random walk " +
-              std::to_string(report.walks) + " of seed " + std::to_string(o.seed) + "):",
-          "  " + o.command_line,
-          "Net: " + o.net + " (net: below is relative to this file). The expectations come from the rules (docs/behaviour.md "
-          "§T4-§T6, §T8.2; docs/behaviour.md §L) and the route, never from a run; `signalsim run` on this file checks them."};
+      const std::vector<std::string> header = draft_header(o, number, report.walks);
       d.header.insert(d.header.begin(), header.begin(), header.end());
       if (!prepared) prepare_output_dir(o.out_dir);
       prepared = true;

@@ -114,10 +114,7 @@ std::vector<LightStep> TrafficLightStage::step(double now, double s_front, doubl
     if (const auto& truth = t.truth_of(state)) {
       auto observation = t.perception.observe(*truth, front_to_line, now);
       if (observation) step.observed = t.describe(observation->elements);
-      if (!t.judge) {
-        t.judge.emplace(judge_params_);
-        t.judge->set_explain(false);  // no output has the reason line
-      }
+      if (!t.judge) t.judge.emplace(judge_params_);
       TrafficLightJudgeInput in;
       in.now = now;
       in.distance_to_stop_point = distance_to_stop_point(front_to_line, judge_params_.stop_margin);

@@ -1,9 +1,10 @@
+// The traffic-light judge's decision (algorithm in traffic_light_judge.hpp): one step as short functions,
+// each a numbered part of docs/behaviour.md §L1.2. It formats no text: explain()
+// (traffic_light_judge_explain.cpp) says why a step decided what it did.
 #include "traffic_light/traffic_light_judge.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <cstdarg>
-#include <cstdio>
 #include <stdexcept>
 
 #include "traffic_light/judge_line.hpp"
@@ -12,10 +13,8 @@ namespace signalsim {
 
 namespace {
 
-// docs/behaviour.md §L1.2 / §L4 hard-coded constants.
-constexpr double kDeadLine = -2.0;          // APPROACH -> GO_OUT when d < -2.0 m
-constexpr double kRestartLength = 1.0;      // GO_OUT -> APPROACH when d > +1.0 m
-constexpr double kStopVelocityEps = 1e-3;   // isVehicleStopped(0.0)
+// docs/behaviour.md §L1.6 isVehicleStopped(0.0).
+constexpr double kStopVelocityEps = 1e-3;
 
 // Times are compared in integer nanoseconds, like rclcpp::Time (docs/behaviour.md §L1.5 choice). Saturated
 // at +-4e18 ns (about 127 years): llround of a larger finite time is unspecified, and the
@@ -26,31 +25,18 @@ std::int64_t to_ns(double seconds) {
   return static_cast<std::int64_t>(std::llround(std::clamp(seconds * 1e9, -kMaxNs, kMaxNs)));
 }
 
-__attribute__((format(printf, 1, 2))) std::string strf(const char* format, ...) {
-  char buffer[512];
-  va_list args;
-  va_start(args, format);
-  std::vsnprintf(buffer, sizeof(buffer), format, args);
-  va_end(args);
-  return std::string(buffer);
-}
-
 void require_finite(double value, const char* name) {
   if (!std::isfinite(value)) {
     throw std::invalid_argument(std::string("TrafficLightJudge: ") + name + " is not finite");
   }
 }
 
-std::string describe_elements(const std::vector<SignalElement>& elements) {
-  if (elements.empty()) return "[nothing recognised]";
-  std::string s = "[";
-  for (std::size_t i = 0; i < elements.size(); ++i) {
-    if (i > 0) s += ", ";
-    s += to_string(elements[i].color);
-    s += ' ';
-    s += to_string(elements[i].shape);
-  }
-  return s + "]";
+void require_finite_input(const TrafficLightJudgeInput& in) {
+  require_finite(in.now, "now");
+  require_finite(in.velocity, "velocity");
+  require_finite(in.acceleration, "acceleration");
+  if (in.distance_to_stop_point) require_finite(*in.distance_to_stop_point, "distance_to_stop_point");
+  if (in.observation) require_finite(in.observation->stamp, "observation stamp");
 }
 
 }  // namespace
@@ -159,176 +145,142 @@ bool TrafficLightJudge::is_stop_signal(const TrafficLightJudgeInput& in, std::in
 }
 
 TrafficLightJudgeResult TrafficLightJudge::step(const TrafficLightJudgeInput& in) {
-  // Validate before touching any state.
-  require_finite(in.now, "now");
-  require_finite(in.velocity, "velocity");
-  require_finite(in.acceleration, "acceleration");
-  if (in.distance_to_stop_point) require_finite(*in.distance_to_stop_point, "distance_to_stop_point");
-  if (in.observation) require_finite(in.observation->stamp, "observation stamp");
-
+  require_finite_input(in);  // before touching any state
   const std::int64_t now_ns = to_ns(in.now);
   if (in.observation) received_ = *in.observation;
 
   TrafficLightJudgeResult r;
-  const auto finish = [&]() {
-    r.state = state_;
-    r.is_prev_state_stop = is_prev_state_stop_;
-    r.yellow_state = yellow_state_;
-    return r;
-  };
-
-  // docs/behaviour.md §L1.2 STEP 1.
-  if (!in.distance_to_stop_point) {
-    if (explain_) r.reason = "none: the path does not cross the stop line";
-    return finish();
-  }
-
-  // docs/behaviour.md §L1.2 STEP 2; §L2.2-§L2.5 quantities reported every step with a stop point.
-  const double d = *in.distance_to_stop_point;
-  const double v = in.velocity;
-  r.distance = d;
-  r.judge_dist = calc_judge_line_dist_with_jerk_limit(v, in.acceleration, params_.max_accel, params_.max_jerk,
-                                                      params_.delay_response_time);
-  r.yellow_lamp_line = v * params_.yellow_lamp_period;
-
-  if (state_ == JudgeState::GoOut) {
-    // docs/behaviour.md §L1.2 STEP 4: never a stop in GO_OUT.
-    if (d > kRestartLength) {
-      state_ = JudgeState::Approach;
-      if (explain_) r.reason = strf("none: GO_OUT -> APPROACH (re-armed, d = %.2f m > %.1f m)", d, kRestartLength);
-    } else if (explain_) {
-      r.reason = strf("none: GO_OUT (re-arms when d > %.1f m)", kRestartLength);
+  r.previous_state = state_;
+  r.was_prev_state_stop = is_prev_state_stop_;
+  // docs/behaviour.md §L1.2 STEP 1: without a stop point nothing is decided and nothing changes.
+  if (in.distance_to_stop_point) {
+    measure(in, r);
+    if (state_ == JudgeState::GoOut) {
+      step_go_out(r.distance);
+    } else if (r.distance < kJudgeDeadLine) {
+      enter_go_out();
+    } else {
+      approach(in, now_ns, r);
     }
-    stop_signal_start_ns_.reset();
-    release_start_ns_.reset();
-    return finish();
   }
+  r.state = state_;
+  r.is_prev_state_stop = is_prev_state_stop_;
+  r.yellow_state = yellow_state_;
+  return r;
+}
 
-  // docs/behaviour.md §L1.2 3.1: dead line.
-  if (d < kDeadLine) {
-    state_ = JudgeState::GoOut;
-    stop_signal_start_ns_.reset();
-    release_start_ns_.reset();
-    if (explain_) r.reason = strf("none: APPROACH -> GO_OUT (d = %.2f m < %.1f m)", d, kDeadLine);
-    return finish();
+// docs/behaviour.md §L1.2 STEP 2; §L2.2-§L2.5 quantities reported every step with a stop point.
+void TrafficLightJudge::measure(const TrafficLightJudgeInput& in, TrafficLightJudgeResult& r) const {
+  r.distance = *in.distance_to_stop_point;
+  r.judge_dist = calc_judge_line_dist_with_jerk_limit(in.velocity, in.acceleration, params_.max_accel,
+                                                      params_.max_jerk, params_.delay_response_time);
+  r.yellow_lamp_line = in.velocity * params_.yellow_lamp_period;
+}
+
+// docs/behaviour.md §L1.2 STEP 4: never a stop in GO_OUT; re-armed beyond the restart length.
+void TrafficLightJudge::step_go_out(double d) {
+  if (d > kJudgeRestartLength) state_ = JudgeState::Approach;
+  stop_signal_start_ns_.reset();
+  release_start_ns_.reset();
+}
+
+// docs/behaviour.md §L1.2 3.1: the dead line.
+void TrafficLightJudge::enter_go_out() {
+  state_ = JudgeState::GoOut;
+  stop_signal_start_ns_.reset();
+  release_start_ns_.reset();
+}
+
+// docs/behaviour.md §L1.2 3.3-3.10: APPROACH with d at or beyond the dead line always decides.
+void TrafficLightJudge::approach(const TrafficLightJudgeInput& in, std::int64_t now_ns, TrafficLightJudgeResult& r) {
+  r.is_stop_signal = is_stop_signal(in, now_ns, r.verdict);  // 3.3
+  r.looked_at = looking_;
+  if (stamp_ns_) r.signal_age = static_cast<double>(now_ns - *stamp_ns_) * 1e-9;
+  const std::int64_t elapsed_ns = run_stop_signal_timer(r.is_stop_signal, now_ns);  // 3.4
+  r.stop_signal_elapsed = static_cast<double>(elapsed_ns) * 1e-9;
+  // 3.5 / §L1.5: strictly greater, in integer nanoseconds.
+  bool to_be_stopped = r.is_stop_signal && (is_prev_state_stop_ || elapsed_ns > hysteresis_ns_);
+  if (v2i_asks_stop(in, r)) to_be_stopped = true;
+  if (hold_latched_stop(to_be_stopped, now_ns, r)) to_be_stopped = true;
+  r.to_be_stopped = to_be_stopped;
+
+  if (suppress_restart(in, r)) return;
+  if (!to_be_stopped) {  // 3.8 / 3.9: RTC disabled, activated := safe := !to_be_stopped.
+    is_prev_state_stop_ = false;
+    r.decision = JudgeDecision::Pass;
+    return;
   }
+  judge_stop(in, r);
+}
 
-  // docs/behaviour.md §L1.2 3.3.
-  SignalVerdict verdict = SignalVerdict::NotEvaluated;
-  const bool is_stop = is_stop_signal(in, now_ns, verdict);
-  r.verdict = verdict;
-  r.is_stop_signal = is_stop;
-
-  // docs/behaviour.md §L1.2 3.4: the stop-signal timer; any non-stop cycle clears it (docs/behaviour.md §L1.5).
+// docs/behaviour.md §L1.2 3.4: the stop-signal timer; any non-stop cycle clears it (§L1.5). Returns the
+// time the stop signal has persisted [ns], 0 without one.
+std::int64_t TrafficLightJudge::run_stop_signal_timer(bool is_stop, std::int64_t now_ns) {
   if (is_stop) {
     if (!stop_signal_start_ns_) stop_signal_start_ns_ = now_ns;
   } else {
     stop_signal_start_ns_.reset();
   }
-  const std::int64_t elapsed_ns = stop_signal_start_ns_ ? std::max<std::int64_t>(0, now_ns - *stop_signal_start_ns_) : 0;
-  r.stop_signal_elapsed = static_cast<double>(elapsed_ns) * 1e-9;
+  return stop_signal_start_ns_ ? std::max<std::int64_t>(0, now_ns - *stop_signal_start_ns_) : 0;
+}
 
-  // docs/behaviour.md §L1.2 3.5 / §L1.5: strictly greater, in integer nanoseconds.
-  bool to_be_stopped = is_stop && (is_prev_state_stop_ || elapsed_ns > hysteresis_ns_);
+// docs/behaviour.md §L1.2 3.6 / §L1.7: V2I, OR-ed in without hysteresis (only with use_remaining_time).
+bool TrafficLightJudge::v2i_asks_stop(const TrafficLightJudgeInput& in, TrafficLightJudgeResult& r) const {
+  if (!params_.v2i.use_remaining_time) return false;
+  const V2iVerdict v2i = will_turn_red_before_reaching_stop_line(r.distance, in.velocity, in.now, in.turn_direction,
+                                                                 in.predictions, params_.v2i);
+  r.v2i_stop = v2i.turns_red;
+  r.v2i_time_to_red = v2i.time_to_red;
+  return v2i.turns_red;
+}
 
-  // docs/behaviour.md §L1.2 3.6 / §L1.7: V2I, OR-ed in without hysteresis.
-  std::string v2i_text;
-  if (params_.v2i.use_remaining_time) {
-    const V2iVerdict v2i = will_turn_red_before_reaching_stop_line(d, v, in.now, in.turn_direction, in.predictions,
-                                                                   params_.v2i);
-    r.v2i_stop = v2i.turns_red;
-    r.v2i_time_to_red = v2i.time_to_red;
-    if (v2i.turns_red) {
-      if (explain_)
-        v2i_text = strf("; V2I: red in %.2f s < horizon %.2f s (t_pass %.2f s + %.2f s)", *v2i.time_to_red, v2i.horizon,
-                      v2i.t_pass, params_.v2i.last_time_allowed_to_pass);
-      to_be_stopped = true;
-    }
-  }
-  // signalsim, beyond the reference (stop_release_confirmation_time, header): a latched stop is held
-  // until no stop signal has been looked at for that long; a stop signal restarts the clock.
-  std::string hold_text;
-  if (to_be_stopped || is_stop) {
+// signalsim, beyond the reference (stop_release_confirmation_time, header): a latched stop is held
+// until no stop signal has been looked at for that long; a stop signal restarts the clock. True when
+// the stop is held this step.
+bool TrafficLightJudge::hold_latched_stop(bool to_be_stopped, std::int64_t now_ns, TrafficLightJudgeResult& r) {
+  if (to_be_stopped || r.is_stop_signal) {
     release_start_ns_.reset();
-  } else if (is_prev_state_stop_) {
-    // The go evidence's time: the capture stamp of the observation looked at (a stale one adds
-    // nothing); never received (no stamp) counts by the clock.
-    const bool observed = verdict == SignalVerdict::Go || verdict == SignalVerdict::ArrowAwareYellowPass;
-    const std::int64_t evidence_ns = observed ? *stamp_ns_ : now_ns;
-    if (!release_start_ns_) release_start_ns_ = evidence_ns;
-    const std::int64_t confirmed_ns = std::max<std::int64_t>(0, evidence_ns - *release_start_ns_);
-    r.release_elapsed = static_cast<double>(confirmed_ns) * 1e-9;
-    if (confirmed_ns < release_confirmation_ns_) {
-      r.release_pending = true;
-      to_be_stopped = true;
-      if (explain_)
-        hold_text = strf("; release pending: no stop signal for %.3f s < stop_release_confirmation_time %.3f s",
-                       r.release_elapsed, params_.stop_release_confirmation_time);
-    } else {
-      release_start_ns_.reset();
-    }
+    return false;
   }
-  r.to_be_stopped = to_be_stopped;
-
-  // Why the signal says what it says, for the reason line.
-  std::string signal_text;
-  switch (explain_ ? verdict : SignalVerdict::NotEvaluated) {
-    case SignalVerdict::NeverReceived:
-      signal_text = params_.is_simulation ? "signal never received (is_simulation)"
-                                          : "signal never received (real-vehicle rule)";
-      break;
-    case SignalVerdict::TimedOut:
-      signal_text = strf("signal timed out (age %.3f s > tl_state_timeout %.3f s)",
-                         static_cast<double>(now_ns - *stamp_ns_) * 1e-9, params_.tl_state_timeout);
-      break;
-    case SignalVerdict::ArrowAwareYellowPass:
-      signal_text = "yellow after green on a turn lane with a static arrow (arrow-aware yellow passing)";
-      break;
-    case SignalVerdict::Go:
-      signal_text = "go signal " + describe_elements(looking_) + " for a " +
-                    std::string(to_string(in.turn_direction)) + " lane";
-      break;
-    case SignalVerdict::Stop:
-      signal_text = "stop signal " + describe_elements(looking_) + " for a " +
-                    std::string(to_string(in.turn_direction)) + " lane";
-      break;
-    case SignalVerdict::NotEvaluated:
-      break;
+  if (!is_prev_state_stop_) return false;
+  // The go evidence's time: the capture stamp of the observation looked at (a stale one adds
+  // nothing); never received (no stamp) counts by the clock.
+  const bool observed = r.verdict == SignalVerdict::Go || r.verdict == SignalVerdict::ArrowAwareYellowPass;
+  const std::int64_t evidence_ns = observed ? *stamp_ns_ : now_ns;
+  if (!release_start_ns_) release_start_ns_ = evidence_ns;
+  const std::int64_t confirmed_ns = std::max<std::int64_t>(0, evidence_ns - *release_start_ns_);
+  r.release_elapsed = static_cast<double>(confirmed_ns) * 1e-9;
+  if (confirmed_ns < release_confirmation_ns_) {
+    r.release_pending = true;
+    return true;
   }
+  release_start_ns_.reset();
+  return false;
+}
 
-  // docs/behaviour.md §L1.2 3.7 / §L1.6: restart suppression (raw is_stop; latch not updated).
+// docs/behaviour.md §L1.2 3.7 / §L1.6: restart suppression (raw is_stop; latch not updated). True when
+// it decided the step: a stop where the ego stands.
+bool TrafficLightJudge::suppress_restart(const TrafficLightJudgeInput& in, TrafficLightJudgeResult& r) const {
   const auto& rs = params_.restart_suppression;
-  if (in.is_vehicle_stopped && rs.min_behind_distance_to_stop < d && d < rs.max_behind_distance_to_stop && is_stop) {
-    r.decision = JudgeDecision::Stop;
-    r.restart_suppressed = true;
-    r.stop_point_distance = 0.0;
-    if (explain_) {
-      r.reason = strf("stop: restart suppressed (stopped at d = %.2f m within (%.2f, %.2f) m); ", d,
-                      rs.min_behind_distance_to_stop, rs.max_behind_distance_to_stop) + signal_text;
-    }
-    return finish();
+  const double d = r.distance;
+  if (!(in.is_vehicle_stopped && rs.min_behind_distance_to_stop < d && d < rs.max_behind_distance_to_stop &&
+        r.is_stop_signal)) {
+    return false;
   }
+  r.decision = JudgeDecision::Stop;
+  r.restart_suppressed = true;
+  r.stop_point_distance = 0.0;
+  return true;
+}
 
-  // docs/behaviour.md §L1.2 3.8 / 3.9: RTC disabled, activated := safe := !to_be_stopped.
-  if (!to_be_stopped) {
-    is_prev_state_stop_ = false;
-    r.decision = JudgeDecision::Pass;
-    if (explain_ && is_stop) {
-      r.reason = strf("pass: stop signal held %.3f s, not > stop_time_hysteresis %.3f s; ", r.stop_signal_elapsed,
-                      params_.stop_time_hysteresis) + signal_text;
-    } else if (explain_) {
-      r.reason = "pass: " + signal_text;
-    }
-    return finish();
-  }
-
-  // docs/behaviour.md §L1.2 3.10 / §L2.3 `isPassthrough`: strict inequalities.
+// docs/behaviour.md §L1.2 3.10 / §L2.3 `isPassthrough` (strict inequalities) and the §L2.6 zones: a stop
+// is asked for; the pass judge may still pass, otherwise the stop is latched.
+void TrafficLightJudge::judge_stop(const TrafficLightJudgeInput& in, TrafficLightJudgeResult& r) {
+  const double d = r.distance;
   const bool distance_stoppable = r.judge_dist < d;
-  const bool slow_velocity = v < params_.yellow_light_stop_velocity;
+  const bool slow_velocity = in.velocity < params_.yellow_light_stop_velocity;
   const bool stoppable = distance_stoppable || slow_velocity;
   const bool reachable = d < r.yellow_lamp_line;
-
-  // docs/behaviour.md §L2.6 zones.
   if (distance_stoppable) {
     r.zone = reachable ? JudgeZone::OptionalZone : JudgeZone::Stoppable;
   } else if (slow_velocity) {
@@ -337,54 +289,15 @@ TrafficLightJudgeResult TrafficLightJudge::step(const TrafficLightJudgeInput& in
     r.zone = reachable ? JudgeZone::PassThroughYellow : JudgeZone::DilemmaZone;
   }
 
-  std::string zone_text;
-  switch (explain_ ? r.zone : JudgeZone::None) {
-    case JudgeZone::Stoppable:
-      zone_text = strf("stoppable (judge line %.2f m < d %.2f m)", r.judge_dist, d);
-      break;
-    case JudgeZone::OptionalZone:
-      zone_text = strf("optional zone (judge line %.2f m < d %.2f m < yellow lamp line %.2f m)", r.judge_dist, d,
-                       r.yellow_lamp_line);
-      break;
-    case JudgeZone::Slow:
-      zone_text = strf("slow (v %.2f m/s < yellow_light_stop_velocity %.2f m/s)", v, params_.yellow_light_stop_velocity);
-      break;
-    case JudgeZone::PassThroughYellow:
-      zone_text = strf("can pass through during yellow lamp (judge line %.2f m >= d %.2f m < yellow lamp line %.2f m)",
-                       r.judge_dist, d, r.yellow_lamp_line);
-      break;
-    case JudgeZone::DilemmaZone:
-      zone_text = strf("dilemma zone: cannot pass through during yellow lamp (judge line %.2f m >= d %.2f m >= "
-                       "yellow lamp line %.2f m)",
-                       r.judge_dist, d, r.yellow_lamp_line);
-      break;
-    case JudgeZone::None:
-      break;
-  }
-
   if (params_.enable_pass_judge && !stoppable && !is_prev_state_stop_ && reachable) {
-    // PASS: no stop inserted; the latch stays false.
-    r.decision = JudgeDecision::Pass;
-    if (explain_) r.reason = "pass: " + zone_text + "; " + signal_text + v2i_text;
-    return finish();
+    r.decision = JudgeDecision::Pass;  // no stop inserted; the latch stays false
+    return;
   }
-
-  std::string latch_text;
-  if (!is_prev_state_stop_) {
-    // A new stop is inserted: fix Stop vs EmergencyStop (Decisions: dilemma zone -> emergency).
-    latched_decision_ = stoppable ? JudgeDecision::Stop : JudgeDecision::EmergencyStop;
-    if (!params_.enable_pass_judge && !stoppable) latch_text = " (pass judge disabled)";
-  } else if (explain_) {
-    latch_text = strf(" (latched %s since an earlier step)", std::string(to_string(latched_decision_)).c_str());
-  }
+  // A new stop is inserted: fix Stop vs EmergencyStop (Decisions: dilemma zone -> emergency).
+  if (!is_prev_state_stop_) latched_decision_ = stoppable ? JudgeDecision::Stop : JudgeDecision::EmergencyStop;
   is_prev_state_stop_ = true;
   r.decision = latched_decision_;
   r.stop_point_distance = d;
-  if (explain_) {
-    r.reason = std::string(to_string(latched_decision_)) + latch_text + ": " + zone_text + "; " + signal_text +
-               v2i_text + hold_text;
-  }
-  return finish();
 }
 
 }  // namespace signalsim

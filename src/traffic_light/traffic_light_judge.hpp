@@ -214,11 +214,18 @@ struct TrafficLightJudgeInput {
   std::vector<SignalPrediction> predictions;
 };
 
+/// docs/behaviour.md §L1.2: APPROACH -> GO_OUT when d < this [m] (the dead line, 3.1); GO_OUT -> APPROACH
+/// when d > kJudgeRestartLength [m] (STEP 4).
+inline constexpr double kJudgeDeadLine = -2.0;
+inline constexpr double kJudgeRestartLength = 1.0;
+
 /// Result of one step. Distances are relative to base_link (same reference as `d`).
 struct TrafficLightJudgeResult {
   JudgeDecision decision = JudgeDecision::None;
   JudgeZone zone = JudgeZone::None;
   JudgeState state = JudgeState::Approach;  ///< state after this step
+  JudgeState previous_state = JudgeState::Approach;  ///< state before this step
+  bool was_prev_state_stop = false;                   ///< the stop latch before this step
   SignalVerdict verdict = SignalVerdict::NotEvaluated;
   bool is_stop_signal = false;   ///< raw IS_STOP_SIGNAL (before hysteresis); false if not evaluated
   bool to_be_stopped = false;    ///< after hysteresis and latch (step 3.5)
@@ -240,7 +247,10 @@ struct TrafficLightJudgeResult {
   /// (decision Stop/EmergencyStop as latched), and how long the go evidence has lasted [s].
   bool release_pending = false;
   double release_elapsed = 0.0;
-  std::string reason;  ///< one human-readable line for logs and tests; "" when the judge does not explain
+  /// When IS_STOP_SIGNAL ran (verdict not NotEvaluated): the reduced elements it looked at, and the
+  /// age of their observation, now - stamp [s] (0 when never received). For explain().
+  std::vector<SignalElement> looked_at;
+  double signal_age = 0.0;
 };
 
 class TrafficLightJudge {
@@ -248,7 +258,8 @@ class TrafficLightJudge {
   /// Throws std::invalid_argument if validate(params) does.
   explicit TrafficLightJudge(const TrafficLightJudgeParameters& params = {});
 
-  /// Runs one planning cycle (algorithm at the top of this file) and returns its result.
+  /// Runs one planning cycle (algorithm at the top of this file) and returns its result. It formats
+  /// no text: explain() (traffic_light_judge_explain.hpp) tells why, from the result.
   /// Throws std::invalid_argument if now, velocity, acceleration or a present distance is not
   /// finite; the judge's state is then unchanged.
   TrafficLightJudgeResult step(const TrafficLightJudgeInput& in);
@@ -256,17 +267,22 @@ class TrafficLightJudge {
   /// Back to the state of a freshly constructed judge (APPROACH, nothing received).
   void reset();
 
-  /// Whether step() writes the result's reason (on by default). The simulation writes no reason
-  /// anywhere and turns it off: formatting it was about 5 % of signalsim's work in a step.
-  void set_explain(bool explain) { explain_ = explain; }
-
   const TrafficLightJudgeParameters& parameters() const { return params_; }
   JudgeState state() const { return state_; }
   bool is_prev_state_stop() const { return is_prev_state_stop_; }
   YellowState yellow_state() const { return yellow_state_; }
 
  private:
+  void measure(const TrafficLightJudgeInput& in, TrafficLightJudgeResult& r) const;
+  void step_go_out(double d);
+  void enter_go_out();
+  void approach(const TrafficLightJudgeInput& in, std::int64_t now_ns, TrafficLightJudgeResult& r);
   bool is_stop_signal(const TrafficLightJudgeInput& in, std::int64_t now_ns, SignalVerdict& verdict);
+  std::int64_t run_stop_signal_timer(bool is_stop, std::int64_t now_ns);
+  bool v2i_asks_stop(const TrafficLightJudgeInput& in, TrafficLightJudgeResult& r) const;
+  bool hold_latched_stop(bool to_be_stopped, std::int64_t now_ns, TrafficLightJudgeResult& r);
+  bool suppress_restart(const TrafficLightJudgeInput& in, TrafficLightJudgeResult& r) const;
+  void judge_stop(const TrafficLightJudgeInput& in, TrafficLightJudgeResult& r);
 
   TrafficLightJudgeParameters params_;
   std::int64_t hysteresis_ns_ = 0;
@@ -284,7 +300,6 @@ class TrafficLightJudge {
   std::vector<SignalElement> looking_;          ///< reduced elements last looked at
   std::vector<SignalElement> previous_looking_;  ///< those of the step before (is_stop_signal's buffer)
   YellowState yellow_state_ = YellowState::NotYellow;
-  bool explain_ = true;
 };
 
 }  // namespace signalsim

@@ -6,10 +6,12 @@
 #include <limits>
 #include <optional>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "traffic_light/judge_line.hpp"
 #include "traffic_light/traffic_light_judge.hpp"
+#include "traffic_light/traffic_light_judge_explain.hpp"
 
 namespace signalsim {
 namespace {
@@ -67,34 +69,44 @@ TEST(TrafficLightJudge, DefaultsFollowTheDecisions) {
   EXPECT_EQ(p.delay_response_time, 0.5);
 }
 
-TEST(TrafficLightJudge, NotExplainingChangesNothingButTheReason) {
+TEST(TrafficLightJudge, ExplainTellsEachStepsDecisionAndWhy) {
   // Green, then red while approaching (stop latched), rolling over the line (GO_OUT), re-armed on a
-  // new approach, a signal that times out, no stop point: each step judged twice.
+  // new approach, a signal that times out, no stop point: each step's reason line.
   std::vector<TrafficLightJudgeInput> steps = {green_at(0.0, 60.0, 10.0), red_at(0.1, 59.0, 10.0),
                                                red_at(0.2, 58.0, 10.0),   red_at(0.3, 0.7, 0.0),
                                                red_at(0.4, -2.5, 1.0),    red_at(0.5, 30.0, 8.0),
                                                input(2.0, 29.0, 8.0, std::nullopt),
                                                input(2.1, std::nullopt, 8.0, std::nullopt)};
   steps[3].is_vehicle_stopped = true;  // restart suppression at d = 0.7 m
-  TrafficLightJudge explaining(no_hysteresis()), quiet(no_hysteresis());
-  quiet.set_explain(false);
+  const std::vector<std::string> reasons = {
+      "pass: go signal [green circle] for a else lane",
+      "pass: stop signal held 0.000 s, not > stop_time_hysteresis 0.000 s; stop signal [red circle] for a else lane",
+      "stop: stoppable (judge line 25.62 m < d 58.00 m); stop signal [red circle] for a else lane",
+      "stop: restart suppressed (stopped at d = 0.70 m within (0.50, 1.00) m); stop signal [red circle] for a "
+      "else lane",
+      "none: APPROACH -> GO_OUT (d = -2.50 m < -2.0 m)",
+      "none: GO_OUT -> APPROACH (re-armed, d = 30.00 m > 1.0 m)",
+      "stop (latched stop since an earlier step): stoppable (judge line 17.63 m < d 29.00 m); signal timed out "
+      "(age 1.500 s > tl_state_timeout 1.000 s)",
+      "none: the path does not cross the stop line",
+  };
+  TrafficLightJudge judge(no_hysteresis());
   for (std::size_t i = 0; i < steps.size(); ++i) {
     SCOPED_TRACE(i);
-    const TrafficLightJudgeResult a = explaining.step(steps[i]);
-    const TrafficLightJudgeResult b = quiet.step(steps[i]);
-    EXPECT_FALSE(a.reason.empty());
-    EXPECT_EQ(b.reason, "");
-    EXPECT_EQ(b.decision, a.decision);
-    EXPECT_EQ(b.zone, a.zone);
-    EXPECT_EQ(b.state, a.state);
-    EXPECT_EQ(b.verdict, a.verdict);
-    EXPECT_EQ(b.to_be_stopped, a.to_be_stopped);
-    EXPECT_EQ(b.restart_suppressed, a.restart_suppressed);
-    EXPECT_EQ(b.is_prev_state_stop, a.is_prev_state_stop);
-    EXPECT_EQ(b.stop_point_distance, a.stop_point_distance);
-    EXPECT_EQ(b.judge_dist, a.judge_dist);
+    const TrafficLightJudgeResult r = judge.step(steps[i]);
+    EXPECT_EQ(explain(r, steps[i], judge.parameters()), reasons[i]);
   }
-  EXPECT_EQ(quiet.state(), explaining.state());
+}
+
+TEST(TrafficLightJudge, ExplainTellsAGoOutStepApartFromTheDeadLine) {
+  // Both steps end in GO_OUT at the same d: one stays there, the other crosses the dead line.
+  TrafficLightJudge judge(no_hysteresis());
+  const TrafficLightJudgeInput over = red_at(0.0, -3.0, 1.0);
+  const TrafficLightJudgeResult crossed = judge.step(over);
+  EXPECT_EQ(explain(crossed, over, judge.parameters()), "none: APPROACH -> GO_OUT (d = -3.00 m < -2.0 m)");
+  const TrafficLightJudgeInput still = red_at(0.1, -3.0, 1.0);
+  const TrafficLightJudgeResult stayed = judge.step(still);
+  EXPECT_EQ(explain(stayed, still, judge.parameters()), "none: GO_OUT (re-arms when d > 1.0 m)");
 }
 
 TEST(TrafficLightJudge, NoStopPointMeansNoDecisionAndNoStateChange) {
@@ -300,7 +312,8 @@ TEST(SignalLookup, TimedOutStrictlyAfterOneSecondThenStops) {
   t += 0.1;
   r = judge.step(input(t, 67.0, 10.0, std::nullopt));
   EXPECT_EQ(r.decision, JudgeDecision::Stop);
-  EXPECT_NE(r.reason.find("timed out"), std::string::npos) << r.reason;
+  const std::string reason = explain(r, input(t, 67.0, 10.0, std::nullopt), judge.parameters());
+  EXPECT_NE(reason.find("timed out"), std::string::npos) << reason;
 }
 
 TEST(SignalLookup, TimeoutComparesTheStampNotTheDeliveryTime) {
@@ -503,9 +516,10 @@ TEST(PassJudge, ZonesAndDecisions) {
   for (const auto& c : cases) {
     TrafficLightJudge judge(no_hysteresis());
     const auto r = judged_red(judge, c.d, c.v);
-    EXPECT_EQ(r.zone, c.zone) << c.d << " " << c.v << ": " << r.reason;
-    EXPECT_EQ(r.decision, c.decision) << c.d << " " << c.v << ": " << r.reason;
-    EXPECT_FALSE(r.reason.empty());
+    const std::string reason = explain(r, red_at(0.1, c.d, c.v), judge.parameters());
+    EXPECT_EQ(r.zone, c.zone) << c.d << " " << c.v << ": " << reason;
+    EXPECT_EQ(r.decision, c.decision) << c.d << " " << c.v << ": " << reason;
+    EXPECT_FALSE(reason.empty());
   }
 }
 
@@ -514,7 +528,8 @@ TEST(PassJudge, RedInReachIsPassedToo) {
   TrafficLightJudge judge(no_hysteresis());
   const auto r = judged_red(judge, 20.0, 10.0);
   EXPECT_EQ(r.decision, JudgeDecision::Pass);
-  EXPECT_NE(r.reason.find("can pass through"), std::string::npos) << r.reason;
+  const std::string reason = explain(r, red_at(0.1, 20.0, 10.0), judge.parameters());
+  EXPECT_NE(reason.find("can pass through"), std::string::npos) << reason;
 }
 
 TEST(PassJudge, DisabledAlwaysStopsAndCannotStopMeansEmergency) {

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "traffic_light/traffic_light_judge.hpp"
+#include "traffic_light/traffic_light_judge_explain.hpp"
 #include "traffic_light/v2i_rule.hpp"
 
 namespace signalsim {
@@ -91,7 +92,8 @@ TrafficLightJudgeInput green(double now, double d, double v, std::vector<SignalP
 TEST(V2iJudge, GreenWithRedPredictedWithinTheHorizonStopsAtOnce) {
   TrafficLightJudge judge(with_v2i());
   // d 100 m at 10 m/s: t_pass 10 s, horizon 12 s; red in 11 s. No hysteresis: the first step stops.
-  const TrafficLightJudgeResult r = judge.step(green(0.0, 100.0, 10.0, {red_at(11.0)}));
+  const TrafficLightJudgeInput in = green(0.0, 100.0, 10.0, {red_at(11.0)});
+  const TrafficLightJudgeResult r = judge.step(in);
   EXPECT_FALSE(r.is_stop_signal) << "the camera says go";
   EXPECT_TRUE(r.v2i_stop);
   EXPECT_TRUE(r.to_be_stopped);
@@ -99,7 +101,8 @@ TEST(V2iJudge, GreenWithRedPredictedWithinTheHorizonStopsAtOnce) {
   EXPECT_EQ(r.zone, JudgeZone::Stoppable);
   ASSERT_TRUE(r.stop_point_distance);
   EXPECT_DOUBLE_EQ(*r.stop_point_distance, 100.0);
-  EXPECT_NE(r.reason.find("V2I: red in 11.00 s < horizon 12.00 s"), std::string::npos) << r.reason;
+  const std::string reason = explain(r, in, judge.parameters());
+  EXPECT_NE(reason.find("V2I: red in 11.00 s < horizon 12.00 s"), std::string::npos) << reason;
 }
 
 TEST(V2iJudge, RedOutsideTheHorizonPasses) {
@@ -113,7 +116,8 @@ TEST(V2iJudge, RedOutsideTheHorizonPasses) {
 TEST(V2iJudge, OffByDefaultAndWhenOff) {
   EXPECT_FALSE(TrafficLightJudgeParameters{}.v2i.use_remaining_time);
   TrafficLightJudge judge(with_v2i(false));
-  const TrafficLightJudgeResult r = judge.step(green(0.0, 100.0, 10.0, {red_at(11.0)}));
+  const TrafficLightJudgeInput in = green(0.0, 100.0, 10.0, {red_at(11.0)});
+  const TrafficLightJudgeResult r = judge.step(in);
   EXPECT_EQ(r.decision, JudgeDecision::Pass);
   EXPECT_FALSE(r.v2i_stop);
   EXPECT_FALSE(r.v2i_time_to_red) << "nothing evaluated";
