@@ -13,6 +13,7 @@
 #include "net/net_index.hpp"
 #include "route/route_builder.hpp"
 #include "net/route_files.hpp"
+#include "report/run_files.hpp"
 #include "session/sumo_session.hpp"
 
 namespace signalsim {
@@ -28,9 +29,6 @@ struct RunContext {
   /// observe_sumo_drive (sumo_driven.hpp), never drive().
   bool sumo_drives = false;
 };
-
-/// The file SUMO's messages go to in `out_dir`.
-inline constexpr const char* kSumoLogFile = "sumo.log";
 
 /// SUMO's configuration for `scenario` on its planned route with its lateral plan. Throws InputError
 /// for a scenario the back-end cannot run (light_offsets or sumo_args with --connect: they would

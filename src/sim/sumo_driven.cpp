@@ -108,14 +108,6 @@ RoutePosition locate_on_route(const RouteMap& route, const std::string& lane, co
   return out;
 }
 
-Blinker blinker_of_signals(int mask) {
-  const bool left = mask & sumo::kBlinkerLeft, right = mask & sumo::kBlinkerRight;
-  if ((mask & sumo::kBlinkerEmergency) || (left && right)) return Blinker::Hazard;
-  if (left) return Blinker::Left;
-  if (right) return Blinker::Right;
-  return Blinker::None;
-}
-
 RunRecord observe_sumo_drive(const StartedRun& run, const sumo::NetIndex& net) {
   const Scenario& scenario = run.scenario;
   const RouteMap& route = run.plan.map;

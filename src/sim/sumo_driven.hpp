@@ -35,9 +35,6 @@
 
 namespace signalsim {
 
-/// The decoded blinker of a TraCI signal mask (docs/behaviour.md §S4 bits).
-Blinker blinker_of_signals(int mask);
-
 /// Where the front is on the route (the locating rules of the file comment).
 struct RoutePosition {
   std::optional<double> s;  ///< route s of the front; empty: off the route

@@ -65,16 +65,6 @@ void expect_rows_are_sumos(const RunRecord& record) {
   }
 }
 
-TEST(SumoSignals, DecodeTraciBits) {
-  EXPECT_EQ(blinker_of_signals(0), Blinker::None);
-  EXPECT_EQ(blinker_of_signals(8), Blinker::None);  // brake light only
-  EXPECT_EQ(blinker_of_signals(1), Blinker::Right);
-  EXPECT_EQ(blinker_of_signals(9), Blinker::Right);
-  EXPECT_EQ(blinker_of_signals(2), Blinker::Left);
-  EXPECT_EQ(blinker_of_signals(3), Blinker::Hazard);
-  EXPECT_EQ(blinker_of_signals(4), Blinker::Hazard);
-}
-
 // The locating rules on a synthetic route (no SUMO): a_0 | junction J, two chained internal lanes
 // :J_0_0 (5 m) and :J_1_0 (10 m) | b_0.
 RouteMap junction_route() {
