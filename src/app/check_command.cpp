@@ -24,6 +24,7 @@
 #include "batch/scenario_files.hpp"
 #include "core/number_text.hpp"
 #include "report/atomic_file.hpp"
+#include "report/run_files.hpp"
 #include "scenario/input_error.hpp"
 
 namespace signalsim::app {
@@ -71,12 +72,12 @@ JUnitCase check_one(const RunSpec& run, const ResultRow* row, const CheckOptions
   if (cell(*row, "status") == "error") return verdict(JUnitCase::Result::Error, "run error: " + cell(*row, "error"));
 
   const fs::path run_dir = fs::path(out_dir) / cell(*row, "run_dir");
-  const std::string events_path = (run_dir / "events.csv").string();
+  const std::string events_path = (run_dir / run_files::kEvents).string();
   std::vector<TimelineEvent> events;
   double step = 0.1;
   try {
     events = read_events_csv(events_path);
-    const auto summary = read_json_file((run_dir / "summary.json").string());
+    const auto summary = read_json_file((run_dir / run_files::kSummary).string());
     step = summary.value("step_length", 0.1);
     // The failed expectations with their details, for the console and JUnit's <system-out>.
     if (summary.contains("expectations") && summary["expectations"].is_array())

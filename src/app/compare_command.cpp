@@ -34,6 +34,7 @@
 #include "scenario/scenario.hpp"
 #include "sim/session_setup.hpp"
 #include "net/net_index.hpp"
+#include "report/run_files.hpp"
 
 namespace signalsim::app {
 namespace fs = std::filesystem;
@@ -81,7 +82,7 @@ std::string run_dir_name(std::size_t index, const std::string& name, const std::
   std::string safe;
   for (const char c : name) safe += (std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-') ? c : '_';
   char prefix[32];
-  std::snprintf(prefix, sizeof prefix, "runs/%04zu-", index);
+  std::snprintf(prefix, sizeof prefix, "%s/%04zu-", run_files::kRunsDir, index);
   return prefix + safe + "-" + driver;
 }
 
@@ -109,13 +110,13 @@ DriverRun driver_run(const std::string& out_dir, const std::string& run_dir, con
   }
   const fs::path dir = fs::path(out_dir) / run_dir;
   try {
-    run.summary = read_json_file((dir / "summary.json").string());
+    run.summary = read_json_file((dir / run_files::kSummary).string());
     const std::string status = run.summary.value("status", "");
     if (!is_finished_status(status)) {
       run.error = run.summary.value("error", "summary.json status '" + status + "'");
       return run;
     }
-    run.timeline = read_timeline_csv((dir / "timeline.csv").string());
+    run.timeline = read_timeline_csv((dir / run_files::kTimeline).string());
     run.status = status;
   } catch (const std::exception& e) {
     run.error = "exit code " + std::to_string(result.exit_code) + " but " + e.what();
@@ -143,7 +144,7 @@ int compare(const CompareOptions& o) {
   std::vector<ProcessJob> jobs;
   std::vector<std::string> run_dirs;
   try {
-    fs::create_directories(fs::path(settings.out_dir) / "runs");
+    fs::create_directories(fs::path(settings.out_dir) / run_files::kRunsDir);
     for (const char* name : {kCsv, kPicture}) fs::remove(fs::path(settings.out_dir) / name);
     const std::string self = self_executable();
     for (std::size_t i = 0; i < scenarios.size(); ++i)

@@ -22,13 +22,13 @@
 #include "route/route_builder.hpp"
 #include "session/interruption.hpp"
 #include "net/sumo_log.hpp"
+#include "report/run_files.hpp"
 #include "session/sumo_session.hpp"
 #include "sim/session_setup.hpp"
 
 namespace signalsim::app {
 namespace {
 
-constexpr const char* kGuiScreenshot = "gui.png";  // --gui: the view at the first blinker
 
 struct RunOptions {
   std::string scenario_path;
@@ -71,7 +71,7 @@ RunContext run_context(const RunOptions& options) {
   if (options.gui) {
     context.backend.kind = sumo::BackendKind::Gui;
     context.backend.gui_delay_ms = std::max(0, options.gui_delay_ms);
-    context.backend.screenshot = (std::filesystem::path(options.out_dir) / kGuiScreenshot).string();
+    context.backend.screenshot = (std::filesystem::path(options.out_dir) / run_files::kGuiScreenshot).string();
   } else if (!options.connect.empty()) {
     const auto colon = options.connect.rfind(':');
     const std::string digits = colon == std::string::npos ? std::string() : options.connect.substr(colon + 1);

@@ -17,6 +17,7 @@
 #include "batch/worker_pool.hpp"
 #include "scenario/input_error.hpp"
 #include "report/atomic_file.hpp"
+#include "report/run_files.hpp"
 
 namespace signalsim {
 namespace fs = std::filesystem;
@@ -49,13 +50,13 @@ int default_jobs() {
   return n > 0 ? static_cast<int>(n) : 1;
 }
 
-std::string results_path(const std::string& out_dir) { return (fs::path(out_dir) / "results.csv").string(); }
+std::string results_path(const std::string& out_dir) { return (fs::path(out_dir) / run_files::kResults).string(); }
 
 BatchStart start_batch(const std::vector<RunSpec>& runs, const BatchSettings& settings) {
   BatchStart batch;
   BatchResult& result = batch.result;
   result.total = runs.size();
-  fs::create_directories(fs::path(settings.out_dir) / "runs");
+  fs::create_directories(fs::path(settings.out_dir) / run_files::kRunsDir);
   batch.lock = std::make_unique<OutputLock>(settings.out_dir);
   std::signal(SIGPIPE, SIG_IGN);  // a closed stdout (| head) must not kill the batch
   const std::string csv = results_path(settings.out_dir);

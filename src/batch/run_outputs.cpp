@@ -12,6 +12,7 @@
 #include "report/metrics.hpp"
 #include "step/route_planning.hpp"
 #include "net/net_index.hpp"
+#include "report/run_files.hpp"
 #include "route/route_builder.hpp"
 
 namespace signalsim {
@@ -149,7 +150,7 @@ nlohmann::ordered_json metrics_from_run_dir(const std::string& run_dir, const st
   static std::map<std::string, std::shared_ptr<const Route>> routes;
   Scenario scenario = load_scenario(scenario_file, ScenarioOverrides{set});
   const fs::path dir(run_dir);
-  const auto summary = read_json_file((dir / "summary.json").string());
+  const auto summary = read_json_file((dir / run_files::kSummary).string());
   // The ego as the run had it (a taken-over vehicle's route and length are SUMO's).
   if (summary.contains("route") && summary["route"].contains("edges"))
     scenario.ego.route = summary["route"]["edges"].get<std::vector<std::string>>();
@@ -169,8 +170,8 @@ nlohmann::ordered_json metrics_from_run_dir(const std::string& run_dir, const st
     route = std::make_shared<const Route>(Route{std::move(net), std::move(plan)});
   }
   RunRecord record;
-  record.rows = read_timeline_csv((dir / "timeline.csv").string());
-  record.events = read_events_csv((dir / "events.csv").string());
+  record.rows = read_timeline_csv((dir / run_files::kTimeline).string());
+  record.events = read_events_csv((dir / run_files::kEvents).string());
   record.base_link_to_front = scenario.ego.base_link_to_front;
   if (summary.contains("counts")) {
     record.collisions = summary["counts"].value("collisions", 0);

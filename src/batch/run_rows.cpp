@@ -8,6 +8,7 @@
 #include "core/number_text.hpp"
 #include "report/atomic_file.hpp"
 #include "report/metric_columns.hpp"
+#include "report/run_files.hpp"
 
 namespace signalsim {
 namespace fs = std::filesystem;
@@ -15,7 +16,7 @@ namespace {
 
 // Status, expectations and metrics from a finished worker's summary.json.
 void read_summary(ResultRow& row, const RunSpec& run, const std::string& dir) {
-  const auto summary = read_json_file((fs::path(dir) / "summary.json").string());
+  const auto summary = read_json_file((fs::path(dir) / run_files::kSummary).string());
   const std::string status = summary.value("status", "");
   if (!is_finished_status(status)) {
     row.cells["status"] = "error";
@@ -42,7 +43,7 @@ void read_summary(ResultRow& row, const RunSpec& run, const std::string& dir) {
     // leave them beside it as metrics.json, where signalsim-plot looks too.
     try {
       metrics = metrics_from_run_dir(dir, run.scenario, run.set);
-      write_file_atomically((fs::path(dir) / "metrics.json").string(), metrics.dump(2) + "\n");
+      write_file_atomically((fs::path(dir) / run_files::kMetrics).string(), metrics.dump(2) + "\n");
     } catch (const std::exception&) {
       metrics = nullptr;
     }
@@ -62,7 +63,7 @@ std::string run_dir_name(const RunSpec& run, std::size_t total) {
   for (std::size_t n = total; n >= 10000; n /= 10) ++width;
   std::string name;
   for (const char c : run.name) name += (std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-') ? c : '_';
-  return format_text("runs/%0*zu-", width, run.index) + name;
+  return run_files::kRunsDir + format_text("/%0*zu-", width, run.index) + name;
 }
 
 std::string stderr_one_line(const std::string& text) {

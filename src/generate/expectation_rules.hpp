@@ -35,6 +35,7 @@
 #include <string>
 #include <vector>
 
+#include "core/vehicle_defaults.hpp"
 #include "generate/sections.hpp"
 #include "generate/speed_profile.hpp"
 
@@ -48,7 +49,7 @@ inline constexpr double kStepLength = 0.1;
 struct RuleParameters {
   double search_time = 3.0;              ///< turn_signal_search_time [s]
   double minimum_search_distance = 10.0; ///< turn_signal_minimum_search_distance [m]
-  double base_link_to_front = 3.7;       ///< [m]
+  double base_link_to_front = vehicle_defaults::kBaseLinkToFront;  ///< [m]
   double straight = 50.0;                ///< [m] shortest stretch given a no_blinker
 };
 

@@ -16,7 +16,6 @@
 namespace signalsim::generate {
 namespace {
 
-constexpr double kSumoDecel = 4.5;       // [m/s^2] the ego vType's decel in SUMO (session/sumo_session.hpp)
 constexpr double kInsertionRoom = 5.0;   // [m] SUMO inserts the ego only if it can stop this short of the edge end
 constexpr double kDurationFactor = 1.3;  // duration = factor x (travel + waits) + slack, in 10 s steps
 constexpr double kDurationSlack = 30.0;  // [s]
@@ -54,7 +53,7 @@ double depart_speed(const RouteMap& route, const std::vector<LightFact>& lights,
   const double horizon = o.max_speed * o.max_speed / (2.0 * o.decel) + 1.0;
   for (std::size_t i = 0; i < route.size() && route.at(i).s_start < horizon; ++i)
     v = std::min(v, std::sqrt(route.at(i).speed_limit * route.at(i).speed_limit + 2.0 * o.decel * route.at(i).s_start));
-  v = std::min(v, std::sqrt(2.0 * kSumoDecel * std::max(0.0, route.at(0).length - kInsertionRoom)));
+  v = std::min(v, std::sqrt(2.0 * vehicle_defaults::kSumoDecel * std::max(0.0, route.at(0).length - kInsertionRoom)));
   if (!lights.empty()) {
     const double room = lights.front().stop_line - stop_margin - kLightRoom;
     const StopPlannerParameters stop;

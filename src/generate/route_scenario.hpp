@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "core/vehicle_defaults.hpp"
 #include "generate/scenario_text.hpp"
 #include "generate/sections.hpp"
 #include "scenario/parameters.hpp"
@@ -17,9 +18,9 @@ namespace signalsim::generate {
 /// What the ego is and how the generated files look (the command's options).
 struct RouteScenarioOptions {
   std::string country;            ///< preset code, empty: Autoware's defaults
-  double max_speed = 13.89;       ///< ego.max_speed [m/s]
-  double length = 4.5;            ///< ego.length [m]
-  double base_link_to_front = 3.7;
+  double max_speed = vehicle_defaults::kMaxSpeed;  ///< ego.max_speed [m/s]
+  double length = vehicle_defaults::kLength;  ///< ego.length [m]
+  double base_link_to_front = vehicle_defaults::kBaseLinkToFront;
   double accel = 1.0;             ///< the scenario defaults (EgoSpec), used by the speed planner
   double decel = 1.0;
   double straight = 50.0;         ///< shortest no_blinker stretch [m]

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "core/vehicle_defaults.hpp"
 #include "generate/expectation_rules.hpp"
 
 namespace signalsim::generate {
@@ -19,9 +20,9 @@ struct ScenarioDraft {
   double duration = 60.0;            ///< [s]
   std::vector<std::string> route;    ///< edge ids
   double depart_speed = 0.0;         ///< [m/s]
-  double max_speed = 13.89;          ///< [m/s]
-  double length = 4.5;               ///< [m]
-  double base_link_to_front = 3.7;   ///< [m]
+  double max_speed = vehicle_defaults::kMaxSpeed;  ///< [m/s]
+  double length = vehicle_defaults::kLength;  ///< [m]
+  double base_link_to_front = vehicle_defaults::kBaseLinkToFront;  ///< [m]
   std::vector<GeneratedExpectation> expect;
 };
 

@@ -29,6 +29,7 @@
 #include <optional>
 #include <vector>
 
+#include "core/vehicle_defaults.hpp"
 #include "planning/shift_line.hpp"
 
 namespace signalsim {
@@ -72,8 +73,8 @@ class LaneChangeExecution {
     bool module_active = false; ///< the lane-change module signals (LaneChangeSignal::active)
     std::optional<double> blinker_on_since;  ///< [s] the module's blinker timestamp
     double prepare_duration = 0.0;           ///< [s] the module's actual prepare duration now
-    double vehicle_length = 4.5;             ///< [m]
-    double base_link_to_front = 3.7;         ///< [m]
+    double vehicle_length = vehicle_defaults::kLength;  ///< [m]
+    double base_link_to_front = vehicle_defaults::kBaseLinkToFront;  ///< [m]
     std::vector<OccupiedSpan> target_lane;   ///< other vehicles on the target lane
   };
 

@@ -23,6 +23,8 @@
 #include <optional>
 #include <vector>
 
+#include "core/vehicle_defaults.hpp"
+
 namespace signalsim {
 
 /// The minimum-jerk blend B(u) on [0, 1] (clamped outside).
@@ -104,9 +106,9 @@ struct AvoidanceRequest {
   double object_left = 0.0;     ///< lateral position of the obstacle's left edge [m]
   double object_right = 0.0;    ///< lateral position of the obstacle's right edge [m]
   double clearance = 1.0;       ///< lateral gap kept between the ego's side and the obstacle [m]
-  double vehicle_width = 1.8;   ///< [m]
+  double vehicle_width = vehicle_defaults::kWidth;  ///< [m]
   AvoidSide side = AvoidSide::Auto;  ///< Auto: pass on the side away from the obstacle's centre (left if centred)
-  double base_link_to_front = 3.7;   ///< the shift out ends when the front reaches the margin [m]
+  double base_link_to_front = vehicle_defaults::kBaseLinkToFront;  ///< the shift out ends when the front reaches the margin [m]
   double rear_overhang = 0.8;        ///< the return starts when the rear has passed the margin [m]
   double longitudinal_margin = 1.0;  ///< kept ahead of / behind the obstacle [m]
   double speed = 0.0;                ///< planning speed for the length policy [m/s]

@@ -4,12 +4,13 @@
 
 #include <limits>
 
+#include "core/vehicle_defaults.hpp"
 #include "map/route_map.hpp"
 
 namespace signalsim {
 
 struct SpeedLimits {
-  double max_speed = 13.89;  ///< vehicle maximum [m/s]
+  double max_speed = vehicle_defaults::kMaxSpeed;  ///< vehicle maximum [m/s]
   double accel = 1.0;        ///< [m/s^2], > 0
   double decel = 1.0;        ///< [m/s^2], > 0
 };

@@ -9,6 +9,7 @@
 #include "report/atomic_file.hpp"
 #include "core/number_text.hpp"
 #include "report/metrics.hpp"
+#include "report/run_files.hpp"
 #include "scenario/take_over.hpp"
 #include "session/sumo_session.hpp"
 
@@ -186,9 +187,9 @@ void write_run_outputs(const std::string& dir, const Scenario& scenario, const s
                        const RunRecord& record, const std::vector<ExpectationResult>& results,
                        RunStatus status) {
   fs::create_directories(dir);
-  fs::remove(fs::path(dir) / "summary.json");  // a stale summary must never describe new files
-  write_timeline_csv((fs::path(dir) / "timeline.csv").string(), record.rows, record.v2i);
-  write_events_csv((fs::path(dir) / "events.csv").string(), record.events);
+  fs::remove(fs::path(dir) / run_files::kSummary);  // a stale summary must never describe new files
+  write_timeline_csv((fs::path(dir) / run_files::kTimeline).string(), record.rows, record.v2i);
+  write_events_csv((fs::path(dir) / run_files::kEvents).string(), record.events);
 
   nlohmann::ordered_json summary;
   summary["scenario"] = scenario.name;
@@ -347,24 +348,24 @@ void write_run_outputs(const std::string& dir, const Scenario& scenario, const s
   summary["parameter_sources"] = parameter_sources_json(scenario.params);
   summary["parameter_files"] = parameter_files_json(scenario.params);
   summary["sumo"] = sumo_json(scenario, record.sumo);
-  write_atomically((fs::path(dir) / "summary.json").string(), json_text(summary));
+  write_atomically((fs::path(dir) / run_files::kSummary).string(), json_text(summary));
 }
 
 void clear_run_outputs(const std::string& dir) {
   fs::create_directories(dir);
-  for (const char* name : {"summary.json", "timeline.csv", "events.csv", "gui.png"}) fs::remove(fs::path(dir) / name);
+  for (const char* name : run_files::kRunOutputs) fs::remove(fs::path(dir) / name);
 }
 
 void write_error_summary(const std::string& dir, const Scenario* scenario, const std::string& message,
                          const std::string& status) {
   fs::create_directories(dir);
-  for (const char* name : {"summary.json", "timeline.csv", "events.csv", "gui.png"}) fs::remove(fs::path(dir) / name);
+  for (const char* name : run_files::kRunOutputs) fs::remove(fs::path(dir) / name);
   nlohmann::ordered_json summary;
   summary["scenario"] = scenario ? scenario->name : "";
   summary["file"] = scenario ? scenario->path : "";
   summary["status"] = status;
   summary["error"] = message;
-  write_atomically((fs::path(dir) / "summary.json").string(), json_text(summary));
+  write_atomically((fs::path(dir) / run_files::kSummary).string(), json_text(summary));
 }
 
 }  // namespace signalsim

@@ -16,9 +16,6 @@
 
 namespace signalsim {
 
-/// The TraCI signal bits that show a blinker in SUMO (docs/behaviour.md §S4).
-int signal_mask(Blinker blinker);
-
 struct TimelineRow {
   double time = 0.0;             ///< [s] simulation time of the observation
   double s_front = 0.0;          ///< route position of the front bumper [m]

@@ -18,6 +18,8 @@
 #include <string>
 #include <vector>
 
+#include "core/vehicle_defaults.hpp"
+
 namespace signalsim::sumo {
 
 inline constexpr double kLaneChangeLead = 20.0;       ///< [m] default start after base_link may start
@@ -30,9 +32,9 @@ inline constexpr double kMinTurningRadius = 3.31;
 
 /// What limits a lane change of the ego (the defaults are scenario's EgoSpec defaults).
 struct LaneChangeEgo {
-  double base_link_to_front = 3.7;  ///< [m]
+  double base_link_to_front = vehicle_defaults::kBaseLinkToFront;  ///< [m]
   double depart_pos = 0.0;          ///< [m] front bumper on the first edge
-  double max_speed = 13.89;         ///< [m/s] the ego drives no faster, nor faster than the lane
+  double max_speed = vehicle_defaults::kMaxSpeed;  ///< [m/s] the ego drives no faster, nor faster than the lane
   double max_lateral_accel = 9.0;   ///< [m/s^2] its grip (ego.emergency_decel: the same tyres)
   /// The lane the ego is on when it enters the first edge, when that is not signalsim's choice (a
   /// taken-over vehicle departs where SUMO put it); -1: the plan chooses.
@@ -42,7 +44,7 @@ struct LaneChangeEgo {
   std::string vclass = "passenger";
   /// SUMO's look-ahead for its lane choice at junctions (sumo_lane_choice.hpp): the vType's decel
   /// [m/s^2] (signalsim's own ego: 4.5) and the step length [s].
-  double sumo_decel = 4.5;
+  double sumo_decel = vehicle_defaults::kSumoDecel;
   double step_length = 0.1;
 };
 

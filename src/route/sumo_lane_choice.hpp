@@ -24,6 +24,7 @@
 #include <string>
 #include <vector>
 
+#include "core/vehicle_defaults.hpp"
 #include "net/net_index.hpp"
 
 namespace signalsim::sumo {
@@ -31,8 +32,8 @@ namespace signalsim::sumo {
 /// What SUMO's look-ahead depends on (MSCFModel defaults for tau and minGap).
 struct SumoLookahead {
   std::string vclass = "passenger";
-  double max_speed = 13.89;   ///< [m/s] the vehicle's
-  double decel = 4.5;         ///< [m/s^2] its vType's decel
+  double max_speed = vehicle_defaults::kMaxSpeed;  ///< [m/s] the vehicle's
+  double decel = vehicle_defaults::kSumoDecel;  ///< [m/s^2] its vType's decel
   double tau = 1.0;           ///< [s]
   double min_gap = 2.5;       ///< [m]
   double step_length = 0.1;   ///< [s]

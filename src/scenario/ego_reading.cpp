@@ -72,7 +72,7 @@ void read_ego(const YamlFields& top, const YAML::Node& root, const std::string& 
   s.ego.max_speed = ego.number("max_speed");
   s.ego.length = ego.number("length");
   s.ego.width = ego.number("width");
-  s.ego.base_link_to_front = ego.number("base_link_to_front", kBaseLinkShare * s.ego.length);
+  s.ego.base_link_to_front = ego.number("base_link_to_front", vehicle_defaults::kBaseLinkShare * s.ego.length);
   s.strict_params = strict_params(root, path);
   if (ego.has("vehicle_info"))
     apply_vehicle_info(load_vehicle_info(resolve_beside(path, ego.text("vehicle_info")), s.strict_params),

@@ -10,6 +10,8 @@
 
 #include <set>
 
+#include "core/blinker_signals.hpp"  // Blinker
+#include "core/vehicle_defaults.hpp"
 #include "scenario/parameters.hpp"
 #include "route/lane_change_room.hpp"
 #include "net/sumo_options.hpp"
@@ -18,9 +20,7 @@
 
 namespace signalsim {
 
-/// The blinker the timeline records (`blinker` column).
-enum class Blinker { None, Left, Right, Hazard };
-std::string_view to_string(Blinker b);
+std::string_view to_string(Blinker b);  ///< "none", "left", "right", "hazard"
 
 struct EgoSpec {
   /// Take over this vehicle of the route files when it departs (its route, vType and departure are
@@ -29,11 +29,11 @@ struct EgoSpec {
   std::vector<std::string> route;   ///< edge ids; each must connect to the next
   double depart_pos = 0.0;          ///< [m] on the first edge
   double depart_speed = 0.0;        ///< [m/s]
-  double max_speed = 13.89;         ///< [m/s]
-  double length = 4.5;              ///< [m]
-  double width = 1.8;               ///< [m] (SUMO's DEFAULT_VEHTYPE; a taken-over vehicle's from its vType)
-  /// Rear-axle centre to front bumper [m]. Default: kBaseLinkShare of the length (3.7 m of 4.5 m).
-  double base_link_to_front = 3.7;
+  double max_speed = vehicle_defaults::kMaxSpeed;  ///< [m/s]
+  double length = vehicle_defaults::kLength;  ///< [m]
+  double width = vehicle_defaults::kWidth;  ///< [m] (SUMO's DEFAULT_VEHTYPE; a taken-over vehicle's from its vType)
+  /// Rear-axle centre to front bumper [m]. Default: vehicle_defaults::kBaseLinkShare of the length (3.7 m of 4.5 m).
+  double base_link_to_front = vehicle_defaults::kBaseLinkToFront;
   double accel = 1.0;               ///< comfortable acceleration [m/s^2] (Autoware normal set)
   double decel = 1.0;               ///< comfortable deceleration [m/s^2] (Autoware normal set)
   double emergency_decel = 9.0;     ///< the most the ego can brake [m/s^2] (SUMO passenger default)
@@ -44,7 +44,7 @@ struct EgoSpec {
   /// taken-over vehicle has its vType's (the route files' before the run, SUMO's once it departed).
   std::string vclass = "passenger";
   /// Its vType's decel in SUMO [m/s^2] (SUMO's look-ahead for lane choices; own ego: 4.5).
-  double sumo_decel = 4.5;
+  double sumo_decel = vehicle_defaults::kSumoDecel;
   /// The keys the scenario (or --set) gave; the others are defaults, or SUMO's for a taken-over ego.
   std::set<std::string> given;
   std::string vehicle_info;                ///< `vehicle_info:` (resolved), empty when none
@@ -52,9 +52,6 @@ struct EgoSpec {
   std::vector<std::string> vehicle_info_unused;  ///< keys of the vehicle_info file signalsim does not use
   std::map<std::string, int> lines;  ///< the scenario file's line of each given key (0: from --set)
 };
-/// base_link_to_front / length when the scenario gives no base_link_to_front: Autoware's default
-/// car has its rear axle 0.8 m ahead of the rear bumper on 4.5 m (3.7 m to the front).
-inline constexpr double kBaseLinkShare = 3.7 / 4.5;
 
 /// What SUMO is given beyond the net (docs/sumo.md): a user's .sumocfg, route files and SUMO options.
 struct SumoInputs {
@@ -104,7 +101,7 @@ struct ObstacleSpec {
   double pos = 0.0;       ///< lane position of its front [m]
   double length = 4.5;    ///< [m]
 };
-inline constexpr double kObstacleWidth = 1.8;  ///< [m] SUMO DEFAULT_VEHTYPE
+inline constexpr double kObstacleWidth = vehicle_defaults::kWidth;  ///< [m] SUMO DEFAULT_VEHTYPE
 
 /// `maneuvers: [{avoid: {obstacle, clearance, side, length}}]`: pass a declared obstacle standing on
 /// the ego's planned lane: shift out, hold, shift back (planning/shift_line.hpp plan_avoidance).

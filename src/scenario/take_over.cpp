@@ -89,7 +89,7 @@ Scenario with_taken_over_ego(const Scenario& scenario, const sumo::EgoVehicle& v
   take("max_speed", ego.max_speed, vehicle.max_speed);
   take("accel", ego.accel, vehicle.accel);
   take("emergency_decel", ego.emergency_decel, vehicle.emergency_decel);
-  if (!ego.given.count("base_link_to_front")) ego.base_link_to_front = kBaseLinkShare * ego.length;
+  if (!ego.given.count("base_link_to_front")) ego.base_link_to_front = vehicle_defaults::kBaseLinkShare * ego.length;
   if (ego.base_link_to_front > ego.length)
     throw InputError(scenario.path, 0, "ego.base_link_to_front " + short_number(ego.base_link_to_front) +
                                            " m is longer than vehicle '" + vehicle.id + "' (" + short_number(ego.length) + " m)");

@@ -21,7 +21,7 @@ std::optional<sumo::RouteFileVehicle> resolve_route_file_ego(Scenario& scenario)
 
 /// The scenario with the taken-over vehicle's values as SUMO has them (length, width, max speed,
 /// accel, emergency decel, departure lane, position and speed), and base_link_to_front from its length
-/// (kBaseLinkShare) unless given. Throws InputError when a given key contradicts SUMO's value.
+/// (vehicle_defaults::kBaseLinkShare) unless given. Throws InputError when a given key contradicts SUMO's value.
 Scenario with_taken_over_ego(const Scenario& scenario, const sumo::EgoVehicle& vehicle,
                              const sumo::RouteFileVehicle& definition);
 

@@ -14,6 +14,8 @@
 #include <utility>
 #include <vector>
 
+#include "core/blinker_signals.hpp"  // the TraCI signal bits
+#include "core/vehicle_defaults.hpp"
 #include "session/signal_timing.hpp"
 
 namespace signalsim::sumo {
@@ -24,12 +26,6 @@ class SumoError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
-
-/// TraCI signal bits (docs/behaviour.md §S4; the libsumo headers do not define them).
-inline constexpr int kBlinkerRight = 1;
-inline constexpr int kBlinkerLeft = 2;
-inline constexpr int kBlinkerEmergency = 4;
-inline constexpr int kBlinkerMask = kBlinkerRight | kBlinkerLeft | kBlinkerEmergency;
 
 /// The ego's SUMO speed factor while SUMO's lane limits are off (set_sumo_lane_limits).
 inline constexpr double kFreeSpeedFactor = 10.0;
@@ -86,11 +82,11 @@ struct SessionConfig {
   /// The ego is moved there standing still before the session is returned (a few steps).
   double depart_pos_lat = 0.0;
   double depart_speed = 0.0;
-  double max_speed = 13.89;
-  double length = 4.5;
-  double width = 1.8;              ///< [m]
+  double max_speed = vehicle_defaults::kMaxSpeed;
+  double length = vehicle_defaults::kLength;
+  double width = vehicle_defaults::kWidth;  ///< [m]
   double accel = 1.0;              ///< vehicle type accel [m/s^2]
-  double decel = 4.5;              ///< vehicle type decel: the most SUMO brakes with speed-mode bit 2
+  double decel = vehicle_defaults::kSumoDecel;  ///< vehicle type decel: the most SUMO brakes with speed-mode bit 2
   double emergency_decel = 9.0;
   bool keep_planned_lanes = true;  ///< switch SUMO's own lane changes off for the ego
   /// SUMO drives the ego (`run --driver sumo`): it is inserted as configured, with the same vType,

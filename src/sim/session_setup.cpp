@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "route/approach_lights.hpp"
+#include "report/run_files.hpp"
 #include "scenario/input_error.hpp"
 #include "scenario/take_over.hpp"
 
@@ -77,7 +78,7 @@ sumo::SessionConfig session_config(const Scenario& scenario, const sumo::RoutePl
   } catch (const sumo::SumoOptionError& e) {
     throw InputError(scenario.path, 0, e.what());
   }
-  if (!context.out_dir.empty()) config.log_file = (fs::path(context.out_dir) / kSumoLogFile).string();
+  if (!context.out_dir.empty()) config.log_file = (fs::path(context.out_dir) / run_files::kSumoLog).string();
   config.step_length = scenario.step_length;
   config.begin = scenario.sumo.begin;
   config.seed = scenario.seed;

@@ -13,6 +13,7 @@
 #include "net/net_index.hpp"
 #include "route/route_builder.hpp"
 #include "net/route_files.hpp"
+#include "report/run_files.hpp"
 #include "session/sumo_session.hpp"
 #include "step/step_core.hpp"
 
@@ -29,9 +30,6 @@ struct RunContext {
   /// SUMO-driven core (step/sumo_driven_core.hpp), which commands nothing.
   bool sumo_drives = false;
 };
-
-/// The file SUMO's messages go to in `out_dir`.
-inline constexpr const char* kSumoLogFile = "sumo.log";
 
 /// SUMO's configuration for `scenario` on its planned route with its lateral plan. Throws InputError
 /// for a scenario the back-end cannot run (light_offsets or sumo_args with --connect: they would

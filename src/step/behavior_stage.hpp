@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "core/vehicle_defaults.hpp"
 #include "planning/lane_change_execution.hpp"
 #include "step/route_planning.hpp"
 #include "report/timeline.hpp"
@@ -30,8 +31,8 @@ namespace signalsim {
 struct BehaviorStageConfig {
   double path_forward = 300.0;   ///< [m] module path ahead of base_link (forward_path_length)
   double route_length = 0.0;     ///< [m]
-  double vehicle_length = 4.5;   ///< [m]
-  double max_speed = 13.89;      ///< [m/s] the ego's (the lane change's prepare segment)
+  double vehicle_length = vehicle_defaults::kLength;  ///< [m]
+  double max_speed = vehicle_defaults::kMaxSpeed;  ///< [m/s] the ego's (the lane change's prepare segment)
   LaneChangeGaps gaps;           ///< the lane-change approval's target-lane margins
 };
 

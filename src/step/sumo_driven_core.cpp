@@ -36,14 +36,6 @@ void note_off_plan(RunRecord& record, const TimelineRow& row, const std::string&
 
 }  // namespace
 
-Blinker blinker_of_signals(int mask) {
-  const bool left = mask & sumo::kBlinkerLeft, right = mask & sumo::kBlinkerRight;
-  if ((mask & sumo::kBlinkerEmergency) || (left && right)) return Blinker::Hazard;
-  if (left) return Blinker::Left;
-  if (right) return Blinker::Right;
-  return Blinker::None;
-}
-
 std::size_t LightWatch::nearest_after(double s_front) const {
   std::size_t k = nearest_;
   while (k < lights_.size() && s_front > lights_[k].s_stop_line + kLeftBehind) ++k;

@@ -21,6 +21,7 @@
 
 #include <vector>
 
+#include "core/blinker_signals.hpp"
 #include "map/route_locator.hpp"
 #include "report/timeline.hpp"
 #include "route/approach_lights.hpp"
@@ -29,9 +30,6 @@
 #include "step/step_core.hpp"
 
 namespace signalsim {
-
-/// The decoded blinker of a TraCI signal mask (docs/behaviour.md §S4 bits).
-Blinker blinker_of_signals(int mask);
 
 /// Records stops and red crossings at every light of the route (in route order) as they happen.
 class LightWatch {

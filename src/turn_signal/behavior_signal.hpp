@@ -26,6 +26,7 @@
 #include <optional>
 #include <string>
 
+#include "core/vehicle_defaults.hpp"
 #include "turn_signal/turn_signal_info.hpp"
 #include "turn_signal/turn_signal_parameters.hpp"
 
@@ -42,9 +43,9 @@ struct BehaviorSignalParameters {
   bool turn_signal_on_swerving = true;                        ///< false disables every shift blinker
   double turn_signal_remaining_distance_to_bound_threshold = 1.3;  ///< [m] pull out turn-off
   // Vehicle (Autoware vehicle_info).
-  double base_link_to_front = 3.7;  ///< rear-axle centre to front bumper [m] (max_longitudinal_offset)
+  double base_link_to_front = vehicle_defaults::kBaseLinkToFront;  ///< rear-axle centre to front bumper [m] (max_longitudinal_offset)
   double rear_overhang = 0.8;       ///< rear-axle centre to rear bumper [m] (not in the schema)
-  double vehicle_width = 1.8;       ///< [m] (not in the schema)
+  double vehicle_width = vehicle_defaults::kWidth;  ///< [m] (not in the schema)
   // Lane change (docs/behaviour.md §T8.2, lane_change.param.yaml).
   double min_length_for_turn_signal_activation = 10.0;  ///< [m] terminal-variant buffer
   double max_prepare_duration = 4.0;        ///< [s] trajectory.max_prepare_duration (not in the schema)

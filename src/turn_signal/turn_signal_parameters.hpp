@@ -3,10 +3,12 @@
 
 #include <string>
 
+#include "core/vehicle_defaults.hpp"
+
 namespace signalsim {
 
 struct TurnSignalParameters {
-  double base_link_to_front = 3.7;                          ///< rear-axle centre to front bumper [m]
+  double base_link_to_front = vehicle_defaults::kBaseLinkToFront;  ///< rear-axle centre to front bumper [m]
   double turn_signal_intersection_search_distance = 30.0;   ///< constant part of the search [m]
   double turn_signal_intersection_angle_threshold_deg = 15.0;  ///< required-end threshold [deg] (§T7)
   double turn_signal_search_time = 3.0;                     ///< speed part of the search [s]

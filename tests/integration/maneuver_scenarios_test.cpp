@@ -711,7 +711,7 @@ TEST(ManeuverScenario, PullOutBackingUpGivesHazardThenLeft) {
   for (; i < rows.size() && rows[i].speed < 0.0; ++i) {
     EXPECT_EQ(rows[i].blinker, Blinker::Hazard) << "t=" << rows[i].time;
     EXPECT_EQ(rows[i].blinker_source, RequestSource::PullOut);
-    EXPECT_EQ(rows[i].sumo_signals & 7, 4) << "SUMO shows the hazard bit";
+    EXPECT_EQ(rows[i].sumo_signals & sumo::kBlinkerMask, sumo::kBlinkerEmergency) << "SUMO shows the hazard bit";
     EXPECT_NEAR(rows[i].lateral_offset, -0.7, 0.01);
     if (i > 0) {
       EXPECT_NEAR(rows[i].s_front, rows[i - 1].s_front - 0.1, 1e-6);

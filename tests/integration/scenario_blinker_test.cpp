@@ -41,8 +41,6 @@ std::string path_of(const std::string& scenario) {
   return std::string(SIGNALSIM_SOURCE_DIR) + "/scenarios/" + scenario + ".yaml";
 }
 
-int mask_of(Blinker b) { return b == Blinker::Left ? 2 : b == Blinker::Right ? 1 : b == Blinker::Hazard ? 4 : 0; }
-
 class ScenarioBlinker : public ::testing::TestWithParam<Case> {};
 
 TEST_P(ScenarioBlinker, TurnsOnAndOffWhereTheSpecSays) {
@@ -86,7 +84,7 @@ TEST_P(ScenarioBlinker, TurnsOnAndOffWhereTheSpecSays) {
         << c.scenario << ": step " << k << " t=" << row.time << " s_front=" << row.s_front;
     current = expected;
     if (row.sumo_signals >= 0) {
-      ASSERT_EQ(row.sumo_signals & 7, mask_of(row.blinker)) << "SUMO shows another mask at t=" << row.time;
+      ASSERT_EQ(row.sumo_signals & sumo::kBlinkerMask, signal_mask(row.blinker)) << "SUMO shows another mask at t=" << row.time;
     }
   }
   EXPECT_EQ(next, c.stretches.size()) << "every stretch must have started";

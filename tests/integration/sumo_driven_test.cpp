@@ -70,16 +70,6 @@ void expect_rows_are_sumos(const RunRecord& record) {
   }
 }
 
-TEST(SumoSignals, DecodeTraciBits) {
-  EXPECT_EQ(blinker_of_signals(0), Blinker::None);
-  EXPECT_EQ(blinker_of_signals(8), Blinker::None);  // brake light only
-  EXPECT_EQ(blinker_of_signals(1), Blinker::Right);
-  EXPECT_EQ(blinker_of_signals(9), Blinker::Right);
-  EXPECT_EQ(blinker_of_signals(2), Blinker::Left);
-  EXPECT_EQ(blinker_of_signals(3), Blinker::Hazard);
-  EXPECT_EQ(blinker_of_signals(4), Blinker::Hazard);
-}
-
 // intersection_left: SUMO's left blinker comes on at the first step the front is within 7 s x 13.89
 // m/s (97.2 m) of the end of in_S_1, stays on through junction C and goes off on out_W.
 TEST(SumoDriven, LeftTurnBlinkerFromSevenSecondsBeforeTheApproachLaneEnd) {
