@@ -1,3 +1,4 @@
+// The behaviour stage of a step; see behavior_stage.hpp.
 #include "step/behavior_stage.hpp"
 
 #include <algorithm>
@@ -7,6 +8,64 @@ namespace signalsim {
 namespace {
 
 constexpr double kPathBackward = 5.0;  // [m] behind base_link: the behaviour modules' path start
+
+// The common signal input of a module on `seg`: the module path, the shift measured on the ego's own
+// segment, the lane's half widths and the yaw relative to the lane (the plan's: SUMO follows it
+// exactly, see planned_offset).
+BehaviorSignalInput signal_input(const LateralSegment& seg, const BehaviorStage::Observation& o,
+                                 const ModulePath& path) {
+  BehaviorSignalInput in;
+  in.path_front = path.front;
+  in.path_back = path.back;
+  in.current_shift_length = o.segment == &seg ? o.lateral_offset : 0.0;
+  in.route_start = 0.0;
+  in.lane.left_half_width = seg.left_half_width;
+  in.lane.right_half_width = seg.right_half_width;
+  if (o.segment == &seg) in.ego_relative_yaw = std::atan(seg.plan.heading_at(o.ego.s_base));
+  return in;
+}
+
+// Avoidance: every shift line of its plan (ids from the segment's first), and the shift planned at the ego.
+void add_avoidance(const LateralSegment& seg, double planned_shift_at_ego, const BehaviorSignalInput& signal,
+                   ModuleInputs& in) {
+  for (std::size_t k = 0; k < seg.plan.lines().size(); ++k) {
+    const ShiftLine& line = seg.plan.lines()[k];
+    in.avoidance.shift_lines.push_back({seg.first_line_id + k, line.s_start, line.s_end, line.shift_start, line.shift_end});
+  }
+  in.avoidance.planned_shift_at_ego = planned_shift_at_ego;
+  in.avoidance.signal = signal;
+  in.requests.avoidance = &in.avoidance;
+}
+
+// Pull out: its shift line, whether the ego drives forward and has departed ([SP]).
+void add_pull_out(const LateralSegment& seg, const BehaviorStage::Observation& o, const BehaviorSignalInput& signal,
+                  ModuleInputs& in) {
+  const ShiftLine& line = seg.plan.lines().front();
+  PullOutSignal::Input& pull_out = in.pull_out;
+  pull_out.pull_out_start = line.s_start;
+  pull_out.pull_out_end = line.s_end;
+  pull_out.shift_at_start = line.shift_start;
+  pull_out.shift_at_end = line.shift_end;
+  pull_out.driving_forward = !o.backing;
+  pull_out.override_ego_stopped_check = !o.departed;  // [SP]: not yet departed
+  pull_out.closest_lanelet = seg.route_index;
+  pull_out.signal = signal;
+  in.requests.pull_out = &pull_out;
+}
+
+// Pull over: its shift line, the path decided once the goal is within the module path.
+void add_pull_over(const LateralSegment& seg, const BehaviorSignalInput& signal, ModuleInputs& in) {
+  const ShiftLine& line = seg.plan.lines().front();
+  PullOverSignal::Input& pull_over = in.pull_over;
+  pull_over.path_decided = true;
+  pull_over.pull_over_start = line.s_start;
+  pull_over.pull_over_end = line.s_end;
+  pull_over.shift_at_start = line.shift_start;
+  pull_over.shift_at_end = line.shift_end;
+  pull_over.closest_lanelet = seg.route_index;
+  pull_over.signal = signal;
+  in.requests.pull_over = &pull_over;
+}
 
 }  // namespace
 
@@ -48,128 +107,97 @@ const LateralSegment* BehaviorStage::waiting_lane_change(double s_base) const {
   return &plan_.segments[i];
 }
 
+// One step: the inputs of the four modules (each from its segment of the plan, when the module runs:
+// see behavior_stage.hpp), merged in Autoware's order; then the current lane change moves on.
 BehaviorStage::Result BehaviorStage::step(const Observation& o) {
   const EgoOnRoute& ego = o.ego;
-  const double path_back = std::min(config_.route_length, ego.s_base + config_.path_forward);
-  const auto module_signal = [&](const LateralSegment& seg) {
-    BehaviorSignalInput in;
-    in.path_front = std::max(0.0, ego.s_base - kPathBackward);
-    in.path_back = path_back;
-    in.current_shift_length = o.segment == &seg ? o.lateral_offset : 0.0;
-    in.route_start = 0.0;
-    in.lane.left_half_width = seg.left_half_width;
-    in.lane.right_half_width = seg.right_half_width;
-    // The yaw relative to the lane: the plan's (SUMO follows it exactly, see planned_offset).
-    if (o.segment == &seg) in.ego_relative_yaw = std::atan(seg.plan.heading_at(ego.s_base));
-    return in;
-  };
-
-  LaneChangeSignal::Input lane_change;
-  AvoidanceSignal::Input avoidance;
-  PullOutSignal::Input pull_out;
-  PullOverSignal::Input pull_over;
-  BehaviorRequests requests;
-  requests.now = o.now;
-  LaneChangeExecution* current_lc = nullptr;
-  const LateralSegment* current_lc_segment = nullptr;
+  const ModulePath path{std::max(0.0, ego.s_base - kPathBackward),
+                        std::min(config_.route_length, ego.s_base + config_.path_forward)};
+  ModuleInputs in;
+  in.requests.now = o.now;
+  const std::size_t lc = current_lane_change(ego.s_base);
   LaneChangeExecution::Step lc_step;
-
-  for (std::size_t i = 0; i < plan_.segments.size(); ++i) {
-    const LateralSegment& seg = plan_.segments[i];
-    const bool finished = executions_[i].phase() == LaneChangePhase::Done || executions_[i].phase() == LaneChangePhase::Missed;
-    if (seg.kind == LateralKind::LaneChange && !current_lc && !finished &&
-        seg.lane_change.earliest_start <= ego.s_base + config_.path_forward) {
-      current_lc = &executions_[i];
-      current_lc_segment = &seg;
-      lc_step.now = o.now;
-      lc_step.s_base = ego.s_base;
-      lc_step.speed = ego.speed;
-      // The prepare segment is driven without braking (the ego does not brake for the lane change
-      // once approved; braking for the hold point ends with the approval), and below
-      // min_lane_changing_velocity at max_longitudinal_acc (the floor of the prepare time is the time
-      // to reach that speed, docs/behaviour.md §T8.2).
-      lc_step.accel = ego.speed < params_.min_lane_changing_velocity ? params_.max_longitudinal_acc
-                                                                    : std::max(o.accel, 0.0);
-      lc_step.max_speed = config_.max_speed;
-      lc_step.vehicle_length = config_.vehicle_length;
-      lc_step.base_link_to_front = params_.base_link_to_front;
-      lc_step.prepare_duration = modules_.lane_change.actual_prepare_duration(o.now, ego.speed, params_);
-      const ShiftLine line = current_lc->line(lc_step);
-      const bool running = current_lc->phase() == LaneChangePhase::Running;
-      lane_change.phase = running ? LaneChangeSignal::Phase::Running : LaneChangeSignal::Phase::WaitingApproval;
-      lane_change.direction = line.relative_shift() > 0 ? TurnIndicator::EnableLeft : TurnIndicator::EnableRight;
-      // Activation (the module's blinker) is measured to the earliest start of the lateral motion.
-      lane_change.lane_changing_start = running ? line.s_start : seg.lane_change.earliest_start;
-      lane_change.lane_changing_end = line.s_end;
-      lane_change.boundary_crossing = line.s_at_offset(seg.boundary);
-      lane_change.previous_path_front = std::max(0.0, ego.s_base - kPathBackward);
-      lane_change.previous_path_end = path_back;
-      // [LC] current_dist_buffer.min: the distance the remaining lane change needs (its length).
-      lane_change.current_dist_buffer_min = seg.lane_change.length;
-      requests.lane_change = &lane_change;
-    }
-    if (seg.kind == LateralKind::Avoidance && !requests.avoidance && seg.plan.lines().back().s_end >= ego.s_base &&
-        seg.plan.lines().back().s_end <= path_back) {
-      for (std::size_t k = 0; k < seg.plan.lines().size(); ++k) {
-        const ShiftLine& line = seg.plan.lines()[k];
-        avoidance.shift_lines.push_back({seg.first_line_id + k, line.s_start, line.s_end, line.shift_start, line.shift_end});
-      }
-      avoidance.planned_shift_at_ego = o.segment == &seg ? planned_offset(seg, ego.s_base, o.backing) : 0.0;
-      avoidance.signal = module_signal(seg);
-      requests.avoidance = &avoidance;
-    }
-    if (seg.kind == LateralKind::PullOut && o.segment == &seg && ego.s_base <= seg.plan.lines().back().s_end) {
-      const ShiftLine& line = seg.plan.lines().front();
-      pull_out.pull_out_start = line.s_start;
-      pull_out.pull_out_end = line.s_end;
-      pull_out.shift_at_start = line.shift_start;
-      pull_out.shift_at_end = line.shift_end;
-      pull_out.driving_forward = !o.backing;
-      pull_out.override_ego_stopped_check = !o.departed;  // [SP]: not yet departed
-      pull_out.closest_lanelet = seg.route_index;
-      pull_out.signal = module_signal(seg);
-      requests.pull_out = &pull_out;
-    }
-    if (seg.kind == LateralKind::PullOver && seg.goal_s <= path_back) {
-      const ShiftLine& line = seg.plan.lines().front();
-      pull_over.path_decided = true;
-      pull_over.pull_over_start = line.s_start;
-      pull_over.pull_over_end = line.s_end;
-      pull_over.shift_at_start = line.shift_start;
-      pull_over.shift_at_end = line.shift_end;
-      pull_over.closest_lanelet = seg.route_index;
-      pull_over.signal = module_signal(seg);
-      requests.pull_over = &pull_over;
-    }
+  if (lc < plan_.segments.size()) {
+    lc_step = lane_change_step(o);
+    add_lane_change(plan_.segments[lc], executions_[lc], lc_step, path, in);
   }
-
+  for (const LateralSegment& seg : plan_.segments) {
+    if (seg.kind == LateralKind::Avoidance && !in.requests.avoidance && seg.plan.lines().back().s_end >= ego.s_base &&
+        seg.plan.lines().back().s_end <= path.back)
+      add_avoidance(seg, o.segment == &seg ? planned_offset(seg, ego.s_base, o.backing) : 0.0,
+                    signal_input(seg, o, path), in);
+    if (seg.kind == LateralKind::PullOut && o.segment == &seg && ego.s_base <= seg.plan.lines().back().s_end)
+      add_pull_out(seg, o, signal_input(seg, o, path), in);
+    if (seg.kind == LateralKind::PullOver && seg.goal_s <= path.back) add_pull_over(seg, signal_input(seg, o, path), in);
+  }
   Result result;
-  result.behavior = merge_behavior_requests(modules_, requests, ego, params_);
-
-  if (current_lc) {
-    // The module's state after this step drives the phases: its blinker timestamp shortens the
-    // prepare segment (docs/behaviour.md §T8.2 calc_actual_prepare_duration).
-    lc_step.module_active = modules_.lane_change.active();
-    lc_step.blinker_on_since = modules_.lane_change.blinker_on_since();
-    lc_step.prepare_duration = modules_.lane_change.actual_prepare_duration(o.now, ego.speed, params_);
-    if (lc_step.module_active && current_lc->phase() != LaneChangePhase::Running)
-      lc_step.target_lane = o.target_lane;
-    const LaneChangePhase before = current_lc->phase();
-    if (current_lc->update(lc_step)) {
-      // One transition per phase passed (pending -> waiting_approval -> running may be one step).
-      LaneChangePhase from = before;
-      const LaneChangePhase to = current_lc->phase();
-      if (from == LaneChangePhase::Pending && to != LaneChangePhase::WaitingApproval) {
-        result.transitions.push_back({current_lc_segment->edge, from, LaneChangePhase::WaitingApproval});
-        from = LaneChangePhase::WaitingApproval;
-      }
-      result.transitions.push_back({current_lc_segment->edge, from, to});
-      // Done or given up: the next lane change starts afresh.
-      if (to == LaneChangePhase::Done || to == LaneChangePhase::Missed) modules_.lane_change.reset();
-    }
-    result.hold_distance = current_lc->distance_to_hold_point(ego.s_base);
-  }
+  result.behavior = merge_behavior_requests(modules_, in.requests, ego, params_);
+  if (lc < plan_.segments.size()) advance_lane_change(lc, lc_step, o, result);
   return result;
+}
+
+// The lane change's step before the modules run: the ego's motion, and the prepare segment driven
+// without braking (the ego does not brake for the lane change once approved; braking for the hold
+// point ends with the approval), and below min_lane_changing_velocity at max_longitudinal_acc (the
+// floor of the prepare time is the time to reach that speed, docs/behaviour.md §T8.2).
+LaneChangeExecution::Step BehaviorStage::lane_change_step(const Observation& o) const {
+  LaneChangeExecution::Step step;
+  step.now = o.now;
+  step.s_base = o.ego.s_base;
+  step.speed = o.ego.speed;
+  step.accel = o.ego.speed < params_.min_lane_changing_velocity ? params_.max_longitudinal_acc : std::max(o.accel, 0.0);
+  step.max_speed = config_.max_speed;
+  step.vehicle_length = config_.vehicle_length;
+  step.base_link_to_front = params_.base_link_to_front;
+  step.prepare_duration = modules_.lane_change.actual_prepare_duration(o.now, o.ego.speed, params_);
+  return step;
+}
+
+// The current lane change's module input: its line as the execution plans it this step.
+void BehaviorStage::add_lane_change(const LateralSegment& seg, LaneChangeExecution& execution,
+                                   const LaneChangeExecution::Step& step, const ModulePath& path,
+                                   ModuleInputs& in) const {
+  const ShiftLine line = execution.line(step);
+  const bool running = execution.phase() == LaneChangePhase::Running;
+  LaneChangeSignal::Input& lane_change = in.lane_change;
+  lane_change.phase = running ? LaneChangeSignal::Phase::Running : LaneChangeSignal::Phase::WaitingApproval;
+  lane_change.direction = line.relative_shift() > 0 ? TurnIndicator::EnableLeft : TurnIndicator::EnableRight;
+  // Activation (the module's blinker) is measured to the earliest start of the lateral motion.
+  lane_change.lane_changing_start = running ? line.s_start : seg.lane_change.earliest_start;
+  lane_change.lane_changing_end = line.s_end;
+  lane_change.boundary_crossing = line.s_at_offset(seg.boundary);
+  lane_change.previous_path_front = path.front;
+  lane_change.previous_path_end = path.back;
+  // [LC] current_dist_buffer.min: the distance the remaining lane change needs (its length).
+  lane_change.current_dist_buffer_min = seg.lane_change.length;
+  in.requests.lane_change = &lane_change;
+}
+
+// After the modules ran: the lane change's phases move on. The module's state after this step drives
+// them: its blinker timestamp shortens the prepare segment (docs/behaviour.md §T8.2
+// calc_actual_prepare_duration); the target lane's traffic is read only while it waits for approval.
+void BehaviorStage::advance_lane_change(std::size_t index, LaneChangeExecution::Step step, const Observation& o,
+                                        Result& result) {
+  LaneChangeExecution& execution = executions_[index];
+  const LateralSegment& seg = plan_.segments[index];
+  step.module_active = modules_.lane_change.active();
+  step.blinker_on_since = modules_.lane_change.blinker_on_since();
+  step.prepare_duration = modules_.lane_change.actual_prepare_duration(o.now, o.ego.speed, params_);
+  if (step.module_active && execution.phase() != LaneChangePhase::Running) step.target_lane = o.target_lane;
+  const LaneChangePhase before = execution.phase();
+  if (execution.update(step)) {
+    // One transition per phase passed (pending -> waiting_approval -> running may be one step).
+    LaneChangePhase from = before;
+    const LaneChangePhase to = execution.phase();
+    if (from == LaneChangePhase::Pending && to != LaneChangePhase::WaitingApproval) {
+      result.transitions.push_back({seg.edge, from, LaneChangePhase::WaitingApproval});
+      from = LaneChangePhase::WaitingApproval;
+    }
+    result.transitions.push_back({seg.edge, from, to});
+    // Done or given up: the next lane change starts afresh.
+    if (to == LaneChangePhase::Done || to == LaneChangePhase::Missed) modules_.lane_change.reset();
+  }
+  result.hold_distance = execution.distance_to_hold_point(o.ego.s_base);
 }
 
 std::vector<LaneChangeRecord> BehaviorStage::lane_change_records() const {

@@ -36,6 +36,24 @@ struct BehaviorStageConfig {
   LaneChangeGaps gaps;           ///< the lane-change approval's target-lane margins
 };
 
+/// The behaviour modules' path of one step [m route s]: from 5 m behind base_link to
+/// forward_path_length ahead of it (at most the route's end).
+struct ModulePath {
+  double front = 0.0;
+  double back = 0.0;
+};
+
+/// The inputs of the four behaviour modules in one step, and the requests pointing at them.
+struct ModuleInputs {
+  ModuleInputs() = default;
+  ModuleInputs(const ModuleInputs&) = delete;  // requests point into this object
+  LaneChangeSignal::Input lane_change;
+  AvoidanceSignal::Input avoidance;
+  PullOutSignal::Input pull_out;
+  PullOverSignal::Input pull_over;
+  BehaviorRequests requests;
+};
+
 class BehaviorStage {
  public:
   BehaviorStage(LateralPlan plan, const BehaviorSignalParameters& params, const BehaviorStageConfig& config);
@@ -84,6 +102,10 @@ class BehaviorStage {
   /// The index of the lane change a step with base_link at `s_base` runs (the first not done whose
   /// earliest start lies within the module path), or the number of segments.
   std::size_t current_lane_change(double s_base) const;
+  LaneChangeExecution::Step lane_change_step(const Observation& o) const;
+  void add_lane_change(const LateralSegment& seg, LaneChangeExecution& execution, const LaneChangeExecution::Step& step,
+                       const ModulePath& path, ModuleInputs& in) const;
+  void advance_lane_change(std::size_t index, LaneChangeExecution::Step step, const Observation& o, Result& result);
 
   LateralPlan plan_;
   BehaviorSignalParameters params_;

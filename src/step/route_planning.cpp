@@ -1,3 +1,4 @@
+// A scenario's route and lateral plan (lane changes, avoidance, pull out, pull over); see route_planning.hpp.
 #include "step/route_planning.hpp"
 
 #include <algorithm>
@@ -63,125 +64,153 @@ namespace {
   throw InputError(scenario.path, 0, message);
 }
 
+// The lane the ego enters route edge `i` on: ego.depart_lane on the first edge (one it may drive),
+// later the previous connection's to-lane.
+int entry_lane(const Scenario& scenario, const sumo::RoutePlan& plan, const sumo::NetEdge& edge, std::size_t i) {
+  const int planned = plan.lane_per_edge[i];
+  int entry = i < plan.entry_lane_per_edge.size() ? plan.entry_lane_per_edge[i] : planned;
+  if (i != 0) return entry;
+  if (scenario.ego.depart_lane >= 0) entry = scenario.ego.depart_lane;
+  if (entry >= static_cast<int>(edge.lanes.size()) ||
+      !sumo::lane_permits(edge.lanes[static_cast<std::size_t>(entry)], scenario.ego.vclass)) {
+    std::ostringstream out_msg;
+    out_msg << "ego.depart_lane: edge '" << edge.id << "' has no lane " << entry << " the ego may drive ("
+            << edge.lanes.size() << " lanes)";
+    fail(scenario, out_msg.str());
+  }
+  return entry;
+}
+
+// The lane change the scenario asks for on route edge `i` (no `edge`: the first edge), or nullptr.
+const LaneChangeManeuver* requested_lane_change(const Scenario& scenario, std::size_t i) {
+  const std::string& edge = scenario.ego.route[i];
+  const LaneChangeManeuver* requested = nullptr;
+  for (const LaneChangeManeuver& m : scenario.lane_changes)
+    if (m.edge.empty() ? i == 0 : m.edge == edge) {
+      if (requested) fail(scenario, "maneuvers: two lane_change maneuvers on the first edge '" + edge + "'");
+      requested = &m;
+    }
+  return requested;
+}
+
+// A lane change never crosses a lane the ego may not use (the lane plan avoids them; the first edge's
+// change from ego.depart_lane is the scenario's).
+void check_crossed_lanes(const Scenario& scenario, const sumo::NetEdge& edge, int entry, int planned,
+                         const Lanelet& lanelet) {
+  for (int k = std::min(entry, planned) + 1; k < std::max(entry, planned); ++k)
+    if (!sumo::lane_permits(edge.lanes[static_cast<std::size_t>(k)], scenario.ego.vclass))
+      fail(scenario, "ego.depart_lane: the lane change from lane " + std::to_string(entry) + " to the planned lane " +
+                         lanelet.lane_id + " crosses lane '" + edge.lanes[static_cast<std::size_t>(k)].id + "', which " +
+                         (scenario.ego.vclass == "passenger" ? std::string("a passenger car")
+                                                            : "vClass '" + scenario.ego.vclass + "'") +
+                         " may not use");
+}
+
+// A lane change's `at` and `length` are drivable: sharp no more than the ego can drive at the edge's
+// speed, not behind base_link's earliest start, ended while the front is still on the edge (no
+// lateral command on internal lanes).
+void check_lane_change(const Scenario& scenario, const LaneChangeManeuver& m, const sumo::NetEdge& edge,
+                       const Lanelet& lanelet, double shift, double speed, double earliest, bool first) {
+  const double needed = sumo::min_lane_change_length(shift, speed, lane_change_ego(scenario));
+  std::ostringstream out_msg;
+  if (m.length < needed - 1e-9) {
+    out_msg << std::fixed << std::setprecision(2) << "maneuvers: lane_change on '" << edge.id << "': a " << shift
+            << " m shift in " << m.length << " m is sharper than the ego can drive at " << speed
+            << " m/s; it needs at least " << needed << " m";
+    fail(scenario, out_msg.str());
+  }
+  if (m.at < earliest - 1e-9) {
+    out_msg << "maneuvers: lane_change.at " << m.at << " m is behind base_link's "
+            << (first ? "depart position " : "entry ") << earliest << " m";
+    fail(scenario, out_msg.str());
+  }
+  if (m.at + m.length + scenario.ego.base_link_to_front > lanelet.s_end()) {
+    out_msg << "maneuvers: the lane change on '" << edge.id << "' (base_link " << m.at << " + " << m.length
+            << " m) must end while the front bumper is still on the edge (" << lanelet.length << " m)";
+    fail(scenario, out_msg.str());
+  }
+}
+
+// The lane change on route edge `i`, when the ego enters it on another lane than the planned one: one
+// shift line from the entry lane's offset to 0 on that edge.
+std::optional<LateralSegment> lane_change_on_edge(const Scenario& scenario, const sumo::RoutePlan& plan,
+                                                  const sumo::NetIndex& net, std::size_t i,
+                                                  const BehaviorSignalParameters& module_params) {
+  const auto index = plan.map.find_edge(scenario.ego.route[i]);
+  const sumo::NetEdge* edge = net.edge(scenario.ego.route[i]);
+  if (!index || edge == nullptr) return std::nullopt;
+  const Lanelet& lanelet = plan.map.at(*index);
+  const int planned = plan.lane_per_edge[i];
+  const int entry = entry_lane(scenario, plan, *edge, i);
+  const bool first = i == 0;
+  const LaneChangeManeuver* requested = requested_lane_change(scenario, i);
+  if (entry == planned) {
+    if (requested)
+      fail(scenario, first && requested->edge.empty()
+                         ? "maneuvers: lane_change: the ego departs on the planned lane " + lanelet.lane_id +
+                               " of the first edge; set ego.depart_lane to another lane"
+                         : "maneuvers: lane_change on '" + scenario.ego.route[i] + "': the ego already enters it on lane " +
+                               lanelet.lane_id + " (to_lane)");
+    return std::nullopt;
+  }
+  check_crossed_lanes(scenario, *edge, entry, planned, lanelet);
+  // The entry lane's centre seen from the planned lane's centre (left positive), with the room, lane
+  // widths and speed the lane plan chose this edge by (route/lane_change_room).
+  const sumo::EdgeRoom& room = plan.rooms.at(i);
+  const double shift = sumo::lane_shift(room.widths, entry, planned);
+  const double offset = (entry > planned ? 1 : -1) * shift;
+  const double half_width = 0.5 * edge->lanes[static_cast<std::size_t>(planned)].width;
+  // Where base_link may start: its depart position on the first edge, the edge's start later.
+  const double b2f = scenario.ego.base_link_to_front;
+  const double earliest = first ? scenario.ego.depart_pos - b2f : lanelet.s_start;
+  LaneChangeManeuver m;
+  if (requested) {
+    m = *requested;
+    if (!requested->edge.empty()) m.at = lanelet.s_start + requested->at;  // `at` on the edge
+  } else {
+    // Default (sumo::default_lane_change): a lead after `earliest`, then the lateral motion, both
+    // shrunk to fit a short edge (the shift ends with the front still on the edge).
+    const sumo::LaneChangeTimingDefault timing = sumo::default_lane_change(room.room);
+    m.at = earliest + timing.lead;
+    m.length = timing.length;
+    if (!sumo::lane_change_fits(room.room, shift, room.speed, lane_change_ego(scenario)))
+      fail(scenario, "ego.route: " + no_room_message(plan));
+  }
+  check_lane_change(scenario, m, *edge, lanelet, shift, room.speed, earliest, first);
+  LateralSegment seg;
+  seg.kind = LateralKind::LaneChange;
+  seg.edge = lanelet.edge_id;
+  seg.reference_lane = lanelet.lane_id;
+  seg.route_index = *index;
+  seg.boundary = (entry > planned ? 1 : -1) * half_width;
+  seg.left_half_width = seg.right_half_width = half_width;
+  seg.first_line_id = 100 + i;
+  seg.plan = ShiftPlan({ShiftLine{m.at, m.at + m.length, offset, 0.0}});  // nominal: started at `at`
+  seg.lane_change.earliest_start = m.at;
+  seg.lane_change.latest_start = lanelet.s_end() - b2f - m.length;
+  seg.lane_change.length = m.length;
+  seg.lane_change.shift_start = offset;
+  seg.lane_change.approval_delay = m.approval_delay;
+  // Hold point margin: the prepare segment from rest, driven at max_longitudinal_acc for the
+  // module's shortest prepare time at standstill (docs/behaviour.md §T8.2).
+  seg.lane_change.hold_margin = LaneChangeExecution::prepare_distance(
+      0.0, module_params.max_longitudinal_acc, scenario.ego.max_speed,
+      LaneChangeSignal::min_prepare_duration_at(0.0, module_params));
+  return seg;
+}
+
 // The lane changes of the route: on every edge the ego enters on another lane than the planned one
-// (the first edge: ego.depart_lane; later edges: the previous connection's to-lane), one shift line
-// from the entry lane's offset to 0 on that edge.
+// (the first edge: ego.depart_lane; later edges: the previous connection's to-lane).
 std::vector<LateralSegment> plan_lane_changes(const Scenario& scenario, const sumo::RoutePlan& plan,
                                               const sumo::NetIndex& net) {
-  std::vector<LateralSegment> out;
-  const double b2f = scenario.ego.base_link_to_front;
   const auto& edges = scenario.ego.route;
-  const BehaviorSignalParameters module_params = behavior_parameters(scenario);
   for (const LaneChangeManeuver& m : scenario.lane_changes)
     if (!m.edge.empty() && std::find(edges.begin(), edges.end(), m.edge) == edges.end())
       fail(scenario, "maneuvers: lane_change: edge '" + m.edge + "' is not on the ego's route");
-  for (std::size_t i = 0; i < edges.size() && i < plan.lane_per_edge.size(); ++i) {
-    const auto index = plan.map.find_edge(edges[i]);
-    const sumo::NetEdge* edge = net.edge(edges[i]);
-    if (!index || edge == nullptr) continue;
-    const Lanelet& lanelet = plan.map.at(*index);
-    const int planned = plan.lane_per_edge[i];
-    int entry = i < plan.entry_lane_per_edge.size() ? plan.entry_lane_per_edge[i] : planned;
-    const bool first = i == 0;
-    if (first && scenario.ego.depart_lane >= 0) entry = scenario.ego.depart_lane;
-    if (first && (entry >= static_cast<int>(edge->lanes.size()) ||
-                  !sumo::lane_permits(edge->lanes[static_cast<std::size_t>(entry)], scenario.ego.vclass))) {
-      std::ostringstream out_msg;
-      out_msg << "ego.depart_lane: edge '" << edge->id << "' has no lane " << entry << " the ego may drive ("
-              << edge->lanes.size() << " lanes)";
-      fail(scenario, out_msg.str());
-    }
-    // The lane change the scenario asks for on this edge (no `edge`: the first edge).
-    const LaneChangeManeuver* requested = nullptr;
-    for (const LaneChangeManeuver& m : scenario.lane_changes)
-      if (m.edge.empty() ? first : m.edge == edges[i]) {
-        if (requested) fail(scenario, "maneuvers: two lane_change maneuvers on the first edge '" + edges[i] + "'");
-        requested = &m;
-      }
-    const bool asked = requested != nullptr;
-    if (entry == planned) {
-      if (asked)
-        fail(scenario, first && requested->edge.empty()
-                           ? "maneuvers: lane_change: the ego departs on the planned lane " + lanelet.lane_id +
-                                 " of the first edge; set ego.depart_lane to another lane"
-                           : "maneuvers: lane_change on '" + edges[i] + "': the ego already enters it on lane " +
-                                 lanelet.lane_id + " (to_lane)");
-      continue;
-    }
-    LateralSegment seg;
-    seg.kind = LateralKind::LaneChange;
-    seg.edge = lanelet.edge_id;
-    seg.reference_lane = lanelet.lane_id;
-    seg.route_index = *index;
-    // A lane change never crosses a lane the ego may not use (the lane plan avoids them; the first
-    // edge's change from ego.depart_lane is the scenario's).
-    for (int k = std::min(entry, planned) + 1; k < std::max(entry, planned); ++k)
-      if (!sumo::lane_permits(edge->lanes[static_cast<std::size_t>(k)], scenario.ego.vclass))
-        fail(scenario, "ego.depart_lane: the lane change from lane " + std::to_string(entry) + " to the planned lane " +
-                           lanelet.lane_id + " crosses lane '" + edge->lanes[static_cast<std::size_t>(k)].id +
-                           "', which " + (scenario.ego.vclass == "passenger" ? std::string("a passenger car")
-                                                                               : "vClass '" + scenario.ego.vclass + "'") +
-                           " may not use");
-    // The entry lane's centre seen from the planned lane's centre (left positive).
-    const auto width = [&](int k) { return edge->lanes[static_cast<std::size_t>(k)].width; };
-    const int step = entry > planned ? 1 : -1;
-    // The room, lane widths and speed the lane plan chose this edge by (sumo/lane_change_room).
-    const sumo::EdgeRoom& room = plan.rooms.at(i);
-    const double shift = sumo::lane_shift(room.widths, entry, planned);
-    const double offset = step * shift;
-    seg.boundary = step * 0.5 * width(planned);
-    seg.left_half_width = seg.right_half_width = 0.5 * width(planned);
-    // Where base_link may start: its depart position on the first edge, the edge's start later.
-    const double earliest = first ? scenario.ego.depart_pos - b2f : lanelet.s_start;
-    const sumo::LaneChangeEgo ego = lane_change_ego(scenario);
-    const double needed = sumo::min_lane_change_length(shift, room.speed, ego);
-    LaneChangeManeuver m;
-    if (asked) {
-      m = *requested;
-      if (!requested->edge.empty()) m.at = lanelet.s_start + requested->at;  // `at` on the edge
-    } else {
-      // Default (sumo::default_lane_change): a lead after `earliest`, then the lateral motion, both
-      // shrunk to fit a short edge (the shift ends with the front still on the edge).
-      const sumo::LaneChangeTimingDefault timing = sumo::default_lane_change(room.room);
-      m.at = earliest + timing.lead;
-      m.length = timing.length;
-      if (!sumo::lane_change_fits(room.room, shift, room.speed, ego)) fail(scenario, "ego.route: " + no_room_message(plan));
-    }
-    // Physically sensible: a shift this long is one the ego can drive at its speed there.
-    if (m.length < needed - 1e-9) {
-      std::ostringstream out_msg;
-      out_msg << std::fixed << std::setprecision(2) << "maneuvers: lane_change on '" << edge->id << "': a " << shift
-              << " m shift in " << m.length << " m is sharper than the ego can drive at " << room.speed
-              << " m/s; it needs at least " << needed << " m";
-      fail(scenario, out_msg.str());
-    }
-    if (m.at < earliest - 1e-9) {
-      std::ostringstream out_msg;
-      out_msg << "maneuvers: lane_change.at " << m.at << " m is behind base_link's " << (first ? "depart position " : "entry ")
-              << earliest << " m";
-      fail(scenario, out_msg.str());
-    }
-    // No lateral command on internal lanes: the shift ends while the front is still on the edge.
-    if (m.at + m.length + b2f > lanelet.s_end()) {
-      std::ostringstream out_msg;
-      out_msg << "maneuvers: the lane change on '" << edge->id << "' (base_link " << m.at << " + " << m.length
-              << " m) must end while the front bumper is still on the edge (" << lanelet.length << " m)";
-      fail(scenario, out_msg.str());
-    }
-    seg.first_line_id = 100 + i;
-    seg.plan = ShiftPlan({ShiftLine{m.at, m.at + m.length, offset, 0.0}});  // nominal: started at `at`
-    seg.lane_change.earliest_start = m.at;
-    seg.lane_change.latest_start = lanelet.s_end() - b2f - m.length;
-    seg.lane_change.length = m.length;
-    seg.lane_change.shift_start = offset;
-    seg.lane_change.approval_delay = m.approval_delay;
-    // Hold point margin: the prepare segment from rest, driven at max_longitudinal_acc for the
-    // module's shortest prepare time at standstill (docs/behaviour.md §T8.2).
-    seg.lane_change.hold_margin = LaneChangeExecution::prepare_distance(
-        0.0, module_params.max_longitudinal_acc, scenario.ego.max_speed,
-        LaneChangeSignal::min_prepare_duration_at(0.0, module_params));
-    out.push_back(std::move(seg));
-  }
+  const BehaviorSignalParameters module_params = behavior_parameters(scenario);
+  std::vector<LateralSegment> out;
+  for (std::size_t i = 0; i < edges.size() && i < plan.lane_per_edge.size(); ++i)
+    if (auto seg = lane_change_on_edge(scenario, plan, net, i, module_params)) out.push_back(std::move(*seg));
   return out;
 }
 
