@@ -10,6 +10,7 @@
 #include "core/number_text.hpp"
 #include "report/metrics.hpp"
 #include "report/run_files.hpp"
+#include "report/summary_sections.hpp"
 #include "scenario/take_over.hpp"
 #include "session/sumo_session.hpp"
 
@@ -87,6 +88,33 @@ nlohmann::ordered_json sumo_json(const Scenario& scenario, const RunSumoInfo& in
                        {"emergency_braking", info.log_counts.emergency_braking},
                        {"collisions", info.log_counts.collisions}};
   return out;
+}
+
+// The ego as it ran: the scenario's vehicle with what SUMO departed (id, type, width, departure).
+nlohmann::ordered_json ego_json(const Scenario& scenario, const sumo::EgoVehicle& departed) {
+  nlohmann::ordered_json ego;
+  ego["id"] = departed.id.empty() ? std::string(sumo::kDefaultEgoId) : departed.id;
+  ego["taken_over"] = !scenario.ego.id.empty();
+  ego["type"] = departed.type;
+  ego["length"] = as_written(scenario.ego.length, 3);
+  ego["width"] = departed.width;
+  ego["base_link_to_front"] = as_written(scenario.ego.base_link_to_front, 3);
+  ego["base_link_to_rear"] = as_written(scenario.ego.length - scenario.ego.base_link_to_front, 3);
+  if (!scenario.ego.vehicle_info.empty()) {
+    ego["vehicle_info"] = scenario.ego.vehicle_info;
+    ego["vehicle_info_unused_keys"] = scenario.ego.vehicle_info_unused;
+  }
+  ego["max_speed"] = scenario.ego.max_speed;
+  ego["accel"] = scenario.ego.accel;
+  ego["decel"] = scenario.ego.decel;
+  ego["type_decel"] = departed.decel;
+  ego["emergency_decel"] = scenario.ego.emergency_decel;
+  ego["depart_time"] = as_written(departed.depart_time, 3);
+  ego["depart_lane"] = departed.depart_lane;
+  ego["depart_pos"] = as_written(departed.depart_pos, 3);
+  ego["depart_speed"] = as_written(departed.depart_speed, 3);
+  ego["source"] = ego_sources(scenario, departed.type);
+  return ego;
 }
 
 }  // namespace
@@ -200,145 +228,16 @@ void write_run_outputs(const std::string& dir, const Scenario& scenario, const s
   summary["seed"] = scenario.seed;
   summary["step_length"] = scenario.step_length;
   summary["duration"] = scenario.duration;
-  const sumo::EgoVehicle& departed = record.sumo.ego;
-  nlohmann::ordered_json ego;
-  ego["id"] = departed.id.empty() ? std::string(sumo::kDefaultEgoId) : departed.id;
-  ego["taken_over"] = !scenario.ego.id.empty();
-  ego["type"] = departed.type;
-  ego["length"] = as_written(scenario.ego.length, 3);
-  ego["width"] = departed.width;
-  ego["base_link_to_front"] = as_written(scenario.ego.base_link_to_front, 3);
-  ego["base_link_to_rear"] = as_written(scenario.ego.length - scenario.ego.base_link_to_front, 3);
-  if (!scenario.ego.vehicle_info.empty()) {
-    ego["vehicle_info"] = scenario.ego.vehicle_info;
-    ego["vehicle_info_unused_keys"] = scenario.ego.vehicle_info_unused;
-  }
-  ego["max_speed"] = scenario.ego.max_speed;
-  ego["accel"] = scenario.ego.accel;
-  ego["decel"] = scenario.ego.decel;
-  ego["type_decel"] = departed.decel;
-  ego["emergency_decel"] = scenario.ego.emergency_decel;
-  ego["depart_time"] = as_written(departed.depart_time, 3);
-  ego["depart_lane"] = departed.depart_lane;
-  ego["depart_pos"] = as_written(departed.depart_pos, 3);
-  ego["depart_speed"] = as_written(departed.depart_speed, 3);
-  ego["source"] = ego_sources(scenario, departed.type);
-  summary["ego"] = ego;
+  summary["ego"] = ego_json(scenario, record.sumo.ego);
   summary["route"] = {{"edges", scenario.ego.route},
                       {"lanelets", plan.map.size()},
                       {"length", as_written(plan.map.length(), 3)},
                       {"lane_changes", plan.lane_changes}};
-  nlohmann::ordered_json counts;
-  counts["steps"] = record.rows.size();
-  counts["simulated_time"] = record.rows.empty() ? 0.0 : as_written(record.rows.back().time, 3);
-  counts["arrived"] = record.arrived;
-  counts["collisions"] = record.collisions;
-  counts["off_route_steps"] = record.off_route_steps;
-  int off_plan_steps = 0;
-  for (const OffPlanStretch& o : record.off_plan) off_plan_steps += o.steps;
-  counts["off_plan_steps"] = off_plan_steps;
-  std::size_t blinker_events = 0, light_events = 0;
-  for (const TimelineEvent& e : record.events) {
-    blinker_events += e.kind == "blinker";
-    light_events += e.kind == "light";
-  }
-  counts["blinker_events"] = blinker_events;
-  counts["light_events"] = light_events;
-  std::size_t left = 0, right = 0, hazard = 0, mismatches = 0;
-  for (const TimelineRow& r : record.rows) {
-    left += r.blinker == Blinker::Left;
-    right += r.blinker == Blinker::Right;
-    hazard += r.blinker == Blinker::Hazard;
-    if (r.sumo_signals >= 0) {
-      mismatches += (r.sumo_signals & sumo::kBlinkerMask) != signal_mask(r.blinker);
-    }
-  }
-  counts["steps_left"] = left;
-  counts["steps_right"] = right;
-  counts["steps_hazard"] = hazard;
-  counts["sumo_signal_mismatches"] = mismatches;
-  summary["counts"] = counts;
-  // Why the ego did not arrive (step/stuck_watch), null when it did.
-  nlohmann::ordered_json not_arrived = nullptr;
-  if (const auto& n = record.not_arrived) {
-    nlohmann::ordered_json leader = nullptr;
-    if (n->leader) leader = {{"id", n->leader->id}, {"gap", as_written(n->leader->gap, 3)}};
-    not_arrived = {{"reason", n->reason},
-                   {"detail", n->detail},
-                   {"time", as_written(n->time, 3)},
-                   {"s_front", as_written(n->s_front, 3)},
-                   {"edge", n->edge},
-                   {"lane", n->lane},
-                   {"at_rest_for", as_written(n->at_rest_for, 3)},
-                   {"held_by", n->held_by},
-                   {"leader", leader},
-                   {"junction", n->junction}};
-  }
-  summary["not_arrived"] = not_arrived;
-  {  // where SUMO left the lane plan (its own lane changes; with signalsim, another connection)
-    nlohmann::ordered_json off_plan = nlohmann::ordered_json::array();
-    for (const OffPlanStretch& o : record.off_plan)
-      off_plan.push_back({{"lane", o.lane}, {"planned_lane", o.planned_lane}, {"s_from", as_written(o.s_from, 3)},
-                          {"s_to", as_written(o.s_to, 3)}, {"steps", o.steps}});
-    summary["off_plan"] = off_plan;
-  }
-  nlohmann::ordered_json lights;
-  nlohmann::ordered_json stops = nlohmann::ordered_json::array();
-  for (const LightStop& stop : record.stops)
-    stops.push_back({{"light", stop.tl_id}, {"time", as_written(stop.time, 3)},
-                     {"stop_s", as_written(stop.stop_s, 3)}, {"rest_s", as_written(stop.rest_s, 3)},
-                     {"error", as_written(stop.error, 3)},
-                     {"decision", stop.by_judge ? nlohmann::ordered_json(to_string(stop.decision)) : nullptr},
-                     {"level", stop.by_judge ? nlohmann::ordered_json(to_string(stop.worst_level)) : nullptr},
-                     {"queued_behind", stop.queued_behind.empty() ? nlohmann::ordered_json(nullptr)
-                                                                  : nlohmann::ordered_json(stop.queued_behind)},
-                     {"waiting_at", stop.waiting_at.empty() ? nlohmann::ordered_json(nullptr)
-                                                            : nlohmann::ordered_json(stop.waiting_at)}});
-  lights["stops"] = stops;
-  nlohmann::ordered_json violations = nlohmann::ordered_json::array();
-  for (const RedLightViolation& v : record.red_violations)
-    violations.push_back({{"light", v.tl_id}, {"time", as_written(v.time, 3)},
-                          {"s_front", as_written(v.s_front, 3)}});
-  lights["red_light_violations"] = violations;
-  std::size_t emergency = 0;
-  for (const TimelineEvent& e : record.events) emergency += e.kind == "light" && e.to == "emergency_stop";
-  lights["emergency_stops"] = emergency;
-  if (record.v2i) {  // docs/behaviour.md §L1.7; only with V2I on, so every other summary stays as it was
-    std::size_t stop_steps = 0;
-    const TimelineRow* first = nullptr;
-    for (const TimelineRow& row : record.rows)
-      if (row.v2i_stop) {
-        ++stop_steps;
-        if (!first) first = &row;
-      }
-    nlohmann::ordered_json first_stop = nullptr;
-    if (first)
-      first_stop = {{"light", first->tl_id}, {"time", as_written(first->time, 3)},
-                    {"s_front", as_written(first->s_front, 3)},
-                    {"light_state", first->tl_state ? std::string(1, first->tl_state) : std::string()},
-                    {"time_to_red", first->v2i_time_to_red ? nlohmann::ordered_json(as_written(*first->v2i_time_to_red, 3))
-                                                           : nlohmann::ordered_json(nullptr)},
-                    {"stop_distance", first->stop_distance ? nlohmann::ordered_json(as_written(*first->stop_distance, 3))
-                                                           : nlohmann::ordered_json(nullptr)}};
-    lights["v2i"] = {{"stop_steps", stop_steps}, {"first_stop", first_stop}};
-  }
-  summary["lights"] = lights;
-  // Each lane change as executed (docs/behaviour.md §T8.2): blinker, approval, prepare, lateral motion.
-  nlohmann::ordered_json lane_changes = nlohmann::ordered_json::array();
-  const auto optional_written = [](const std::optional<double>& v) -> nlohmann::ordered_json {
-    return v ? nlohmann::ordered_json(as_written(*v, 3)) : nlohmann::ordered_json(nullptr);
-  };
-  for (const LaneChangeRecord& lc : record.lane_changes)
-    lane_changes.push_back({{"edge", lc.edge},
-                            {"phase", lc.phase},
-                            {"shift", as_written(lc.shift, 3)},
-                            {"blinker_on_time", optional_written(lc.blinker_on_time)},
-                            {"approval_time", optional_written(lc.approval_time)},
-                            {"approval_s_base", optional_written(lc.approval_s_base)},
-                            {"prepare_duration", optional_written(lc.prepare_duration)},
-                            {"lateral_start_s", optional_written(lc.start)},
-                            {"lateral_end_s", optional_written(lc.end)}});
-  summary["lane_changes"] = lane_changes;
+  summary["counts"] = counts_json(record);
+  summary["not_arrived"] = not_arrived_json(record);
+  summary["off_plan"] = off_plan_json(record);
+  summary["lights"] = lights_json(record);
+  summary["lane_changes"] = lane_changes_json(record);
   summary["metrics"] = metrics_json(scenario, plan.map, record);
   nlohmann::ordered_json expectations = nlohmann::ordered_json::array();
   for (const ExpectationResult& r : results)
