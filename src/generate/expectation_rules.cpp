@@ -172,74 +172,56 @@ std::vector<Interval> free_parts(double from, double to, std::vector<Interval> b
   return out;
 }
 
-}  // namespace
-
-double floor_tenth(double v) { return std::floor(v * 10.0 + 1e-6) / 10.0; }
-double ceil_tenth(double v) { return std::ceil(v * 10.0 - 1e-6) / 10.0; }
-
-Derivation derive_expectations(const std::vector<Section>& sections, const RouteFacts& facts,
-                               const SpeedProfile& speed, const RuleParameters& params) {
-  Derivation d;
-  std::vector<Window> windows;
-  windows.reserve(sections.size());
-  for (const Section& s : sections) windows.push_back(initial_window(s, speed, params, facts.depart_front));
-  std::vector<Window> narrowed = windows;
-  for (std::size_t i = 0; i < sections.size(); ++i) {
-    if (sections[i].side != Side::Left && sections[i].side != Side::Right) continue;
-    for (std::size_t j = 0; j < sections.size(); ++j)
-      if (j != i) narrow(sections[i], narrowed[i], sections[j], windows[j], params);
-  }
-
+// The blinker expectation of a left or right section from its narrowed window: through the whole
+// section when the window covers it and it has a junction or lanelet to name, else blinker_on over
+// the window's stretch when that is long enough, else a note saying why nothing is stated.
+void add_blinker_expectation(const Section& s, const Window& w, const SpeedProfile& speed,
+                             const RuleParameters& params, Derivation& d) {
+  if (s.side != Side::Left && s.side != Side::Right) return;
   using Kind = GeneratedExpectation::Kind;
   const double b2f = params.base_link_to_front;
-  for (std::size_t i = 0; i < sections.size(); ++i) {
-    const Section& s = sections[i];
-    const Window& w = narrowed[i];
-    d.windows.push_back({w.possible_from, w.possible_to, w.from, w.to, w.from_why, w.to_why});
-    if (s.side != Side::Left && s.side != Side::Right) continue;
-    GeneratedExpectation e;
-    e.blinker = to_string(s.side);
-    // Through expectations start at least kMargin before the section: an exit whose request starts
-    // at its own start (no marking) gets blinker_on from just after it, since the front exactly at
-    // the start has not reached it (docs/behaviour.md §T5.3 "DIST - b2f >= 0"), and SUMO does hold the ego at
-    // a lane's very end for a step while the link ahead is not yet open.
-    const bool whole = w.to >= s.end + b2f - 1e-9 && w.from <= s.start - kMargin;
-    const bool named = !s.target.junction.empty() || !s.target.lanelet.empty();
-    if (whole && named) {
-      e.kind = s.target.junction.empty() ? Kind::ThroughLanelet : Kind::ThroughJunction;
-      e.target = s.target.junction.empty() ? s.target.lanelet : s.target.junction;
-      e.lead = std::max(0.0, floor_tenth(s.start - w.from - kMargin));
-      e.why = name_of(s) + " (s " + rounded_fixed(s.start, 1) + "-" + rounded_fixed(s.end, 1) + "): " + e.blinker +
-              " from " + rounded_fixed(e.lead, 1) + " m before it (" + rounded_fixed(kMargin, 1) +
-              " m kept): " + w.from_why + "; " + w.to_why;
-    } else if (w.to - w.from >= std::max(kMinBlinkerOn, step_room(speed, w.from, w.to)) + 2 * kMargin) {
-      e.kind = Kind::BlinkerOn;
-      e.from_s = ceil_tenth(w.from + kMargin);
-      e.to_s = floor_tenth(w.to - kMargin);
-      e.why = name_of(s) + " (s " + rounded_fixed(s.start, 1) + "-" + rounded_fixed(s.end, 1) + "): " + e.blinker +
-              " with the front in [" + rounded_fixed(e.from_s, 1) + ", " + rounded_fixed(e.to_s, 1) + "] (" +
-              rounded_fixed(kMargin, 1) + " m kept): " + w.from_why + "; " + w.to_why +
-              (named ? "" : " (no single junction or lanelet to name)");
-    } else {
-      d.notes.push_back(name_of(s) + " (s " + rounded_fixed(s.start, 1) + "-" + rounded_fixed(s.end, 1) +
-                        "): no blinker expectation, the rules leave no stretch where its blinker is certain (" +
-                        w.from_why + "; " + w.to_why + ")");
-      continue;
-    }
-    d.expectations.push_back(std::move(e));
+  GeneratedExpectation e;
+  e.blinker = to_string(s.side);
+  // Through expectations start at least kMargin before the section: an exit whose request starts
+  // at its own start (no marking) gets blinker_on from just after it, since the front exactly at
+  // the start has not reached it (docs/behaviour.md §T5.3 "DIST - b2f >= 0"), and SUMO does hold the ego at
+  // a lane's very end for a step while the link ahead is not yet open.
+  const bool whole = w.to >= s.end + b2f - 1e-9 && w.from <= s.start - kMargin;
+  const bool named = !s.target.junction.empty() || !s.target.lanelet.empty();
+  if (whole && named) {
+    e.kind = s.target.junction.empty() ? Kind::ThroughLanelet : Kind::ThroughJunction;
+    e.target = s.target.junction.empty() ? s.target.lanelet : s.target.junction;
+    e.lead = std::max(0.0, floor_tenth(s.start - w.from - kMargin));
+    e.why = name_of(s) + " (s " + rounded_fixed(s.start, 1) + "-" + rounded_fixed(s.end, 1) + "): " + e.blinker +
+            " from " + rounded_fixed(e.lead, 1) + " m before it (" + rounded_fixed(kMargin, 1) +
+            " m kept): " + w.from_why + "; " + w.to_why;
+  } else if (w.to - w.from >= std::max(kMinBlinkerOn, step_room(speed, w.from, w.to)) + 2 * kMargin) {
+    e.kind = Kind::BlinkerOn;
+    e.from_s = ceil_tenth(w.from + kMargin);
+    e.to_s = floor_tenth(w.to - kMargin);
+    e.why = name_of(s) + " (s " + rounded_fixed(s.start, 1) + "-" + rounded_fixed(s.end, 1) + "): " + e.blinker +
+            " with the front in [" + rounded_fixed(e.from_s, 1) + ", " + rounded_fixed(e.to_s, 1) + "] (" +
+            rounded_fixed(kMargin, 1) + " m kept): " + w.from_why + "; " + w.to_why +
+            (named ? "" : " (no single junction or lanelet to name)");
+  } else {
+    d.notes.push_back(name_of(s) + " (s " + rounded_fixed(s.start, 1) + "-" + rounded_fixed(s.end, 1) +
+                      "): no blinker expectation, the rules leave no stretch where its blinker is certain (" +
+                      w.from_why + "; " + w.to_why + ")");
+    return;
   }
+  d.expectations.push_back(std::move(e));
+}
 
-  // Stretches where no request can be valid: no_blinker (route start and end kept clear).
-  std::vector<Interval> blocked;
-  for (std::size_t i = 0; i < sections.size(); ++i)
-    if (sections[i].side != Side::None)
-      blocked.push_back({windows[i].possible_from - kMargin, windows[i].possible_to + kMargin});
+// no_blinker over every stretch of at least `straight` metres outside the `blocked` windows (the
+// route's start and end kept clear); returns the stretches stated.
+std::vector<Interval> add_no_blinker_stretches(const std::vector<Interval>& blocked, const RouteFacts& facts,
+                                               const RuleParameters& params, Derivation& d) {
   const std::vector<Interval> quiet = free_parts(facts.depart_front + 1.0, facts.route_end - 1.0, blocked);
   std::vector<Interval> stated;
   for (const Interval& q : quiet) {
     if (q.second - q.first < params.straight) continue;
     GeneratedExpectation e;
-    e.kind = Kind::NoBlinker;
+    e.kind = GeneratedExpectation::Kind::NoBlinker;
     e.from_s = ceil_tenth(q.first);
     e.to_s = floor_tenth(q.second);
     e.why = "no request can be valid with the front in [" + rounded_fixed(e.from_s, 1) + ", " +
@@ -249,42 +231,50 @@ Derivation derive_expectations(const std::vector<Section>& sections, const Route
     stated.push_back(q);
     d.expectations.push_back(std::move(e));
   }
-  // No entry signal where the country gives none (docs/behaviour.md §T5.2: on_entry None, no exit tag).
-  for (std::size_t i = 0; i < sections.size(); ++i) {
-    const Section& s = sections[i];
-    if (s.kind != SectionKind::RoundaboutEntry || s.side != Side::None) continue;
-    const double from = std::max(facts.depart_front + 1.0, s.start - s.search_distance);
-    const double to = s.end + b2f;
-    // The free piece around the entry's start, else the longest one.
-    std::optional<Interval> best;
-    bool best_contains = false;
-    for (const Interval& q : free_parts(from, to, blocked)) {
-      if (q.second - q.first < std::max(kMinEntryQuiet, step_room(speed, q.first, q.second))) continue;
-      const bool contains = q.first <= s.start && s.start <= q.second;
-      if (!best || (contains && !best_contains) ||
-          (contains == best_contains && q.second - q.first > best->second - best->first)) {
-        best = q;
-        best_contains = contains;
-      }
-    }
-    const auto stated_already = [&](const Interval& piece) {
-      return std::any_of(stated.begin(), stated.end(),
-                         [&](const Interval& q) { return q.first <= piece.first && q.second >= piece.second; });
-    };
-    if (best && stated_already(*best)) continue;  // a no_blinker stretch above already covers it
-    if (!best) {
-      d.notes.push_back(name_of(s) + ": no entry signal (turn_signal_roundabout_on_entry None), but other requests "
-                                     "may be valid all along it: not stated");
-      continue;
-    }
-    GeneratedExpectation e;
-    e.kind = Kind::NoBlinker;
-    e.from_s = ceil_tenth(best->first);
-    e.to_s = floor_tenth(best->second);
-    e.why = name_of(s) + ": no entry signal (turn_signal_roundabout_on_entry None and no exit tag, docs/behaviour.md §T5.2, §T5.5)";
-    d.expectations.push_back(std::move(e));
-  }
+  return stated;
+}
 
+// No entry signal at roundabout entry `s` where the country gives none (docs/behaviour.md §T5.2:
+// on_entry None, no exit tag): no_blinker over the free piece around its start, else the longest
+// one, unless a stated stretch covers it already; a note when no piece is long enough.
+void add_quiet_entry(const Section& s, const std::vector<Interval>& blocked, const std::vector<Interval>& stated,
+                     const RouteFacts& facts, const SpeedProfile& speed, const RuleParameters& params,
+                     Derivation& d) {
+  const double from = std::max(facts.depart_front + 1.0, s.start - s.search_distance);
+  const double to = s.end + params.base_link_to_front;
+  std::optional<Interval> best;
+  bool best_contains = false;
+  for (const Interval& q : free_parts(from, to, blocked)) {
+    if (q.second - q.first < std::max(kMinEntryQuiet, step_room(speed, q.first, q.second))) continue;
+    const bool contains = q.first <= s.start && s.start <= q.second;
+    if (!best || (contains && !best_contains) ||
+        (contains == best_contains && q.second - q.first > best->second - best->first)) {
+      best = q;
+      best_contains = contains;
+    }
+  }
+  const auto stated_already = [&](const Interval& piece) {
+    return std::any_of(stated.begin(), stated.end(),
+                       [&](const Interval& q) { return q.first <= piece.first && q.second >= piece.second; });
+  };
+  if (best && stated_already(*best)) return;  // a no_blinker stretch already covers it
+  if (!best) {
+    d.notes.push_back(name_of(s) + ": no entry signal (turn_signal_roundabout_on_entry None), but other requests "
+                                   "may be valid all along it: not stated");
+    return;
+  }
+  GeneratedExpectation e;
+  e.kind = GeneratedExpectation::Kind::NoBlinker;
+  e.from_s = ceil_tenth(best->first);
+  e.to_s = floor_tenth(best->second);
+  e.why = name_of(s) + ": no entry signal (turn_signal_roundabout_on_entry None and no exit tag, docs/behaviour.md §T5.2, §T5.5)";
+  d.expectations.push_back(std::move(e));
+}
+
+// The expectations of the whole route: blinker_never for a side no section asks for and for the
+// hazard lights, never_runs_red when the route has lights, and arrives.
+void add_route_wide_expectations(const std::vector<Section>& sections, const RouteFacts& facts, Derivation& d) {
+  using Kind = GeneratedExpectation::Kind;
   bool left = false, right = false;
   for (const Section& s : sections) {
     left |= s.side == Side::Left || s.side == Side::Either;
@@ -314,6 +304,40 @@ Derivation derive_expectations(const std::vector<Section>& sections, const Route
   arrives.kind = Kind::Arrives;
   arrives.why = "every generated route is drivable to its end within the duration";
   d.expectations.push_back(std::move(arrives));
+}
+
+}  // namespace
+
+double floor_tenth(double v) { return std::floor(v * 10.0 + 1e-6) / 10.0; }
+double ceil_tenth(double v) { return std::ceil(v * 10.0 - 1e-6) / 10.0; }
+
+Derivation derive_expectations(const std::vector<Section>& sections, const RouteFacts& facts,
+                               const SpeedProfile& speed, const RuleParameters& params) {
+  Derivation d;
+  std::vector<Window> windows;
+  windows.reserve(sections.size());
+  for (const Section& s : sections) windows.push_back(initial_window(s, speed, params, facts.depart_front));
+  std::vector<Window> narrowed = windows;
+  for (std::size_t i = 0; i < sections.size(); ++i) {
+    if (sections[i].side != Side::Left && sections[i].side != Side::Right) continue;
+    for (std::size_t j = 0; j < sections.size(); ++j)
+      if (j != i) narrow(sections[i], narrowed[i], sections[j], windows[j], params);
+  }
+  for (std::size_t i = 0; i < sections.size(); ++i) {
+    const Window& w = narrowed[i];
+    d.windows.push_back({w.possible_from, w.possible_to, w.from, w.to, w.from_why, w.to_why});
+    add_blinker_expectation(sections[i], w, speed, params, d);
+  }
+  // Stretches where no request can be valid: outside every section's possible window (not narrowed).
+  std::vector<Interval> blocked;
+  for (std::size_t i = 0; i < sections.size(); ++i)
+    if (sections[i].side != Side::None)
+      blocked.push_back({windows[i].possible_from - kMargin, windows[i].possible_to + kMargin});
+  const std::vector<Interval> stated = add_no_blinker_stretches(blocked, facts, params, d);
+  for (const Section& s : sections)
+    if (s.kind == SectionKind::RoundaboutEntry && s.side == Side::None)
+      add_quiet_entry(s, blocked, stated, facts, speed, params, d);
+  add_route_wide_expectations(sections, facts, d);
   return d;
 }
 
