@@ -92,6 +92,113 @@ void split_lines(const std::string& text, std::vector<std::string>& into) {
   for (std::string line; std::getline(in, line);) into.push_back(line);
 }
 
+// The speed the ego is predicted to drive, with the places it may stop: their braking distances come
+// from the planned speed without stops (the ego is no faster than that).
+SpeedProfile planned_speed(const RouteMap& route, const PlannedRouteFacts& facts, double v0,
+                           const RouteScenarioOptions& o) {
+  const SpeedLimits limits{o.max_speed, o.accel, o.decel};
+  const SpeedProfile free_run(route, 0.0, v0, limits, kStepLength, {});
+  std::vector<StopPoint> stops;
+  for (const PlannedRouteFacts::Stop& s : facts.stops) {
+    const double v = free_run.max_planned(s.s - 200.0, s.s) + kSpeedSlack;
+    stops.push_back({s.s, s.light ? light_braking_distance(v) : yield_braking_distance(v), s.what});
+  }
+  return SpeedProfile(route, 0.0, v0, limits, kStepLength, stops);
+}
+
+// The decider's parameters that find the route's sections.
+SectionParameters section_parameters(const RunParameters& typed) {
+  SectionParameters out;
+  out.intersection_search_distance = typed.decider.turn_signal_intersection_search_distance;
+  out.roundabout_search_distance = typed.decider.turn_signal_roundabout_search_distance;
+  out.on_entry = typed.decider.turn_signal_roundabout_on_entry;
+  out.on_exit = typed.decider.turn_signal_roundabout_on_exit;
+  return out;
+}
+
+// The decider's parameters and the ego's measures the expectation rules use.
+RuleParameters rule_parameters(const RunParameters& typed, const RouteScenarioOptions& o) {
+  RuleParameters out;
+  out.search_time = typed.decider.turn_signal_search_time;
+  out.minimum_search_distance = typed.decider.turn_signal_minimum_search_distance;
+  out.base_link_to_front = o.base_link_to_front;
+  out.straight = o.straight;
+  return out;
+}
+
+// The turns, roundabouts (entry -> exit), lights and lane changes the route passes through.
+RouteFeatures route_features(const std::vector<Section>& sections, const PlannedRouteFacts& facts) {
+  RouteFeatures out;
+  for (const Section& s : sections) {
+    if (s.kind == SectionKind::Turn) out.turns.push_back(s.id + " " + to_string(s.side));
+    if (s.kind == SectionKind::LaneChange) ++out.lane_changes;
+  }
+  for (std::size_t i = 0; i < sections.size(); ++i) {
+    if (sections[i].kind != SectionKind::RoundaboutEntry) continue;
+    std::string exit = "(ends on the ring)";
+    for (std::size_t j = i + 1; j < sections.size(); ++j)
+      if (sections[j].kind == SectionKind::RoundaboutExit) {
+        exit = sections[j].id;
+        break;
+      }
+    out.roundabouts.push_back(sections[i].id + " -> " + exit);
+  }
+  for (const LightFact& l : facts.lights)
+    if (std::find(out.lights.begin(), out.lights.end(), l.id) == out.lights.end()) out.lights.push_back(l.id);
+  return out;
+}
+
+// [s] The time the ego may wait on the way: a full cycle of every light and kYieldWait per yield.
+double expected_waits(const PlannedRouteFacts& facts) {
+  double waits = 0.0;
+  int yields = 0;
+  for (double c : facts.light_cycles) waits += c;
+  for (const PlannedRouteFacts::Stop& s : facts.stops) yields += s.light ? 0 : 1;
+  waits += kYieldWait * yields;
+  return waits;
+}
+
+// The header line of the parameters the expectations were derived with.
+std::string parameters_line(const RouteScenarioOptions& o, const RunParameters& typed,
+                            const SectionParameters& section_params, const RuleParameters& rules) {
+  return "Parameters: Autoware's defaults" + (o.country.empty() ? std::string() : " + country preset " + o.country) +
+         ": search " + rounded_fixed(rules.search_time, 1) + " s x v + " +
+         rounded_fixed(section_params.intersection_search_distance, 1) + " m (turns), + " +
+         rounded_fixed(section_params.roundabout_search_distance, 1) + " m (roundabout entries); entry " +
+         section_params.on_entry + ", exit " + section_params.on_exit + "; exit signal from the previous exit: " +
+         (typed.decider.turn_signal_roundabout_exit_signal_from_previous_exit ? "yes" : "no");
+}
+
+// The header line of the ego's measures and its departure.
+std::string ego_line(const RouteScenarioOptions& o, const RouteMap& route, double v0) {
+  return "Ego: " + rounded_fixed(o.length, 1) + " m, front " + rounded_fixed(o.base_link_to_front, 1) +
+         " m ahead of base_link, at most " + rounded_fixed(o.max_speed, 2) + " m/s, accel/decel " +
+         rounded_fixed(o.accel, 1) + "/" + rounded_fixed(o.decel, 1) + " m/s^2; departs at s 0 on " +
+         route.at(0).lane_id + " at " + rounded_fixed(v0, 1) +
+         " m/s (the least of its top speed, the lane limit, the speed planner's braking envelope, what SUMO "
+         "can stop from by the edge's end and what a normal stop sheds before the first light)";
+}
+
+// The header lines of the route's sections with their possible and certain windows (none without sections).
+void add_section_lines(const std::vector<Section>& sections, const Derivation& derivation,
+                       std::vector<std::string>& h) {
+  if (sections.empty()) return;
+  h.push_back("Sections (front bumper; possible: its request may be valid; certain: its blinker is sure to show):");
+  for (std::size_t i = 0; i < sections.size(); ++i) {
+    const Section& s = sections[i];
+    const SectionWindows& w = derivation.windows[i];
+    std::string line = "  " + std::string(to_string(s.kind)) + " " + s.id + " " + to_string(s.side) + ", s " +
+                       rounded_fixed(s.start, 1) + "-" + rounded_fixed(s.end, 1);
+    if (s.side != Side::None)
+      line += ": possible " + rounded_fixed(w.possible_from, 1) + "-" + rounded_fixed(w.possible_to, 1);
+    if (s.side == Side::Left || s.side == Side::Right)
+      line += w.guaranteed_to > w.guaranteed_from
+                  ? ", certain " + rounded_fixed(w.guaranteed_from, 1) + "-" + rounded_fixed(w.guaranteed_to, 1)
+                  : ", never certain";
+    h.push_back(line);
+  }
+}
+
 }  // namespace
 
 std::optional<RouteScenario> route_scenario(const sumo::NetIndex& net, const std::string& net_path,
@@ -121,55 +228,17 @@ std::optional<RouteScenario> route_scenario(const sumo::NetIndex& net, const std
   }
   const RunParameters& typed = planning.run_params;
   const double v0 = depart_speed(route, facts.lights, typed.judge.stop_margin, o);
-  const SpeedLimits limits{o.max_speed, o.accel, o.decel};
-  // Stop zones from the planned speed without stops (the ego is no faster than that).
-  const SpeedProfile free_run(route, 0.0, v0, limits, kStepLength, {});
-  std::vector<StopPoint> stops;
-  for (const PlannedRouteFacts::Stop& s : facts.stops) {
-    const double v = free_run.max_planned(s.s - 200.0, s.s) + kSpeedSlack;
-    stops.push_back({s.s, s.light ? light_braking_distance(v) : yield_braking_distance(v), s.what});
-  }
-  const SpeedProfile speed(route, 0.0, v0, limits, kStepLength, stops);
-
-  SectionParameters section_params;
-  section_params.intersection_search_distance = typed.decider.turn_signal_intersection_search_distance;
-  section_params.roundabout_search_distance = typed.decider.turn_signal_roundabout_search_distance;
-  section_params.on_entry = typed.decider.turn_signal_roundabout_on_entry;
-  section_params.on_exit = typed.decider.turn_signal_roundabout_on_exit;
+  const SpeedProfile speed = planned_speed(route, facts, v0, o);
+  const SectionParameters section_params = section_parameters(typed);
   const std::vector<Section> sections = route_sections(route, section_params, facts.lane_changes);
-  RuleParameters rules;
-  rules.search_time = typed.decider.turn_signal_search_time;
-  rules.minimum_search_distance = typed.decider.turn_signal_minimum_search_distance;
-  rules.base_link_to_front = o.base_link_to_front;
-  rules.straight = o.straight;
+  const RuleParameters rules = rule_parameters(typed, o);
   RouteFacts route_facts_for_rules{0.0, route.length(), facts.lights};
   const Derivation derivation = derive_expectations(sections, route_facts_for_rules, speed, rules);
 
   RouteScenario out;
   out.length = route.length();
-  for (const Section& s : sections) {
-    if (s.kind == SectionKind::Turn) out.features.turns.push_back(s.id + " " + to_string(s.side));
-    if (s.kind == SectionKind::LaneChange) ++out.features.lane_changes;
-  }
-  for (std::size_t i = 0; i < sections.size(); ++i) {
-    if (sections[i].kind != SectionKind::RoundaboutEntry) continue;
-    std::string exit = "(ends on the ring)";
-    for (std::size_t j = i + 1; j < sections.size(); ++j)
-      if (sections[j].kind == SectionKind::RoundaboutExit) {
-        exit = sections[j].id;
-        break;
-      }
-    out.features.roundabouts.push_back(sections[i].id + " -> " + exit);
-  }
-  for (const LightFact& l : facts.lights)
-    if (std::find(out.features.lights.begin(), out.features.lights.end(), l.id) == out.features.lights.end())
-      out.features.lights.push_back(l.id);
-
-  double waits = 0.0;
-  int yields = 0;
-  for (double c : facts.light_cycles) waits += c;
-  for (const PlannedRouteFacts::Stop& s : facts.stops) yields += s.light ? 0 : 1;
-  waits += kYieldWait * yields;
+  out.features = route_features(sections, facts);
+  const double waits = expected_waits(facts);
   const double duration = 10.0 * std::ceil((kDurationFactor * (speed.travel_time() + waits) + kDurationSlack) / 10.0);
 
   ScenarioDraft& d = out.draft;
@@ -184,19 +253,8 @@ std::optional<RouteScenario> route_scenario(const sumo::NetIndex& net, const std
   d.expect = derivation.expectations;
 
   std::vector<std::string>& h = d.header;
-  h.push_back("Parameters: Autoware's defaults" +
-              (o.country.empty() ? std::string() : " + country preset " + o.country) + ": search " +
-              rounded_fixed(rules.search_time, 1) + " s x v + " +
-              rounded_fixed(section_params.intersection_search_distance, 1) + " m (turns), + " +
-              rounded_fixed(section_params.roundabout_search_distance, 1) + " m (roundabout entries); entry " +
-              section_params.on_entry + ", exit " + section_params.on_exit + "; exit signal from the previous exit: " +
-              (typed.decider.turn_signal_roundabout_exit_signal_from_previous_exit ? "yes" : "no"));
-  h.push_back("Ego: " + rounded_fixed(o.length, 1) + " m, front " + rounded_fixed(o.base_link_to_front, 1) +
-              " m ahead of base_link, at most " + rounded_fixed(o.max_speed, 2) + " m/s, accel/decel " +
-              rounded_fixed(o.accel, 1) + "/" + rounded_fixed(o.decel, 1) + " m/s^2; departs at s 0 on " +
-              route.at(0).lane_id + " at " + rounded_fixed(v0, 1) +
-              " m/s (the least of its top speed, the lane limit, the speed planner's braking envelope, what SUMO "
-              "can stop from by the edge's end and what a normal stop sheds before the first light)");
+  h.push_back(parameters_line(o, typed, section_params, rules));
+  h.push_back(ego_line(o, route, v0));
   h.push_back("Duration " + rounded_fixed(duration, 0) + " s = " + rounded_fixed(kDurationFactor, 1) + " x (" +
               rounded_fixed(speed.travel_time(), 1) + " s planned travel + " + rounded_fixed(waits, 1) +
               " s of light cycles and yields) + " + rounded_fixed(kDurationSlack, 0) + " s, in 10 s steps");
@@ -209,22 +267,7 @@ std::optional<RouteScenario> route_scenario(const sumo::NetIndex& net, const std
     for (const StopPoint& s : speed.stops())
       h.push_back("  " + s.what + " at s " + rounded_fixed(s.s, 1) + " (" + rounded_fixed(s.braking, 1) + " m)");
   }
-  if (!sections.empty()) {
-    h.push_back("Sections (front bumper; possible: its request may be valid; certain: its blinker is sure to show):");
-    for (std::size_t i = 0; i < sections.size(); ++i) {
-      const Section& s = sections[i];
-      const SectionWindows& w = derivation.windows[i];
-      std::string line = "  " + std::string(to_string(s.kind)) + " " + s.id + " " + to_string(s.side) + ", s " +
-                         rounded_fixed(s.start, 1) + "-" + rounded_fixed(s.end, 1);
-      if (s.side != Side::None)
-        line += ": possible " + rounded_fixed(w.possible_from, 1) + "-" + rounded_fixed(w.possible_to, 1);
-      if (s.side == Side::Left || s.side == Side::Right)
-        line += w.guaranteed_to > w.guaranteed_from
-                    ? ", certain " + rounded_fixed(w.guaranteed_from, 1) + "-" + rounded_fixed(w.guaranteed_to, 1)
-                    : ", never certain";
-      h.push_back(line);
-    }
-  }
+  add_section_lines(sections, derivation, h);
   for (const std::string& note : derivation.notes) h.push_back("Note: " + note);
   return out;
 }
