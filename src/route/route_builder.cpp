@@ -119,13 +119,22 @@ Lanelet lanelet_of(const NetEdge& edge, const NetLane& lane) {
   return l;
 }
 
-}  // namespace
+// The route's lanelets in order, each starting at the route s where the one before ends.
+struct LaneletChain {
+  std::vector<Lanelet> lanelets;
+  double s = 0.0;
 
-RoutePlan build_route(const NetIndex& net, const std::vector<std::string>& edges,
-                      const std::vector<int>& required_exit, const LaneChangeEgo& ego) {
+  void push(Lanelet l) {
+    l.s_start = s;
+    s += l.length;
+    lanelets.push_back(std::move(l));
+  }
+};
+
+// The route's edges, after checking that every one exists, is a normal edge with lanes, has no
+// defect and can be driven by SUMO.
+std::vector<const NetEdge*> route_edges(const NetIndex& net, const std::vector<std::string>& edges) {
   if (edges.empty()) throw RouteError("the route has no edges");
-
-  // Every route edge exists and is a normal edge.
   std::vector<const NetEdge*> route;
   route.reserve(edges.size());
   for (const std::string& id : edges) {
@@ -140,109 +149,120 @@ RoutePlan build_route(const NetIndex& net, const std::vector<std::string>& edges
     if (const std::string why = sumo_cannot_drive(net, *edge); !why.empty()) throw RouteError("route " + why);
     route.push_back(edge);
   }
+  return route;
+}
 
+// The lanelet of route edge `i` (`edge`): its planned lane, with its params, its ring role and the
+// light of `link`, the connection taken to the next edge (null on the last edge). Refuses the route
+// when a lane it drives on the edge or that light has a defect.
+Lanelet edge_lanelet(const NetIndex& net, const std::vector<std::string>& edges, std::size_t i, const NetEdge& edge,
+                     const LanePlan& plan, const NetConnection* link) {
+  const NetLane& lane = edge.lanes[static_cast<std::size_t>(plan.exit_lanes[i])];
+  const auto edge_ring = net.roundabout_of_edge(edge.id);
+  // The lanes the ego drives here: entered on, left on, and crossed between them.
+  for (int k = std::min(plan.lanes[i], plan.exit_lanes[i]); k <= std::max(plan.lanes[i], plan.exit_lanes[i]); ++k) {
+    refuse_defective(net, NetElement::Lane, edge.lanes[static_cast<std::size_t>(k)].id,
+                     "a lane the route drives on edge " + quoted(edge.id));
+  }
+
+  Lanelet normal = lanelet_of(edge, lane);
+  normal.successor_turn_directions = successor_directions(net, lane.id);
+  LaneParams own = lane_params(edge, lane);
+  normal.params = std::move(own.params);
+  normal.turn_signal_distance = own.turn_signal_distance;
+  if (edge_ring) {
+    normal.roundabout_role = RoundaboutRole::Internal;
+    normal.roundabout_id = std::to_string(*edge_ring);
+    // Lanelet::leaves_ring_at_end: an exit branches off at the end of this ring lane.
+    normal.leaves_ring_at_end = ring_edge_has_exit(net, edge, *edge_ring);
+  }
+  if (link != nullptr && !link->tl.empty()) {
+    refuse_defective(net, NetElement::TlLogic, link->tl,
+                     "the light of the route's connection " + quoted(edge.id) + " -> " + quoted(edges[i + 1]));
+  }
+  // The stop line is this lane's end: the light of the connection taken leaves it.
+  if (link != nullptr && !link->tl.empty()) normal.traffic_light = TrafficLightLink{link->tl, link->link_index};
+  return normal;
+}
+
+// Pushes the internal lanes of `link`, the connection taken from `edge` to `next_edge`, then those
+// chained from them towards `next_lane`, the planned lane of the next edge. Refuses a connection
+// without internal lanes, a chain that does not end, and an internal lane, its edge or its junction
+// with a defect.
+void push_connection_lanelets(const NetIndex& net, const NetEdge& edge, const std::string& next_edge,
+                              const NetConnection& link, int next_lane, LaneletChain& chain) {
+  if (link.via.empty()) {
+    throw RouteError("route edges " + quoted(edge.id) + " -> " + quoted(next_edge) +
+                     ": the connection has no internal lane; the net has no internal lanes "
+                     "(built with netconvert --no-internal-links)");
+  }
+  // Internal lanes take the params of the approach lane, the one the connection starts from (docs/behaviour.md §S3).
+  const NetLane& approach = edge.lanes[static_cast<std::size_t>(link.from_lane)];
+  const LaneParams approach_params = lane_params(edge, approach);
+  const auto [role, ring] = junction_role(net, edge.id, next_edge);
+
+  std::string via = link.via;
+  for (int chained = 0; !via.empty(); ++chained) {
+    if (chained >= kMaxInternalChain) {
+      throw RouteError("route edges " + quoted(edge.id) + " -> " + quoted(next_edge) +
+                       ": the internal lanes of the connection do not end");
+    }
+    const NetLane* internal = net.lane(via);
+    const NetEdge* internal_edge = net.edge_of_lane(via);
+    if (internal == nullptr || internal_edge == nullptr) {
+      throw RouteError("route edges " + quoted(edge.id) + " -> " + quoted(next_edge) + ": internal lane " +
+                       quoted(via) + " is not in the net");
+    }
+    const std::string use = "an internal lane of the route's connection " + quoted(edge.id) + " -> " + quoted(next_edge);
+    refuse_defective(net, NetElement::Edge, internal_edge->id, use);
+    refuse_defective(net, NetElement::Lane, via, use);
+    Lanelet l = lanelet_of(*internal_edge, *internal);
+    l.is_internal = true;
+    l.junction_id = junction_of_internal_lane(via);
+    if (net.junction(l.junction_id) == nullptr) l.junction_id = edge.to_junction;
+    refuse_defective(net, NetElement::Junction, l.junction_id,
+                     "the junction of the route's connection " + quoted(edge.id) + " -> " + quoted(next_edge));
+    const NetConnection* via_of = net.connection_via(via);
+    l.turn_direction = turn_direction_of(via_of != nullptr ? via_of->dir : link.dir, net.lefthand());
+    l.successor_turn_directions = successor_directions(net, via);
+    l.params = approach_params.params;
+    l.turn_signal_distance = approach_params.turn_signal_distance;
+    l.roundabout_role = role;
+    if (ring) l.roundabout_id = std::to_string(*ring);
+    // An internal ring -> ring lane lies in the junction where the exits of the ring edge before it
+    // branch off: it carries leaves_ring_at_end when that junction has such an exit.
+    if (role == RoundaboutRole::Internal) l.leaves_ring_at_end = ring_edge_has_exit(net, edge, *ring);
+    chain.push(std::move(l));
+
+    // The connection from this internal lane towards the planned lane of the next edge.
+    const NetConnection* onward = nullptr;
+    for (const NetConnection& c : net.connections_from_lane(via)) {
+      if (c.to_edge != next_edge) continue;
+      if (onward == nullptr || (c.to_lane == next_lane && onward->to_lane != next_lane)) onward = &c;
+    }
+    via = onward != nullptr ? onward->via : std::string();
+  }
+}
+
+}  // namespace
+
+RoutePlan build_route(const NetIndex& net, const std::vector<std::string>& edges,
+                      const std::vector<int>& required_exit, const LaneChangeEgo& ego) {
+  const std::vector<const NetEdge*> route = route_edges(net, edges);
   // The lane plan (route_lanes.cpp): connections, permissions, the room of every edge.
   const RouteLanes lanes = plan_route_lanes(net, route, required_exit, ego);
   const LanePlan& plan = lanes.plan;
 
-  std::vector<Lanelet> lanelets;
-  double s = 0.0;
-  const auto push = [&](Lanelet l) {
-    l.s_start = s;
-    s += l.length;
-    lanelets.push_back(std::move(l));
-  };
-
+  LaneletChain chain;
   for (std::size_t i = 0; i < route.size(); ++i) {
-    const NetEdge& edge = *route[i];
-    const NetLane& lane = edge.lanes[static_cast<std::size_t>(plan.exit_lanes[i])];
-    const auto edge_ring = net.roundabout_of_edge(edge.id);
-    // The lanes the ego drives here: entered on, left on, and crossed between them.
-    for (int k = std::min(plan.lanes[i], plan.exit_lanes[i]); k <= std::max(plan.lanes[i], plan.exit_lanes[i]); ++k) {
-      refuse_defective(net, NetElement::Lane, edge.lanes[static_cast<std::size_t>(k)].id,
-                       "a lane the route drives on edge " + quoted(edge.id));
-    }
-
-    Lanelet normal = lanelet_of(edge, lane);
-    normal.successor_turn_directions = successor_directions(net, lane.id);
-    LaneParams own = lane_params(edge, lane);
-    normal.params = std::move(own.params);
-    normal.turn_signal_distance = own.turn_signal_distance;
-    if (edge_ring) {
-      normal.roundabout_role = RoundaboutRole::Internal;
-      normal.roundabout_id = std::to_string(*edge_ring);
-      // Lanelet::leaves_ring_at_end: an exit branches off at the end of this ring lane.
-      normal.leaves_ring_at_end = ring_edge_has_exit(net, edge, *edge_ring);
-    }
     const NetConnection* link = i + 1 < route.size() ? plan.links[i] : nullptr;
-    if (link != nullptr && !link->tl.empty()) {
-      refuse_defective(net, NetElement::TlLogic, link->tl,
-                       "the light of the route's connection " + quoted(edge.id) + " -> " + quoted(edges[i + 1]));
-    }
-    // The stop line is this lane's end: the light of the connection taken leaves it.
-    if (link != nullptr && !link->tl.empty()) normal.traffic_light = TrafficLightLink{link->tl, link->link_index};
-    push(std::move(normal));
+    chain.push(edge_lanelet(net, edges, i, *route[i], plan, link));
     if (link == nullptr) break;
-
-    // The internal lanes of the connection taken, then those chained from them.
-    const std::string& next_edge = edges[i + 1];
-    if (link->via.empty()) {
-      throw RouteError("route edges " + quoted(edge.id) + " -> " + quoted(next_edge) +
-                       ": the connection has no internal lane; the net has no internal lanes "
-                       "(built with netconvert --no-internal-links)");
-    }
-    // Internal lanes take the params of the approach lane, the one the connection starts from (docs/behaviour.md §S3).
-    const NetLane& approach = edge.lanes[static_cast<std::size_t>(link->from_lane)];
-    const LaneParams approach_params = lane_params(edge, approach);
-    const auto [role, ring] = junction_role(net, edge.id, next_edge);
-
-    std::string via = link->via;
-    for (int chained = 0; !via.empty(); ++chained) {
-      if (chained >= kMaxInternalChain) {
-        throw RouteError("route edges " + quoted(edge.id) + " -> " + quoted(next_edge) +
-                         ": the internal lanes of the connection do not end");
-      }
-      const NetLane* internal = net.lane(via);
-      const NetEdge* internal_edge = net.edge_of_lane(via);
-      if (internal == nullptr || internal_edge == nullptr) {
-        throw RouteError("route edges " + quoted(edge.id) + " -> " + quoted(next_edge) + ": internal lane " +
-                         quoted(via) + " is not in the net");
-      }
-      const std::string use = "an internal lane of the route's connection " + quoted(edge.id) + " -> " + quoted(next_edge);
-      refuse_defective(net, NetElement::Edge, internal_edge->id, use);
-      refuse_defective(net, NetElement::Lane, via, use);
-      Lanelet l = lanelet_of(*internal_edge, *internal);
-      l.is_internal = true;
-      l.junction_id = junction_of_internal_lane(via);
-      if (net.junction(l.junction_id) == nullptr) l.junction_id = edge.to_junction;
-      refuse_defective(net, NetElement::Junction, l.junction_id,
-                       "the junction of the route's connection " + quoted(edge.id) + " -> " + quoted(next_edge));
-      const NetConnection* via_of = net.connection_via(via);
-      l.turn_direction = turn_direction_of(via_of != nullptr ? via_of->dir : link->dir, net.lefthand());
-      l.successor_turn_directions = successor_directions(net, via);
-      l.params = approach_params.params;
-      l.turn_signal_distance = approach_params.turn_signal_distance;
-      l.roundabout_role = role;
-      if (ring) l.roundabout_id = std::to_string(*ring);
-      // An internal ring -> ring lane lies in the junction where the exits of the ring edge before it
-      // branch off: it carries leaves_ring_at_end when that junction has such an exit.
-      if (role == RoundaboutRole::Internal) l.leaves_ring_at_end = ring_edge_has_exit(net, edge, *ring);
-      push(std::move(l));
-
-      // The connection from this internal lane towards the planned lane of the next edge.
-      const NetConnection* onward = nullptr;
-      for (const NetConnection& c : net.connections_from_lane(via)) {
-        if (c.to_edge != next_edge) continue;
-        if (onward == nullptr || (c.to_lane == plan.lanes[i + 1] && onward->to_lane != plan.lanes[i + 1])) {
-          onward = &c;
-        }
-      }
-      via = onward != nullptr ? onward->via : std::string();
-    }
+    push_connection_lanelets(net, *route[i], edges[i + 1], *link, plan.lanes[i + 1], chain);
   }
 
   RoutePlan out;
-  out.map = RouteMap(std::move(lanelets));
+  out.map = RouteMap(std::move(chain.lanelets));
   out.lane_per_edge = plan.exit_lanes;
   out.entry_lane_per_edge = plan.lanes;
   out.lane_changes = plan.lane_changes;
