@@ -74,9 +74,10 @@ void set_offsets(std::vector<LaneQ>& lanes, const NetEdge& edge, int best, int b
   }
 }
 
-// The best lanes from route edge `start` on: per edge of the look-ahead, its lanes.
-std::vector<std::vector<LaneQ>> best_lanes(const NetIndex& net, const std::vector<const NetEdge*>& route,
-                                           std::size_t start, const SumoLookahead& v) {
+// The lanes of each edge SUMO looks at from route edge `start` on (at least 4 edges, more up to its
+// look-ahead distance): each permitted lane's length, and whether it continues to the next edge.
+std::vector<std::vector<LaneQ>> lookahead_lanes(const NetIndex& net, const std::vector<const NetEdge*>& route,
+                                                std::size_t start, const SumoLookahead& v) {
   std::vector<std::vector<LaneQ>> edges;
   const double start_length = route[start]->lanes.front().length;
   const double max_brake = start_length + v.tau * v.max_speed + brake_gap(v.max_speed, v.decel, v.tau, v.step_length) + v.min_gap;
@@ -104,96 +105,127 @@ std::vector<std::vector<LaneQ>> best_lanes(const NetIndex& net, const std::vecto
                           (seen <= 8 || seen_length < std::max(max_brake, 200.0));
     if (!progress) break;
   }
+  return edges;
+}
 
-  // The last edge looked at.
-  {
-    std::vector<LaneQ>& last = edges.back();
-    double best_length = -1.0;
-    int best = 0, best_max = 0;
-    for (int i = 0; i < static_cast<int>(last.size()); ++i) {
-      if (last[static_cast<std::size_t>(i)].length > best_length) {
-        best_length = last[static_cast<std::size_t>(i)].length;
-        best = best_max = i;
-      } else if (last[static_cast<std::size_t>(i)].length == best_length) {
-        best_max = i;
+// The last edge looked at: its longest lanes are the best, the others get offsets towards them.
+void set_last_edge_offsets(std::vector<LaneQ>& last, const NetEdge& edge, const SumoLookahead& v) {
+  double best_length = -1.0;
+  int best = 0, best_max = 0;
+  for (int i = 0; i < static_cast<int>(last.size()); ++i) {
+    if (last[static_cast<std::size_t>(i)].length > best_length) {
+      best_length = last[static_cast<std::size_t>(i)].length;
+      best = best_max = i;
+    } else if (last[static_cast<std::size_t>(i)].length == best_length) {
+      best_max = i;
+    }
+  }
+  set_offsets(last, edge, best, best_max, v, false);
+}
+
+// The best lanes [best, best_max] of an edge.
+struct BestRange {
+  int best = 0, best_max = 0;
+};
+
+// Each lane of `clanes` continues on the best permitted next lane it has a link to (`out`: its
+// links): the longest, then the one with the smallest offset; it adds that lane's length (the next
+// edge's longest when the chosen lane is the longest linked one and at most one lane off the best)
+// and takes its offset. Returns the best lanes of this edge: the longest, then the smallest offset,
+// then the highest link priority.
+BestRange continue_connected(std::vector<LaneQ>& clanes, const std::vector<LaneQ>& next, const NetEdge& next_edge,
+                             const std::vector<std::vector<const NetConnection*>>& out, double best_connected,
+                             double best_length, const SumoLookahead& v) {
+  int best = 0, best_max = 0;
+  for (int index = 0; index < static_cast<int>(clanes.size()); ++index) {
+    LaneQ& j = clanes[static_cast<std::size_t>(index)];
+    const LaneQ* chosen = nullptr;
+    int chosen_lane = -1, chosen_priority = -1;
+    if (j.continues) {
+      for (std::size_t m = 0; m < next.size(); ++m) {
+        if (!lane_permits(next_edge.lanes[m], v.vclass)) continue;
+        const auto link = std::find_if(out[static_cast<std::size_t>(index)].begin(), out[static_cast<std::size_t>(index)].end(),
+                                       [&](const NetConnection* c) { return c->to_lane == static_cast<int>(m); });
+        if (link == out[static_cast<std::size_t>(index)].end()) continue;
+        const LaneQ& q = next[m];
+        if (chosen == nullptr || chosen->length < q.length ||
+            (chosen->length == q.length && std::abs(chosen->offset) > std::abs(q.offset))) {
+          chosen = &q;
+          chosen_lane = static_cast<int>(m);
+          chosen_priority = priority_of(**link);
+        }
+      }
+      if (chosen != nullptr) {
+        j.length += (chosen->length == best_connected && std::abs(chosen->offset) < 2) ? best_length : chosen->length;
+        j.offset = chosen->offset;
       }
     }
-    set_offsets(last, *route[start + edges.size() - 1], best, best_max, v, false);
+    if (chosen != nullptr && (chosen->continues || chosen->length > 0.0)) {
+      j.next = chosen_lane;
+      j.priority = chosen_priority;
+    } else {
+      j.continues = false;
+    }
+    const LaneQ& b = clanes[static_cast<std::size_t>(best)];
+    if (b.length < j.length || (b.length == j.length && std::abs(b.offset) > std::abs(j.offset)) ||
+        (b.length == j.length && std::abs(b.offset) == std::abs(j.offset) && b.priority < j.priority)) {
+      best = best_max = index;
+    } else if (b.length == j.length && std::abs(b.offset) == std::abs(j.offset) && b.priority == j.priority) {
+      best_max = index;
+    }
   }
+  return {best, best_max};
+}
 
+// A disconnected route (every lane of the next edge this edge links to has length 0): the lane with
+// a link to the lane of the smallest offset goes on, and is the only best lane.
+BestRange continue_disconnected(std::vector<LaneQ>& clanes, const std::vector<LaneQ>& next,
+                                const std::vector<std::vector<const NetConnection*>>& out) {
+  int best = 0, best_next = 0, best_dist = static_cast<int>(clanes.size());
+  for (int index = 0; index < static_cast<int>(clanes.size()); ++index) {
+    if (!clanes[static_cast<std::size_t>(index)].continues) continue;
+    for (const NetConnection* c : out[static_cast<std::size_t>(index)])
+      if (best_dist > std::abs(next[static_cast<std::size_t>(c->to_lane)].offset)) {
+        best_dist = std::abs(next[static_cast<std::size_t>(c->to_lane)].offset);
+        best = index;
+        best_next = c->to_lane;
+      }
+  }
+  clanes[static_cast<std::size_t>(best)].length += next[static_cast<std::size_t>(best_next)].length;
+  clanes[static_cast<std::size_t>(best)].next = best_next;
+  return {best, best};
+}
+
+// One edge of the backward pass: each lane of `clanes` (edge `here`) continues on a lane of `next`
+// (edge `next_edge`, already done), then the offsets towards this edge's best lanes are set.
+void continue_lanes(const NetIndex& net, const NetEdge& here, const NetEdge& next_edge, std::vector<LaneQ>& clanes,
+                    const std::vector<LaneQ>& next, const SumoLookahead& v) {
+  // Per lane of this edge, the next lanes it has a link to (and the link).
+  std::vector<std::vector<const NetConnection*>> out(clanes.size());
+  std::vector<bool> approached(next.size(), false);
+  for (std::size_t l = 0; l < clanes.size(); ++l) {
+    out[l] = links(net, here, static_cast<int>(l), next_edge);
+    for (const NetConnection* c : out[l]) approached[static_cast<std::size_t>(c->to_lane)] = true;
+  }
+  double best_connected = -1.0, best_length = -1.0;
+  for (std::size_t m = 0; m < next.size(); ++m) {
+    if (approached[m]) best_connected = std::max(best_connected, next[m].length);
+    best_length = std::max(best_length, next[m].length);
+  }
+  const BestRange best = best_connected > 0.0
+                             ? continue_connected(clanes, next, next_edge, out, best_connected, best_length, v)
+                             : continue_disconnected(clanes, next, out);
+  set_offsets(clanes, here, best.best, best.best_max, v, true);
+}
+
+// The best lanes from route edge `start` on: per edge of the look-ahead, its lanes.
+std::vector<std::vector<LaneQ>> best_lanes(const NetIndex& net, const std::vector<const NetEdge*>& route,
+                                           std::size_t start, const SumoLookahead& v) {
+  std::vector<std::vector<LaneQ>> edges = lookahead_lanes(net, route, start, v);
+  set_last_edge_offsets(edges.back(), *route[start + edges.size() - 1], v);
   // Backwards: each lane's best continuation.
-  for (std::size_t n = edges.size() - 1; n-- > 0;) {
-    const NetEdge& here = *route[start + n];
-    const NetEdge& next_edge = *route[start + n + 1];
-    std::vector<LaneQ>& clanes = edges[n];
-    const std::vector<LaneQ>& next = edges[n + 1];
-    // Per lane of this edge, the next lanes it has a link to (and the link).
-    std::vector<std::vector<const NetConnection*>> out(clanes.size());
-    std::vector<bool> approached(next.size(), false);
-    for (std::size_t l = 0; l < clanes.size(); ++l) {
-      out[l] = links(net, here, static_cast<int>(l), next_edge);
-      for (const NetConnection* c : out[l]) approached[static_cast<std::size_t>(c->to_lane)] = true;
-    }
-    double best_connected = -1.0, best_length = -1.0;
-    for (std::size_t m = 0; m < next.size(); ++m) {
-      if (approached[m]) best_connected = std::max(best_connected, next[m].length);
-      best_length = std::max(best_length, next[m].length);
-    }
-    int best = 0, best_max = 0;
-    if (best_connected > 0.0) {
-      for (int index = 0; index < static_cast<int>(clanes.size()); ++index) {
-        LaneQ& j = clanes[static_cast<std::size_t>(index)];
-        const LaneQ* chosen = nullptr;
-        int chosen_lane = -1, chosen_priority = -1;
-        if (j.continues) {
-          for (std::size_t m = 0; m < next.size(); ++m) {
-            if (!lane_permits(next_edge.lanes[m], v.vclass)) continue;
-            const auto link = std::find_if(out[static_cast<std::size_t>(index)].begin(), out[static_cast<std::size_t>(index)].end(),
-                                           [&](const NetConnection* c) { return c->to_lane == static_cast<int>(m); });
-            if (link == out[static_cast<std::size_t>(index)].end()) continue;
-            const LaneQ& q = next[m];
-            if (chosen == nullptr || chosen->length < q.length ||
-                (chosen->length == q.length && std::abs(chosen->offset) > std::abs(q.offset))) {
-              chosen = &q;
-              chosen_lane = static_cast<int>(m);
-              chosen_priority = priority_of(**link);
-            }
-          }
-          if (chosen != nullptr) {
-            j.length += (chosen->length == best_connected && std::abs(chosen->offset) < 2) ? best_length : chosen->length;
-            j.offset = chosen->offset;
-          }
-        }
-        if (chosen != nullptr && (chosen->continues || chosen->length > 0.0)) {
-          j.next = chosen_lane;
-          j.priority = chosen_priority;
-        } else {
-          j.continues = false;
-        }
-        const LaneQ& b = clanes[static_cast<std::size_t>(best)];
-        if (b.length < j.length || (b.length == j.length && std::abs(b.offset) > std::abs(j.offset)) ||
-            (b.length == j.length && std::abs(b.offset) == std::abs(j.offset) && b.priority < j.priority)) {
-          best = best_max = index;
-        } else if (b.length == j.length && std::abs(b.offset) == std::abs(j.offset) && b.priority == j.priority) {
-          best_max = index;
-        }
-      }
-    } else {  // a disconnected route: the lane closest to a needed one goes on
-      int best_next = 0, best_dist = static_cast<int>(clanes.size());
-      for (int index = 0; index < static_cast<int>(clanes.size()); ++index) {
-        if (!clanes[static_cast<std::size_t>(index)].continues) continue;
-        for (const NetConnection* c : out[static_cast<std::size_t>(index)])
-          if (best_dist > std::abs(next[static_cast<std::size_t>(c->to_lane)].offset)) {
-            best_dist = std::abs(next[static_cast<std::size_t>(c->to_lane)].offset);
-            best = best_max = index;
-            best_next = c->to_lane;
-          }
-      }
-      clanes[static_cast<std::size_t>(best)].length += next[static_cast<std::size_t>(best_next)].length;
-      clanes[static_cast<std::size_t>(best)].next = best_next;
-    }
-    set_offsets(clanes, here, best, best_max, v, true);
-  }
+  for (std::size_t n = edges.size() - 1; n-- > 0;)
+    continue_lanes(net, *route[start + n], *route[start + n + 1], edges[n], edges[n + 1], v);
   return edges;
 }
 
