@@ -2,7 +2,7 @@
 // RunRecord::red_violations): each stop of the ego at a light it brakes for (its rest position
 // against the stop point, the worst stop level on the way, a queue or junction it waited behind
 // instead), and each crossing of a stop line on red, at every light in the judges' window.
-// sumo_driven.cpp keeps the same rules for a SUMO-driven run (LightWatch).
+// step/sumo_driven_core keeps the same rules for a SUMO-driven run (LightWatch).
 #pragma once
 
 #include <cstddef>

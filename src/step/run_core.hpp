@@ -7,7 +7,7 @@
 //   5. hands what SUMO said back to the core, which records the row    record(observation, feedback)
 // until record says the run is over. Two cores: StepCore (signalsim drives, step_core.hpp) and
 // SumoDrivenCore (SUMO drives and signalsim observes, sumo_driven_core.hpp). A recorded sequence
-// of observations and feedback replays a core without SUMO (step/observation_json.hpp).
+// of observations and feedback replays a core without SUMO (step/step_recording.hpp).
 #pragma once
 
 #include "report/timeline.hpp"

@@ -83,9 +83,26 @@ StepObservation observation_of(const json& j) {
 
 }  // namespace
 
-RecordingCore::RecordingCore(RunCore& inner, std::ostream& out, double start_time) : inner_(inner), out_(out) {
-  out_ << json{{"format", "signalsim-steps"}, {"version", kStepRecordingVersion}, {"start_time", start_time}}.dump()
-       << '\n';
+namespace {
+
+// One line of JSON; text that is not UTF-8 (a SUMO id) is written with replacement characters.
+std::string line_of(const nlohmann::json& j) { return j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace); }
+
+}  // namespace
+
+void write_recording_header(std::ostream& out, const CoreSetup& setup) {
+  std::vector<bool> arrows;
+  for (const sumo::ApproachLight& light : setup.lights) arrows.push_back(light.has_arrow);
+  out << line_of({{"format", "signalsim-steps"},
+                  {"version", kStepRecordingVersion},
+                  {"start_time", setup.start_time},
+                  {"arrows", arrows}})
+      << '\n';
+}
+
+RunRecord RecordingCore::finish(int collisions) {
+  out_ << line_of({{"collisions", collisions}}) << '\n';
+  return inner_.finish(collisions);
 }
 
 Commands RecordingCore::step(const StepObservation& seen) {
@@ -94,45 +111,80 @@ Commands RecordingCore::step(const StepObservation& seen) {
 }
 
 bool RecordingCore::record(const StepObservation& seen, const StepFeedback& feedback) {
-  out_ << json{{"observation", observation_json(seen)}, {"commands", last_}, {"feedback", feedback}}.dump() << '\n';
+  out_ << line_of({{"observation", observation_json(seen)}, {"commands", last_}, {"feedback", feedback}}) << '\n';
   return inner_.record(seen, feedback);
 }
 
 StepRecording read_step_recording(std::istream& in, const std::string& source) {
   StepRecording recording;
+  recording.source = source;
   std::string line;
-  std::size_t number = 0;
+  int number = 0;
+  bool header = false;
   try {
     while (std::getline(in, line)) {
       ++number;
+      if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
       const json j = json::parse(line);
-      if (number == 1) {
-        if (j.value("format", "") != "signalsim-steps" || j.value("version", 0) != kStepRecordingVersion)
-          throw InputError(source, 1,
+      if (!header) {
+        if (!j.is_object() || j.value("format", "") != "signalsim-steps" || j.value("version", 0) != kStepRecordingVersion)
+          throw InputError(source, number,
                            "not a signalsim-steps recording of version " + std::to_string(kStepRecordingVersion));
         recording.start_time = j.at("start_time").get<double>();
-        continue;
+        recording.arrows = j.at("arrows").get<std::vector<bool>>();
+        header = true;
+      } else if (j.contains("collisions")) {
+        recording.collisions = j.at("collisions").get<int>();
+      } else {
+        recording.steps.push_back({observation_of(j.at("observation")), j.at("commands").get<Commands>(),
+                                   j.at("feedback").get<StepFeedback>()});
       }
-      recording.steps.push_back({observation_of(j.at("observation")), j.at("commands").get<Commands>(),
-                                 j.at("feedback").get<StepFeedback>()});
     }
   } catch (const json::exception& e) {
-    throw InputError(source, static_cast<int>(number), e.what());
+    throw InputError(source, number, std::string("not a recorded step: ") + e.what());
   }
-  if (number == 0) throw InputError(source, 0, "empty, not a signalsim-steps recording");
+  if (!header) throw InputError(source, 0, "empty, not a signalsim-steps recording");
   return recording;
 }
 
-Replay replay(RunCore& core, const StepRecording& recording, int collisions) {
+std::vector<sumo::ApproachLight> with_recorded_arrows(std::vector<sumo::ApproachLight> lights,
+                                                      const StepRecording& recording) {
+  if (lights.size() != recording.arrows.size())
+    throw InputError(recording.source, 1,
+                     "recorded with " + std::to_string(recording.arrows.size()) + " approach lights, the route has " +
+                         std::to_string(lights.size()));
+  for (std::size_t i = 0; i < lights.size(); ++i) lights[i].has_arrow = recording.arrows[i];
+  return lights;
+}
+
+std::string unrecorded(const ObservationDemand& want, const StepObservation& seen) {
+  for (const LightDemand& light : want.lights) {
+    const LightReading* reading = seen.light(light.tls_id);
+    if (!reading) return "light " + light.tls_id;
+    if (light.timing && !reading->timing) return "the timing of light " + light.tls_id;
+    if (light.programs && !reading->programs) return "the programs of light " + light.tls_id;
+  }
+  if (want.lateral_reference_lane && !seen.lateral_offset)
+    return "the lateral offset from " + *want.lateral_reference_lane;
+  if (want.signals && !seen.signals) return "the signal mask";
+  return "";
+}
+
+Replay replay(RunCore& core, const StepRecording& recording) {
   Replay out;
   for (const RecordedStep& step : recording.steps) {
-    core.demand(step.observation.ego);
+    const ObservationDemand want = core.demand(step.observation.ego);
+    if (const std::string missing = unrecorded(want, step.observation); !missing.empty()) {
+      out.unrecorded = "step " + std::to_string(out.steps) + " at " + std::to_string(step.observation.ego.time) +
+                       " s: the core asks for " + missing + ", which the recording does not hold";
+      break;
+    }
     const Commands commands = core.step(step.observation);
     if (!out.first_different_commands && !(commands == step.commands)) out.first_different_commands = out.steps;
     ++out.steps;
     if (core.record(step.observation, step.feedback)) break;
   }
-  out.record = core.finish(collisions);
+  out.record = core.finish(recording.collisions);
   return out;
 }
 

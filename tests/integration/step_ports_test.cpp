@@ -23,6 +23,7 @@
 #include "sim/session_setup.hpp"
 #include "sim/step_loop.hpp"
 #include "step/step_core.hpp"
+#include "step/sumo_driven_core.hpp"
 #include "step/step_recording.hpp"
 
 namespace signalsim {
@@ -39,20 +40,12 @@ std::string file_text(const fs::path& path) {
   return text.str();
 }
 
-// The run's timeline and events as written, and its stops and end, as one text.
-std::string outputs_of(const RunRecord& record, const fs::path& dir) {
-  fs::create_directories(dir);
-  write_timeline_csv((dir / "timeline.csv").string(), record.rows, record.v2i);
-  write_events_csv((dir / "events.csv").string(), record.events);
-  std::ostringstream text;
-  text << file_text(dir / "timeline.csv") << file_text(dir / "events.csv");
-  for (const LightStop& s : record.stops)
-    text << "stop " << s.tl_id << ' ' << s.time << ' ' << s.rest_s << ' ' << s.queued_behind << ' ' << s.waiting_at
-         << '\n';
-  for (const RedLightViolation& v : record.red_violations) text << "red " << v.tl_id << ' ' << v.time << '\n';
-  text << "arrived " << record.arrived << " off_route " << record.off_route_steps << '\n';
-  if (record.not_arrived) text << "not_arrived " << record.not_arrived->reason << ' ' << record.not_arrived->detail << '\n';
-  return text.str();
+// The run's files as written (timeline.csv, events.csv, summary.json: its stops, red crossings, light
+// log counts, lane changes, maneuver lines, off-plan stretches and end), as one text.
+std::string outputs_of(const Scenario& scenario, const sumo::RoutePlan& plan, const RunRecord& record,
+                       const fs::path& dir) {
+  write_run_outputs(dir.string(), scenario, plan, record, {}, RunStatus::NoExpectations);
+  return file_text(dir / "timeline.csv") + file_text(dir / "events.csv") + file_text(dir / "summary.json");
 }
 
 struct Recorded {
@@ -63,9 +56,10 @@ struct Recorded {
 
 // Runs `relative` on SUMO with its core recorded; the setup is kept for a replay.
 Recorded record_run(const std::string& relative, const StartedRun& run, CoreSetup setup) {
-  StepCore core(std::move(setup));
   std::ostringstream out;
-  RecordingCore recording(core, out, run.session->time());
+  write_recording_header(out, setup);
+  StepCore core(std::move(setup));
+  RecordingCore recording(core, out);
   Recorded r;
   r.record = run_steps(*run.session, recording);
   r.text = out.str();
@@ -87,12 +81,15 @@ TEST_P(StepReplay, GivesTheSameCommandsAndRecordWithoutSumo) {
   EXPECT_EQ(live.recording.steps.size(), live.record.rows.size());
 
   StepCore again(setup);
-  const Replay replayed = replay(again, live.recording, live.record.collisions);
+  const Replay replayed = replay(again, live.recording);
+  EXPECT_EQ(replayed.unrecorded, "");
   EXPECT_FALSE(replayed.first_different_commands.has_value())
       << relative << ": commands differ from step " << *replayed.first_different_commands;
   EXPECT_EQ(replayed.steps, live.recording.steps.size());
   const fs::path work = fs::temp_directory_path() / ("signalsim_replay_" + std::to_string(::getpid()));
-  EXPECT_EQ(outputs_of(replayed.record, work / "replayed"), outputs_of(live.record, work / "live")) << relative;
+  EXPECT_EQ(outputs_of(run.scenario, run.plan, replayed.record, work / "replayed"),
+            outputs_of(run.scenario, run.plan, live.record, work / "live"))
+      << relative;
   fs::remove_all(work);
 
   // The fixture of the SUMO-free replay test (tests/unit/step), written on request.
@@ -103,15 +100,44 @@ TEST_P(StepReplay, GivesTheSameCommandsAndRecordWithoutSumo) {
 }
 
 // A left turn at a light, a lane change waiting for a gap (target-lane traffic), V2I (programs and
-// timing), backing up (commands move_back), and a run that ends stuck behind an obstacle (the leader).
+// timing), backing up (commands move_back), a run that ends stuck behind an obstacle (the leader), and an
+// arrow program loaded from an additional file (the recording's arrows).
 INSTANTIATE_TEST_SUITE_P(Scenarios, StepReplay,
                          testing::Values("scenarios/intersection_left.yaml", "scenarios/lane_change_waits_for_gap.yaml",
                                          "scenarios/tl_v2i_red_predicted_stop.yaml",
                                          "scenarios/pull_out_backward_hazard.yaml",
-                                         "tests/data/scenarios/stuck_behind_obstacle.yaml"),
+                                         "tests/data/scenarios/stuck_behind_obstacle.yaml",
+                                         "tests/data/scenarios/arrow_program_left_yellow.yaml"),
                          [](const testing::TestParamInfo<std::string>& info) {
                            return fs::path(info.param).stem().string();
                          });
+
+// The SUMO-driven core replays the same way: it commands nothing, and its record (SUMO's blinker, the
+// stops SUMO made at a red light) comes from the observations alone.
+TEST(StepReplay, TheSumoDrivenCoreGivesTheSameRecordWithoutSumo) {
+  const std::string relative = "scenarios/tl_red_stop_then_go.yaml";
+  const Scenario scenario = load_scenario(source(relative));
+  const sumo::NetIndex net = sumo::NetIndex::load(scenario.net);
+  RunContext context;
+  context.sumo_drives = true;
+  const StartedRun run = start_run(plan_run(scenario, net), net, context);
+  const CoreSetup setup = core_setup(run, net);
+  std::ostringstream out;
+  write_recording_header(out, setup);
+  SumoDrivenCore live_core(setup);
+  RecordingCore recording_core(live_core, out);
+  const RunRecord live = run_steps(*run.session, recording_core);
+  ASSERT_FALSE(live.stops.empty());  // SUMO stopped at the red light on its own
+  std::istringstream in(out.str());
+  SumoDrivenCore again(setup);
+  const Replay replayed = replay(again, read_step_recording(in, relative));
+  EXPECT_EQ(replayed.unrecorded, "");
+  EXPECT_FALSE(replayed.first_different_commands.has_value());
+  const fs::path work = fs::temp_directory_path() / ("signalsim_replay_sumo_" + std::to_string(::getpid()));
+  EXPECT_EQ(outputs_of(run.scenario, run.plan, replayed.record, work / "replayed"),
+            outputs_of(run.scenario, run.plan, live, work / "live"));
+  fs::remove_all(work);
+}
 
 // SUMO's own record of a light's states (additional SaveTLSStates): each state from its time on.
 std::map<double, std::string> sumo_light_states(const fs::path& file, const std::string& tls) {
