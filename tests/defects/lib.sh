@@ -1,4 +1,4 @@
-# Shared helpers of the issue-13 regression scripts (sourced): $bin, $src, $work, fail, bad_input.
+# Shared helpers of the defect regression scripts (sourced): $bin, $src, $work, fail, bad_input.
 # usage in a script: source "$(dirname "$0")/lib.sh" "$@"   (arguments: SIGNALSIM_BINARY SOURCE_DIR)
 bin=$1
 src=$2

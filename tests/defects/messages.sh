@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Smaller points of issue 13: `--set key=` says "empty value"; a country code is checked against the
+# Messages: `--set key=` says "empty value"; a country code is checked against the
 # presets before it is used as a path (`../countries/jp` used to load config/countries/jp.yaml);
 # SUMO's multi-line messages come out as one line; two identical bad runs give identical error
 # summaries and batch error rows (no addresses, ports or process ids in them).

@@ -1,5 +1,5 @@
-// SUMO-free parts of the issue-13 fixes: the UTF-8 check of loaded text (defect 2) and the output
-// files written whole or not at all on a full disk (defect 7; /dev/full fails every write with ENOSPC).
+// SUMO-free parts of the defect regressions: the UTF-8 check of loaded text and the output
+// files written whole or not at all on a full disk (/dev/full fails every write with ENOSPC).
 #include <unistd.h>
 
 #include <filesystem>

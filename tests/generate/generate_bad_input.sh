@@ -44,7 +44,7 @@ expect_bad "nothing to generate (no roundabout)" "cross.net.xml: no route of 300
   "$cross" --count 3 --through roundabouts --out "$work/o9"
 expect_bad "nothing to generate (no internal lanes)" "no edge a passenger car may drive on to another" \
   "$src/tests/data/nets/line_nointernal.net.xml" --count 3 --min-length 10 --out "$work/o10"
-# Issue 11 points 5 and 8: --count and --seed are whole numbers in range (CLI11 wrapped -3 to 2^64-3
+# --count and --seed are whole numbers in range (CLI11 wrapped -3 to 2^64-3
 # and generate ran for ever), every number option is finite (CLI::Range let NaN through).
 expect_bad "count negative" "--count '-3': not a whole number in 1..10000" "$cross" --count -3 --out "$work/o11"
 expect_bad "count huge" "--count 100000000000: out of range 1..10000" "$cross" --count 100000000000 --out "$work/o12"
@@ -55,7 +55,7 @@ expect_bad "max-speed nan" "--max-speed: 'nan' is not a finite number" "$cross" 
 expect_bad "max-length inf" "--max-length: 'inf' is not a finite number" "$cross" --count 3 --max-length inf --out "$work/o16"
 expect_bad "min-length nan" "--min-length: 'nan' is not a finite number" "$cross" --count 3 --min-length nan --out "$work/o17"
 expect_bad "straight -inf" "--straight: '-inf' is not a finite number" "$cross" --count 3 --straight -inf --out "$work/o18"
-# Issue 11 point 7: a net signalsim reads but SUMO 1.15 does not load (a newer netconvert's vClass,
+# A net signalsim reads but SUMO 1.15 does not load (a newer netconvert's vClass,
 # as DLR's port_brunswick and port_cologne nets): refused, since no scenario on it could run.
 sed -e '0,/<lane id="in_S_0"/s|<lane id="in_S_0"|<lane id="in_S_0" disallow="cable_car"|' "$cross" > "$work/cable_car.net.xml"
 grep -q 'disallow="cable_car"' "$work/cable_car.net.xml" || fail "the cable_car net was not made"

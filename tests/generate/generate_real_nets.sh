@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue 11: routes generated on every bundled net and on the real net bologna_acosta (no country, jp,
+# Routes generated on every bundled net and on the real net bologna_acosta (no country, jp,
 # de, kr) and run as they are with `signalsim batch`: every run passes, i.e. arrives, crosses no stop
 # line on red and shows the blinkers the rules give (each file's expectations). Then the same files
 # with broken rules (--set) must fail, so the expectations have teeth; and `check --update` accepts

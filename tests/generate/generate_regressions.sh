@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
-# Issue 11 review, generate's promise that every generated scenario passes (`batch` exit 0):
-#   point 2: on DLR's TAVF-Hamburg net (tests/data/nets/tavf_hamburg) --seed 3 route 3 departed at
+# Generate's promise that every generated scenario passes (`batch` exit 0):
+#   a red light at departure: on DLR's TAVF-Hamburg net (tests/data/nets/tavf_hamburg) --seed 3 route 3 departed at
 #            13.8 m/s 39.7 m before a light red at t=0, closer than the judge's stopping distance
 #            (44.7 m): the judge passed and the ego crossed on red. The departure speed now lets a
 #            normal stop end before the first light.
-#   point 6: no route over a multi-lane bidirectional edge, where SUMO 1.15 aborts (SIGABRT).
+#   bidi edges: no route over a multi-lane bidirectional edge, where SUMO 1.15 aborts (SIGABRT).
 # usage: generate_regressions.sh SIGNALSIM_BINARY SOURCE_DIR
 set -u
 bin=$1

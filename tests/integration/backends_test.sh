@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The three ways to run give the same run (issue 10): embedded libsumo, --gui in sumo-gui under Xvfb,
+# The three ways to run give the same run: embedded libsumo, --gui in sumo-gui under Xvfb,
 # and --connect to a sumo started here with --remote-port on 127.0.0.1 that a second TraCI client
 # (SUMO's Python traci, sumo-tools) steps as client 1. Blinker events equal within 0.5 m (they are
 # identical), timelines and summaries (but for the `sumo` block) identical; the gui screenshot shows

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# A run does not depend on the size of its net (issue 16: the net index reads the route's elements on
+# A run does not depend on the size of its net (the net index reads the route's elements on
 # demand). netgenerate builds a 5x5 grid and a 26x50 grid with the same options (34 576 edges, as
 # many as Bad Hersfeld's 34 801), so the blocks around the route are the same; two laps around the
 # block B1 C1 C2 B2 (four lights, a left turn at each) give byte-identical timeline.csv and

@@ -56,7 +56,7 @@ check unknown_light_offset run "$bad/unknown_light_offset.yaml" -- "unknown_ligh
 check mid_run_sumo_error run "$bad/mid_run_sumo_error.yaml" -- "mid_run_sumo_error.yaml" "Vehicle 'bad' has no valid route"
 [ -f "$work/mid_run_sumo_error/events.csv" ] && { echo "FAIL mid_run_sumo_error: the old events.csv survived"; failures=$((failures + 1)); }
 
-# The user's SUMO files (issue 10).
+# The user's SUMO files: a missing or net-less sumocfg, ego ids, contradicting keys, refused options.
 check missing_sumocfg run "$bad/missing_sumocfg.yaml" -- "missing_sumocfg.yaml:2" "key 'sumocfg'" "nowhere.sumocfg' not found"
 check sumocfg_without_net run "$bad/sumocfg_without_net.yaml" -- "sumocfg_without_net.yaml:2" "no_net.sumocfg' names no net-file"
 check unknown_ego_id run "$bad/unknown_ego_id.yaml" -- "unknown_ego_id.yaml:4" "ego.id 'veh99'" "demand.rou.xml"
@@ -71,7 +71,7 @@ check refused_port run "$src/scenarios/intersection_left.yaml" --connect "127.0.
 check bad_connect_address run "$src/scenarios/intersection_left.yaml" --connect nowhere -- "--connect" "not HOST:PORT"
 DISPLAY= check gui_without_display run "$src/scenarios/intersection_left.yaml" --gui -- "--gui needs a display" "DISPLAY is not set"
 
-# Issue 11 point 10: the line the README promises, of the scenario or of the net (one block).
+# The line the README promises, of the scenario or of the net (one block).
 check light_not_on_route run "$bad/light_not_on_route.yaml" -- "light_not_on_route.yaml:7: expect\[1\]: traffic light 'ZZ' is not on the ego's route"
 check depart_beyond_edge_line run "$bad/depart_beyond_edge.yaml" -- "depart_beyond_edge.yaml:5: ego.depart_pos: 500 m is beyond the end of edge"
 check turn_signal_distance_abc run "$bad/turn_signal_distance_abc.yaml" -- "turn_signal_distance_abc.net.xml:40: lane 'ab_0': param 'turn_signal_distance' is not a number: 'abc'" "in ego.route of"

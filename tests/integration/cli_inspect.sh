@@ -27,8 +27,8 @@ code=$?
 grep -q "cross.net.xml: --route: route edge 'nope' is not in the net" "$work/bad.err" || fail "message: $(cat "$work/bad.err")"
 [ ! -s "$work/bad.out" ] || fail "unknown edge: output written: $(cat "$work/bad.out")"
 echo "ok   an unknown edge is exit 2 with one line"
-# Issue 11: a real city net whose netconvert (1.22) wrote two index-0 lanes on an internal edge
-# loads (SUMO 1.15 does), the defect is listed with its line, and the issue's route is shown.
+# A real city net whose netconvert (1.22) wrote two index-0 lanes on an internal edge
+# loads (SUMO 1.15 does), the defect is listed with its line, and a route through it is shown.
 acosta=$src/sumo_nets/bologna_acosta/acosta_buslanes.net.xml
 "$bin" inspect "$acosta" --route 131 117 209 > "$work/acosta.txt" 2> "$work/acosta.err" \
   || fail "bologna acosta: exit $?: $(cat "$work/acosta.err")"
@@ -50,7 +50,7 @@ code=$?
 [ ! -s "$work/nan.out" ] || fail "defect on the route: output written: $(cat "$work/nan.out")"
 "$bin" inspect "$work/nan.net.xml" --route cb bc > /dev/null || fail "a route beside the defect: exit $?"
 echo "ok   a defect the route uses is exit 2 with one line naming the net's line; a route beside it builds"
-# Issue 11, point 3: inspect says where the lane plan put the lane change and the room it has there
+# Inspect says where the lane plan put the lane change and the room it has there
 # (was: exit 2, the lane change on the 0.54 m edge 204[1][0] did not fit).
 "$bin" inspect "$acosta" --route 46 201 201c "204a[0]" "204b[0]" "204[1][0]" 125 > "$work/room.txt" 2> "$work/room.err" \
   || fail "room: exit $?: $(cat "$work/room.err")"
@@ -58,7 +58,7 @@ grep -qF "lane change on edge '201': lane 0 -> 1, a 3.20 m shift in 227.67 m of 
   || fail "room: $(grep "lane change" "$work/room.txt")"
 echo "ok   the lane change goes on the edge with the most room, and inspect names it"
 
-# Issue 11, point 4: a lane change across the bus lane 31_1 is exit 2 with one line.
+# A lane change across the bus lane 31_1 is exit 2 with one line.
 "$bin" inspect "$acosta" --route 165 31 113 > "$work/bus.out" 2> "$work/bus.err"
 code=$?
 [ "$code" = 2 ] || fail "bus lane: exit code $code, expected 2"

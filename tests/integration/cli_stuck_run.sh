@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# signalsim run on a scenario whose ego waits behind a vehicle that never moves (issue 11): the run
+# signalsim run on a scenario whose ego waits behind a vehicle that never moves: the run
 # ends after stuck_rest_time (60 s) at rest, not at its 300 s duration, with exit code 1, status
 # failed, arrived false and the reason in summary.json (not_arrived: stuck, the leader and its gap),
 # and the built-in check printed.

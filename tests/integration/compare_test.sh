@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# signalsim compare (issue 11) through the command line, real SUMO workers: a left turn, a roundabout
+# signalsim compare through the command line, real SUMO workers: a left turn, a roundabout
 # with the Japanese preset and a red light, each driven by signalsim and by SUMO alone.
 #   - comparison.csv: one row per section/light and driver in route order, with the values each
 #     model gives (SUMO's lead 7 s x 13.89 m/s before the lane end vs the decider's 3 v + 30; the

@@ -1,11 +1,11 @@
-// Issue 11, points 1, 4 and 9, in the real libsumo on real nets:
-//  - point 1: where a lane has several connections to the next route edge, the lane plan takes the
+// Lane choice in the real libsumo on real nets:
+//  - connections: where a lane has several connections to the next route edge, the lane plan takes the
 //    one SUMO takes (route/sumo_lane_choice.hpp), so the ego arrives on bologna_acosta's route through
 //    85_1 (two links to 72[0]); a divergence SUMO makes anyway is recorded (step/plan_watch.hpp):
 //    off_plan stretches, and a run ending off the plan says so, never "held by light";
-//  - point 4: lane permissions are the ego's own vClass (a taken-over bus may use a bus lane; a
+//  - permissions: lane permissions are the ego's own vClass (a taken-over bus may use a bus lane; a
 //    truck is never planned onto a lane that forbids trucks);
-//  - point 9: every light gets its own state at the line and decision, also one crossed while a
+//  - lights: every light gets its own state at the line and decision, also one crossed while a
 //    later light is braked for (two_lights_antiphase: A crossed on green while B is red).
 #include <gtest/gtest.h>
 

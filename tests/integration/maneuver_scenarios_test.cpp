@@ -1,4 +1,4 @@
-// Lateral maneuvers end to end on the real libsumo (issue 5): the bundled lane-change scenarios run
+// Lateral maneuvers end to end on the real libsumo: the bundled lane-change scenarios run
 // through run_scenario, and each step is checked against docs/behaviour.md §T8.2 (lane change, signalsim
 // activation: on once the front is within max(v * turn_signal_search_time,
 // turn_signal_minimum_search_distance) of the lane-changing start; off once base_link passes the

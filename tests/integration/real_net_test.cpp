@@ -1,7 +1,7 @@
-// Issue 11 on the bundled real net bologna_acosta (DLR-TS/sumo-scenarios, EPL-2.0), in the real
-// libsumo: the net loads although netconvert 1.22 wrote a repeated lane index on an internal edge
-// (point 1); a needed lane change goes on the edge with room for it, not on a 0.54 m or 15.6 m edge
-// (point 3); a lane change across a bus lane is refused at load (point 4). The scenarios are
+// The bundled real net bologna_acosta (DLR-TS/sumo-scenarios, EPL-2.0), in the real
+// libsumo: the net loads although netconvert 1.22 wrote a repeated lane index on an internal edge;
+// a needed lane change goes on the edge with room for it, not on a 0.54 m or 15.6 m edge; a lane
+// change across a bus lane is refused at load. The scenarios are
 // tests/data/scenarios/acosta_*.yaml (routes from randomTrips on the net; the published light
 // programs).
 #include <gmock/gmock.h>
@@ -44,7 +44,7 @@ RunRecord run_and_check(const Scenario& scenario, const sumo::RoutePlan& plan, c
   return record;
 }
 
-TEST(RealNet, TheIssuesRouteArrives) {
+TEST(RealNet, Route131To117To209Arrives) {
   Scenario s = load_scenario(scenario_path("acosta_lane_change_room"));
   s.ego.route = {"131", "117", "209"};
   const sumo::NetIndex net = sumo::NetIndex::load(s.net);

@@ -1,4 +1,4 @@
-// Issue 11, point 6: SUMO draws a speed factor per vehicle (speedDev 0.1 in 1.15), which capped the
+// SUMO draws a speed factor per vehicle (speedDev 0.1 in 1.15), which capped the
 // ego below the speeds signalsim plans (12.87 on 13.89 m/s lanes), differently per seed. The ego's
 // type has speed factor 1 with no deviation (docs/behaviour.md §S4): on every seed it reaches the lane limit.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Speed planning under a pending stop, end to end on the real libsumo (issue 11): a stop far ahead
+// Speed planning under a pending stop, end to end on the real libsumo: a stop far ahead
 // never holds the ego's speed down; it drives at the lane limits and brakes when the normal
 // jerk-limited profile says so, from rest, at a green light with a red one behind it, and after
 // slowing down for a bend.
@@ -34,7 +34,7 @@ double peak_speed(const RunRecord& r, double from, double until, const std::stri
 }
 
 TEST(SpeedPlanning, FromRestTwoHundredMetresBeforeARedLineItSpeedsUpAndStopsAtTheNormalLevel) {
-  // The issue's reproduction: red until 40 s, the line at s = 389.6 m, the ego at rest at s = 200 m.
+  // Red until 40 s, the line at s = 389.6 m, the ego at rest at s = 200 m.
   const RunRecord r = run(source("scenarios/tl_red_stop_then_go.yaml"), {{"ego.depart_speed=0", "ego.depart_pos=200"}});
   ASSERT_EQ(r.stops.size(), 1u) << "before: it crept at 0.2 m/s and never reached the line while red";
   const LightStop& stop = r.stops[0];

@@ -1,4 +1,4 @@
-// The stuck rule (step/stuck_watch, issue 11): a run whose ego cannot arrive ends early as a
+// The stuck rule (step/stuck_watch): a run whose ego cannot arrive ends early as a
 // clear failure with the reason, while every rest signalsim itself asks for (a red light, a lane
 // change's hold point, the pull-over goal) never counts. Real libsumo on real nets, plus the watch
 // alone.

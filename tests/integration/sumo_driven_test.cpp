@@ -1,4 +1,4 @@
-// The SUMO-driven mode (`run --driver sumo`, issue 11) on the real libsumo: the ego is inserted as
+// The SUMO-driven mode (`run --driver sumo`) on the real libsumo: the ego is inserted as
 // for signalsim but SUMO drives it, and the timeline records what SUMO did on its own. Each fact
 // checked here is SUMO's built-in behaviour as docs/behaviour.md §S5 describes it, measured: the blinker from
 // 7 s x the lane speed (capped by the ego's maximum speed) before the end of the current lane, for

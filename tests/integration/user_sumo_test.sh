@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# A user's own SUMO files (issue 10), through the command line on the real libsumo:
+# A user's own SUMO files, through the command line on the real libsumo:
 #  - a .sumocfg with route files and vehicle types: its net, routes, additional files, step length,
 #    end and seed are used, its own log option is ignored (listed), its relative tripinfo output
 #    lands in --out; vehicle veh42 of its route file is taken over as the ego (route, vType, departure

@@ -136,7 +136,7 @@ TEST(StopPlanner, StandingStill) {
 }
 
 // A cruise speed (the lane limits' plan for the step) is commanded while a normal stop from the
-// state it leads to stays feasible with the tracking margin (issue 11).
+// state it leads to stays feasible with the tracking margin.
 TEST(StopPlannerCruise, StandingWithAFarStopPullsAway) {
   const StopCommand c = plan_stop({0.0, 0.0, 40.0, kDt, 0.1});
   EXPECT_FALSE(c.braking);

@@ -6,7 +6,7 @@
 
 #include <regex>
 
-#include "test_files.hpp"
+#include "test_nets.hpp"
 
 namespace signalsim::sumo {
 namespace {

@@ -83,7 +83,7 @@ TEST(LanePlan, EmptyWhenOnlyForbiddenLanesConnect) {
   EXPECT_TRUE(plan.lanes.empty());
 }
 
-// ---- room (issue 11, point 3) ----------------------------------------------------------------------
+// ---- room: the tie-break between lane sequences by the room each lane change has -----------------
 
 /// Edges of `lanes` lanes 3.2 m wide with this room, at 13.89 m/s.
 std::vector<EdgeRoom> rooms(const std::vector<std::pair<int, double>>& lanes_and_room) {
@@ -144,7 +144,7 @@ TEST(LanePlanRoom, AFittingPlanBeatsFewerLaneChangesThatDoNotFit) {
   EXPECT_EQ(plan.unfit, 0);
 }
 
-// ---- lanes the ego may not use (issue 11, point 4) -----------------------------------------------
+// ---- lanes the ego may not use (its vClass) -------------------------------------------------------
 
 TEST(LanePlanForbidden, NeverCrossesABusLaneAnotherSequenceIsTaken) {
   // Edge 1 (3 lanes) and edge 2 (3 lanes, lane 1 a bus lane); only lane 2 of edge 2 leads on. The

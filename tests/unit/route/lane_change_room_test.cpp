@@ -1,5 +1,5 @@
 // The room of a lane change and whether it fits (route/lane_change_room.hpp): the one rule the lane
-// plan and the lateral planner share. Numbers of bologna_acosta's edges (issue 11).
+// plan and the lateral planner share. Numbers of bologna_acosta's edges.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -42,7 +42,7 @@ TEST(LaneChangeRoom, PhysicallySensibleLength) {
   EXPECT_DOUBLE_EQ(min_lane_change_length(0.1, 1.0, ego), kMinLaneChangeLength);
 }
 
-TEST(LaneChangeRoom, TheIssuesShiftOf6point4MetresIn5MetresDoesNotFit) {
+TEST(LaneChangeRoom, AShiftOf6point4MetresIn5MetresDoesNotFit) {
   const LaneChangeEgo ego;
   EXPECT_FALSE(lane_change_fits(7.68, 6.4, 13.89, ego));   // 31: 5.14 m, needs 28.15 m
   EXPECT_FALSE(lane_change_fits(7.68, 6.4, 1.0, ego));     // even crawling: sharper than a car steers

@@ -8,7 +8,7 @@
 
 #include "net/net_index.hpp"
 #include "route/route_builder.hpp"
-#include "test_files.hpp"
+#include "test_nets.hpp"
 
 namespace signalsim::sumo {
 namespace {
@@ -58,7 +58,7 @@ struct ChangedLine {
 
 const char* kLaneBc1 = "<lane id=\"bc_1\" index=\"1\" speed=\"13.89\" length=\"48.50\" shape=\"51.50,-1.60 100.00,-1.60\"/>";
 
-// ---- the real net of the issue ---------------------------------------------------------------------
+// ---- a real net with a defect: bologna_acosta -----------------------------------------------------
 
 TEST(NetDefectsReal, BolognaAcostaLoadsWithItsRepeatedInternalLaneIndexRecorded) {
   const NetIndex net = NetIndex::load(kAcosta);
@@ -74,7 +74,7 @@ TEST(NetDefectsReal, BolognaAcostaLoadsWithItsRepeatedInternalLaneIndexRecorded)
   EXPECT_EQ(net.edge(":9_17")->lanes[1].index, 1);
 }
 
-TEST(NetDefectsReal, TheIssuesRouteAndARouteThroughTheRepeatedIndexBuild) {
+TEST(NetDefectsReal, Route131To209AndARouteThroughTheRepeatedIndexBuild) {
   const NetIndex net = NetIndex::load(kAcosta);
   const RoutePlan issue = build_route(net, {"131", "117", "209"});
   EXPECT_EQ(issue.map.at(0).lane_id, "131_0");

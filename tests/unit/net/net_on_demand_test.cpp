@@ -14,7 +14,7 @@
 #include <sstream>
 
 #include "net/net_index.hpp"
-#include "test_files.hpp"
+#include "test_nets.hpp"
 
 namespace signalsim::sumo {
 namespace {

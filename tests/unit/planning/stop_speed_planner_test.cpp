@@ -1,7 +1,7 @@
 // The plan stage's speed under the stops ahead (planning/stop/stop_speed_planner), closed loop on a
 // point mass driven the way the step loop drives SUMO: the lane limits' speed (a constant limit,
 // +-1 m/s^2 per step as plan_speed_under_limits), one stop point, Euler positions (SUMO's default)
-// and the measured acceleration fed back as SUMO reports it, (v1 - v0) / dt (issue 11).
+// and the measured acceleration fed back as SUMO reports it, (v1 - v0) / dt.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -71,7 +71,7 @@ Trace drive(double v0, double stop_at, double after_time = 0.0,
 }
 
 TEST(StopSpeedPlanner, FromRestTowardAFarStopSpeedsUpAndStopsAtTheNormalLevel) {
-  // The issue's reproduction: at rest 189.6 m before a red stop line.
+  // At rest 189.6 m before a red stop line.
   const Trace r = drive(0.0, 189.6);
   EXPECT_FALSE(r.rested_early);
   EXPECT_GE(r.peak_speed, 12.0) << "speeds up as far as a normal stop allows (before: crept at 0.2 m/s)";

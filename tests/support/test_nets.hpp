@@ -1,4 +1,5 @@
-// Test helpers: the committed test nets and scratch files in a per-test temporary directory.
+// Helpers of the net and route unit tests (tests/unit/net, tests/unit/route): the committed test nets
+// (SIGNALSIM_TEST_NETS_DIR) and scratch files in a per-test temporary directory.
 #pragma once
 
 #include <zlib.h>

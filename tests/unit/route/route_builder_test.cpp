@@ -4,7 +4,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "test_files.hpp"
+#include "test_nets.hpp"
 
 namespace signalsim::sumo {
 namespace {
@@ -143,7 +143,7 @@ TEST(RouteBuilderParams, EdgeParamWithoutLaneParam) {
 }
 
 TEST(RouteBuilderParams, NonNumericTurnSignalDistance) {
-  // A defect of the edge at load (issue 11 point 10): the net's line, and inspect lists it.
+  // A defect of the edge at load: the error names the net's line, and inspect lists it.
   const std::string message = route_error(crossing(), {"n_in", "s_out"});
   EXPECT_THAT(message, HasSubstr("crossing.net.xml:137: edge 'n_in': param 'turn_signal_distance' is not a number: 'far'"));
 }

@@ -163,7 +163,7 @@ TEST(BehaviorSignal, OnSwervingFalseDisablesEveryShiftBlinker) {
   EXPECT_FALSE(r.is_ignore);  // NONE, not latched
   EXPECT_TRUE(is_none(r.info, avoid));
 
-  auto lane_leaving = shift_input(0.0, 3.5);  // leaves the lane entirely (issue #4470)
+  auto lane_leaving = shift_input(0.0, 3.5);  // leaves the lane entirely: still no blinker
   EXPECT_EQ(behavior_signal(lane_leaving, ego_front(95.0), p).info.turn, TurnIndicator::NoCommand);
 
   auto pull_out = shift_input(-2.5, 0.0);

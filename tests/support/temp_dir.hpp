@@ -1,4 +1,5 @@
 // A scratch folder of its own for a test (unique, so tests may run in parallel), removed at the end.
+// Shared by the unit tests of net/ and scenario/ (tests/unit/net, tests/unit/scenario).
 #pragma once
 
 #include <cstdlib>

@@ -1,8 +1,9 @@
-// Small builders shared by the behaviour-signal unit tests.
+// Small builders shared by the behaviour-signal unit tests (request and same_info: test_helpers.hpp).
 #pragma once
 
 #include "turn_signal/behavior_signal.hpp"
 #include "turn_signal/turn_signal_info.hpp"
+#include "test_helpers.hpp"  // request, same_info
 
 namespace signalsim::test {
 
@@ -36,23 +37,6 @@ inline bool is_empty(const TurnSignalInfo& info) {
   return info.turn == TurnIndicator::NoCommand && info.hazard == HazardLights::NoCommand &&
          info.source == RequestSource::None && info.desired_start == 0.0 && info.desired_end == 0.0 &&
          info.required_start == 0.0 && info.required_end == 0.0;
-}
-
-inline bool same_info(const TurnSignalInfo& a, const TurnSignalInfo& b) {
-  return a.turn == b.turn && a.hazard == b.hazard && a.source == b.source && a.desired_start == b.desired_start &&
-         a.desired_end == b.desired_end && a.required_start == b.required_start && a.required_end == b.required_end;
-}
-
-inline TurnSignalInfo request(TurnIndicator turn, double ds, double de, double rs, double re,
-                              RequestSource source = RequestSource::None) {
-  TurnSignalInfo info;
-  info.turn = turn;
-  info.source = source;
-  info.desired_start = ds;
-  info.desired_end = de;
-  info.required_start = rs;
-  info.required_end = re;
-  return info;
 }
 
 }  // namespace signalsim::test

@@ -7,7 +7,7 @@
 #include <chrono>
 #include <filesystem>
 
-#include "test_files.hpp"
+#include "test_nets.hpp"
 
 namespace signalsim::sumo {
 namespace {

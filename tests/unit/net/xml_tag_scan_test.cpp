@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "net/xml_tag_scan.hpp"
-#include "test_files.hpp"
+#include "test_nets.hpp"
 
 namespace signalsim::sumo {
 namespace {
