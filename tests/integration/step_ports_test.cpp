@@ -25,20 +25,12 @@
 #include "step/step_core.hpp"
 #include "step/sumo_driven_core.hpp"
 #include "step/step_recording.hpp"
+#include "source_files.hpp"
 
 namespace signalsim {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string source(const std::string& relative) { return std::string(SIGNALSIM_SOURCE_DIR) + "/" + relative; }
-
-std::string file_text(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 // The run's files as written (timeline.csv, events.csv, summary.json: its stops, red crossings, light
 // log counts, lane changes, maneuver lines, off-plan stretches and end), as one text.
@@ -72,7 +64,7 @@ class StepReplay : public testing::TestWithParam<std::string> {};
 
 TEST_P(StepReplay, GivesTheSameCommandsAndRecordWithoutSumo) {
   const std::string relative = GetParam();
-  const Scenario scenario = load_scenario(source(relative));
+  const Scenario scenario = load_scenario(source_path(relative));
   const sumo::NetIndex net = sumo::NetIndex::load(scenario.net);
   const StartedRun run = start_run(plan_run(scenario, net), net, RunContext{});
   const CoreSetup setup = core_setup(run, net);
@@ -116,7 +108,7 @@ INSTANTIATE_TEST_SUITE_P(Scenarios, StepReplay,
 // stops SUMO made at a red light) comes from the observations alone.
 TEST(StepReplay, TheSumoDrivenCoreGivesTheSameRecordWithoutSumo) {
   const std::string relative = "scenarios/tl_red_stop_then_go.yaml";
-  const Scenario scenario = load_scenario(source(relative));
+  const Scenario scenario = load_scenario(source_path(relative));
   const sumo::NetIndex net = sumo::NetIndex::load(scenario.net);
   RunContext context;
   context.sumo_drives = true;
@@ -159,7 +151,7 @@ TEST(StepRows, TheNextLightsStateIsSumosAtTheRowsTime) {
                                       << (work / "tls.xml").string() << "\"/></additional>\n";
   ScenarioOverrides overrides;
   overrides.set = {"forward_path_length=50", "duration=40"};
-  Scenario scenario = load_scenario(source("scenarios/intersection_straight.yaml"), overrides);
+  Scenario scenario = load_scenario(source_path("scenarios/intersection_straight.yaml"), overrides);
   scenario.additional.push_back((work / "tls.add.xml").string());
   scenario.light_offsets["C"] = 20.0;  // green ends at 10 s, while the light is beyond the horizon
   const sumo::NetIndex net = sumo::NetIndex::load(scenario.net);

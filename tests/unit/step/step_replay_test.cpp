@@ -24,29 +24,21 @@
 #include "step/route_planning.hpp"
 #include "step/step_core.hpp"
 #include "step/step_recording.hpp"
+#include "source_files.hpp"
 
 namespace signalsim {
 namespace {
 
 namespace fs = std::filesystem;
 
-std::string source(const std::string& relative) { return std::string(SIGNALSIM_SOURCE_DIR) + "/" + relative; }
-
-std::string file_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 StepRecording recording(const std::string& relative) {
-  std::ifstream in(source(relative), std::ios::binary);
+  std::ifstream in(source_path(relative), std::ios::binary);
   return read_step_recording(in, relative);
 }
 
 // intersection_left's core, built without SUMO.
 struct IntersectionLeft {
-  Scenario scenario = load_scenario(source("scenarios/intersection_left.yaml"));
+  Scenario scenario = load_scenario(source_path("scenarios/intersection_left.yaml"));
   sumo::NetIndex net = sumo::NetIndex::load(scenario.net);
   sumo::RoutePlan plan = plan_route(scenario, net);
   LateralPlan lateral = plan_lateral(scenario, plan, net);
@@ -69,7 +61,7 @@ TEST(StepReplay, IntersectionLeftGivesTheRecordedCommandsAndTheGoldenEvents) {
   EXPECT_TRUE(replayed.record.arrived);
   const fs::path events = fs::temp_directory_path() / ("signalsim_replay_events_" + std::to_string(::getpid()) + ".csv");
   write_events_csv(events.string(), replayed.record.events);
-  EXPECT_EQ(file_text(events.string()), file_text(source("tests/golden/intersection_left.events.csv")));
+  EXPECT_EQ(file_text(events.string()), file_text(source_path("tests/golden/intersection_left.events.csv")));
   fs::remove(events);
 }
 
