@@ -100,8 +100,8 @@ ObservationDemand StepCore::demand(const sumo::EgoState& ego) {
 
 // observe: whether SUMO left the lane plan, and the lateral offset, measured against the planned lane
 // while the ego is on a segment's edge.
-StepCore::Now StepCore::observe(const StepObservation& seen) {
-  Now now;
+StepNow StepCore::observe(const StepObservation& seen) {
+  StepNow now;
   now.sumo = seen.ego;
   if (!place_.on_route) ++record_.off_route_steps;  // the lane is not on the route: s held (counted)
   const double s_front = place_.s_front;
@@ -130,9 +130,9 @@ std::vector<OccupiedSpan> StepCore::target_lane_traffic(const StepObservation& s
 // decide (the decider takes the window of route lanelets around base_link itself, since its back
 // length depends on the roundabouts, docs/behaviour.md §T3.2), light, plan; then the commands.
 Commands StepCore::step(const StepObservation& seen) {
-  Pending& p = pending_.emplace();
+  PendingStep& p = pending_.emplace();
   p.now = observe(seen);
-  const Now& now = p.now;
+  const StepNow& now = p.now;
   p.behavior = behavior_.step({.now = now.sumo.time,
                                .ego = now.ego,
                                .accel = now.sumo.accel,
@@ -151,8 +151,8 @@ Commands StepCore::step(const StepObservation& seen) {
 
 // light: every judge in the window (docs/behaviour.md §L); the ego brakes for the nearest stop requested by any
 // of them, and the timeline describes that light, else the nearest one.
-StepCore::Lights StepCore::light(const Now& now, const StepObservation& seen) {
-  Lights out;
+StepLights StepCore::light(const StepNow& now, const StepObservation& seen) {
+  StepLights out;
   out.steps = lights_.step(now.sumo.time, now.ego.s_front, now.sumo.speed, now.sumo.accel, seen);
   for (const LightStep& l : out.steps)
     if (l.result.stop_point_distance &&
@@ -165,7 +165,7 @@ StepCore::Lights StepCore::light(const Now& now, const StepObservation& seen) {
   return out;
 }
 // plan: lane limits, and a jerk-limited stop for each stop point (planning/stop/stop_speed_planner).
-StepCore::SpeedPlan StepCore::plan_speed(const Now& now, const BehaviorStage::Result& behavior, const Lights& lights) {
+SpeedPlan StepCore::plan_speed(const StepNow& now, const BehaviorStage::Result& behavior, const StepLights& lights) {
   SpeedPlan plan;
   // A light the judge passes on a stop signal (pass_through_yellow: it cannot stop, and reaches the
   // line within the yellow lamp period at its current speed) is crossed at that speed: the limits
@@ -209,8 +209,8 @@ StepCore::SpeedPlan StepCore::plan_speed(const Now& now, const BehaviorStage::Re
 // The commands: SUMO's modes (right of way, lane limits, emergency braking), the blinker bits and the
 // speed (re-sent every step, docs/behaviour.md §S4), the lateral plan's offset where base_link will be
 // after the step (normal lanes of the plan's edge only), the back-up.
-Commands StepCore::commands(const Pending& step) {
-  const Now& now = step.now;
+Commands StepCore::commands(const PendingStep& step) {
+  const StepNow& now = step.now;
   Commands c;
   c.right_of_way = step.lights.sumo_right_of_way;
   c.lane_limits = step.plan.sumo_lane_limits;
@@ -231,8 +231,8 @@ Commands StepCore::commands(const Pending& step) {
 // record: one timeline row, with the mask SUMO showed while executing the decision; the next light's
 // state as observed with the row; events on change; stops and red crossings; every light's own entry.
 bool StepCore::record(const StepObservation& seen, const StepFeedback& feedback) {
-  const Pending& p = *pending_;
-  const Now& now = p.now;
+  const PendingStep& p = *pending_;
+  const StepNow& now = p.now;
   TimelineRow row = timeline_row(now.sumo, now.ego, now.lateral_offset, p.planned_offset, p.blinker.blinker,
                                  p.blinker.source, p.lights.shown, p.plan.stop_level);
   row.sumo_signals = feedback.alive ? feedback.signals : -1;

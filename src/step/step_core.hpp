@@ -48,6 +48,53 @@ struct CoreSetup {
 /// or the sumocfg's `end`, whichever comes first (docs/sumo.md).
 double run_end_time(const Scenario& scenario, double start_time);
 
+// The values StepCore's stages hand to each other within one step (namespace scope: a nested struct
+// with default member initializers is not default-constructible inside its class for clang).
+
+/// observe: the ego against the route and the plans, as demand() located it.
+struct StepNow {
+  sumo::EgoState sumo;                      ///< as SUMO reports it
+  EgoOnRoute ego;                           ///< s_front, s_base; speed signed (negative while backing up)
+  bool backing = false;                     ///< emulated backward driving (pull out with `backward`)
+  bool off_plan = false;                    ///< on a lane the lane plan does not list (PlanWatch)
+  const LateralSegment* segment = nullptr;  ///< the lateral plan's segment on the ego's edge, if any
+  double lateral_offset = 0.0;              ///< [m] from the segment's planned lane, else from SUMO's lane
+};
+
+/// decide: the blinker and the request it came from.
+struct BlinkerChoice {
+  Blinker blinker = Blinker::None;
+  RequestSource source = RequestSource::None;
+};
+
+/// light: every light in the judges' window this step, nearest first.
+struct StepLights {
+  std::vector<LightStep> steps;
+  const LightStep* stopping = nullptr;  ///< the light the ego brakes for: the nearest stop requested
+  const LightStep* shown = nullptr;     ///< the light the row describes: stopping, else the nearest
+  bool sumo_right_of_way = true;        ///< false while a light decides the next junction
+};
+
+/// plan: the speed commanded for the step, SUMO's modes for it, and what holds the ego.
+struct SpeedPlan {
+  double speed = 0.0;                   ///< [m/s] commanded (0 while backing up)
+  std::optional<StopLevel> stop_level;  ///< the constraint set of the light's stop, if braking for one
+  bool sumo_lane_limits = true;         ///< false while crossing a line passed on a stop signal
+  bool emergency_braking = false;       ///< SUMO may brake beyond the ego's decel
+  std::string held_by;                  ///< what of signalsim holds the ego at rest ("" when nothing)
+  bool queued = false;                  ///< at rest in a queue before a light asking for a stop
+};
+
+/// A step of StepCore between step() and record().
+struct PendingStep {
+  StepNow now;
+  BehaviorStage::Result behavior;
+  std::optional<double> planned_offset;  ///< [m] on a segment's edge only
+  BlinkerChoice blinker;
+  StepLights lights;
+  SpeedPlan plan;
+};
+
 class StepCore final : public RunCore {
  public:
   explicit StepCore(CoreSetup setup);
@@ -60,51 +107,11 @@ class StepCore final : public RunCore {
   RunRecord finish(int collisions) override;
 
  private:
-  /// observe: the ego against the route and the plans, as demand() located it.
-  struct Now {
-    sumo::EgoState sumo;                      ///< as SUMO reports it
-    EgoOnRoute ego;                           ///< s_front, s_base; speed signed (negative while backing up)
-    bool backing = false;                     ///< emulated backward driving (pull out with `backward`)
-    bool off_plan = false;                    ///< on a lane the lane plan does not list (PlanWatch)
-    const LateralSegment* segment = nullptr;  ///< the lateral plan's segment on the ego's edge, if any
-    double lateral_offset = 0.0;              ///< [m] from the segment's planned lane, else from SUMO's lane
-  };
-  /// decide: the blinker and the request it came from.
-  struct BlinkerChoice {
-    Blinker blinker = Blinker::None;
-    RequestSource source = RequestSource::None;
-  };
-  /// light: every light in the judges' window this step, nearest first.
-  struct Lights {
-    std::vector<LightStep> steps;
-    const LightStep* stopping = nullptr;  ///< the light the ego brakes for: the nearest stop requested
-    const LightStep* shown = nullptr;     ///< the light the row describes: stopping, else the nearest
-    bool sumo_right_of_way = true;        ///< false while a light decides the next junction
-  };
-  /// plan: the speed commanded for the step, SUMO's modes for it, and what holds the ego.
-  struct SpeedPlan {
-    double speed = 0.0;                   ///< [m/s] commanded (0 while backing up)
-    std::optional<StopLevel> stop_level;  ///< the constraint set of the light's stop, if braking for one
-    bool sumo_lane_limits = true;         ///< false while crossing a line passed on a stop signal
-    bool emergency_braking = false;       ///< SUMO may brake beyond the ego's decel
-    std::string held_by;                  ///< what of signalsim holds the ego at rest ("" when nothing)
-    bool queued = false;                  ///< at rest in a queue before a light asking for a stop
-  };
-  /// A step between step() and record().
-  struct Pending {
-    Now now;
-    BehaviorStage::Result behavior;
-    std::optional<double> planned_offset;  ///< [m] on a segment's edge only
-    BlinkerChoice blinker;
-    Lights lights;
-    SpeedPlan plan;
-  };
-
-  Now observe(const StepObservation& seen);
+  StepNow observe(const StepObservation& seen);
   std::vector<OccupiedSpan> target_lane_traffic(const StepObservation& seen, double s_base) const;
-  Lights light(const Now& now, const StepObservation& seen);
-  SpeedPlan plan_speed(const Now& now, const BehaviorStage::Result& behavior, const Lights& lights);
-  Commands commands(const Pending& step);
+  StepLights light(const StepNow& now, const StepObservation& seen);
+  SpeedPlan plan_speed(const StepNow& now, const BehaviorStage::Result& behavior, const StepLights& lights);
+  Commands commands(const PendingStep& step);
   bool ended(const StepObservation& seen, const StepFeedback& feedback, const SpeedPlan& plan);
   bool end_not_arrived(const std::string& reason, const std::optional<LeaderInfo>& leader);
 
@@ -135,7 +142,7 @@ class StepCore final : public RunCore {
   bool departed_ = false;       // it has moved (start planner: has_departed)
   double backed_up_ = 0.0;      // [m] emulated backward driving done so far
 
-  std::optional<Pending> pending_;
+  std::optional<PendingStep> pending_;
   RunRecord record_;
 };
 
