@@ -4,12 +4,6 @@
 #include <algorithm>
 
 namespace signalsim {
-namespace {
-
-bool is_red(char state) { return state == 'r' || state == 'u'; }
-
-}  // namespace
-
 void LightOutcomes::observe(const TimelineRow& row, const std::vector<LightStep>& lights, const LightStep* stopping,
                             const std::optional<LeaderInfo>& leader, const RouteMap& route, RunRecord& record) {
   // A stop: the first step at rest while a stop is requested; a new one only after moving again.
@@ -43,13 +37,11 @@ void LightOutcomes::observe(const TimelineRow& row, const std::vector<LightStep>
   if (!at_rest) resting_ = false;
   if (row.stop_level) worst_level_ = std::max(worst_level_, *row.stop_level);
   if (!stopping) worst_level_ = StopLevel::Normal;
-  // A red crossing: the front passes a stop line (beyond a 5 cm stopping tolerance) during a step
-  // that began with the ego's link red. Every light in the window is checked, not only the nearest.
+  // Red crossings (crossed_on_red), at every light in the window, not only the nearest.
   for (const LightStep& light : lights) {
-    const double line = light.light->s_stop_line + kCrossingTolerance;
     auto previous = previous_.find(light.light->route_index);
-    if (previous != previous_.end() && previous->second.front <= line && row.s_front > line &&
-        is_red(previous->second.state))
+    if (previous != previous_.end() &&
+        crossed_on_red(previous->second.front, row.s_front, light.light->s_stop_line, previous->second.state))
       record.red_violations.push_back({light.light->tls_id, row.time, row.s_front});
     previous_[light.light->route_index] = {row.s_front, light.own_state};
   }

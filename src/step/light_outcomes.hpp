@@ -16,6 +16,17 @@
 
 namespace signalsim {
 
+/// [m] a front this far beyond a stop line has crossed it (a stopping tolerance).
+inline constexpr double kCrossingTolerance = 0.05;
+
+/// A red crossing: during the step from `previous_front` to `front` [m route s] the front passed
+/// `stop_line` + kCrossingTolerance while the ego's link showed `state_at_step_start` red (r or u). Both
+/// drivers count red crossings by this rule.
+inline bool crossed_on_red(double previous_front, double front, double stop_line, char state_at_step_start) {
+  const double line = stop_line + kCrossingTolerance;
+  return previous_front <= line && front > line && (state_at_step_start == 'r' || state_at_step_start == 'u');
+}
+
 class LightOutcomes {
  public:
   /// `stop_margin` [m]: the judge's (a stop's error is measured against stop line - stop_margin).
@@ -37,7 +48,6 @@ class LightOutcomes {
     double front = 0.0;
     char state = 0;
   };
-  static constexpr double kCrossingTolerance = 0.05;  // [m]
   static constexpr double kQueueGap = 0.5;            // [m] closer to its stop point, the ego stopped itself
   double stop_margin_;
   bool resting_ = false;

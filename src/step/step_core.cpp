@@ -86,8 +86,7 @@ StepCore::StepCore(CoreSetup setup)
 ObservationDemand StepCore::demand(const sumo::EgoState& ego) {
   place_ = locator_.locate(ego.lane, ego.edge, ego.lane_pos);
   const double s_front = place_.s_front;
-  const bool backing = backed_up_ < lateral_.backward - 1e-9;
-  const double row_speed = backing ? -kBackwardSpeed : ego.speed;
+  const double row_speed = row_speed_of(ego.speed);
   ObservationDemand want;
   if (const LateralSegment* seg = behavior_.plan().on_edge(ego.edge)) want.lateral_reference_lane = seg->reference_lane;
   if (const LateralSegment* waiting = behavior_.waiting_lane_change(s_front - b2f_))
@@ -98,6 +97,13 @@ ObservationDemand StepCore::demand(const sumo::EgoState& ego) {
   return want;
 }
 
+// Backing up (pull out with `backward`, emulated): not driving forward, until the plan's distance is
+// backed up.
+bool StepCore::backing() const { return backed_up_ < lateral_.backward - 1e-9; }
+
+// The row's signed speed: negative while backing up, else SUMO's.
+double StepCore::row_speed_of(double sumo_speed) const { return backing() ? -kBackwardSpeed : sumo_speed; }
+
 // observe: whether SUMO left the lane plan, and the lateral offset, measured against the planned lane
 // while the ego is on a segment's edge.
 StepNow StepCore::observe(const StepObservation& seen) {
@@ -106,9 +112,8 @@ StepNow StepCore::observe(const StepObservation& seen) {
   if (!place_.on_route) ++record_.off_route_steps;  // the lane is not on the route: s held (counted)
   const double s_front = place_.s_front;
   now.off_plan = plan_watch_.observe(now.sumo.lane, now.sumo.edge, place_.index, s_front, now.sumo.time, record_);
-  // Backing up (pull out with `backward`, emulated): not driving forward, negative speed.
-  now.backing = backed_up_ < lateral_.backward - 1e-9;
-  now.ego = EgoOnRoute{s_front, s_front - b2f_, now.backing ? -kBackwardSpeed : now.sumo.speed};
+  now.backing = backing();
+  now.ego = EgoOnRoute{s_front, s_front - b2f_, row_speed_of(now.sumo.speed)};
   if (now.sumo.speed > kRestSpeed) departed_ = true;
   now.segment = behavior_.plan().on_edge(now.sumo.edge);
   now.lateral_offset = now.segment ? seen.lateral_offset.value() : now.sumo.lateral_offset;
@@ -235,7 +240,7 @@ bool StepCore::record(const StepObservation& seen, const StepFeedback& feedback)
   const StepNow& now = p.now;
   TimelineRow row = timeline_row(now.sumo, now.ego, now.lateral_offset, p.planned_offset, p.blinker.blinker,
                                  p.blinker.source, p.lights.shown, p.plan.stop_level);
-  row.sumo_signals = feedback.alive ? feedback.signals : -1;
+  row.sumo_signals = feedback.signals;  // -1 once the ego arrived
   if (!p.lights.shown)
     if (const sumo::ApproachLight* next = lights_.next_light())  // beyond the horizon
       if (const LightReading* reading = seen.light(next->tls_id)) show_next_light(row, *next, reading->state);

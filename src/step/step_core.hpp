@@ -107,6 +107,8 @@ class StepCore final : public RunCore {
   RunRecord finish(int collisions) override;
 
  private:
+  bool backing() const;
+  double row_speed_of(double sumo_speed) const;
   StepNow observe(const StepObservation& seen);
   std::vector<OccupiedSpan> target_lane_traffic(const StepObservation& seen, double s_base) const;
   StepLights light(const StepNow& now, const StepObservation& seen);

@@ -5,19 +5,17 @@
 #include <utility>
 
 #include "session/sumo_session.hpp"
+#include "step/light_outcomes.hpp"
 #include "step/stuck_watch.hpp"
 
 namespace signalsim {
 namespace {
 
-constexpr double kCrossingTolerance = 0.05;  // [m] a red crossing is 5 cm beyond the line, as StepCore
 constexpr double kLeftBehind = 2.0;          // [m] past its stop line a light is left behind (docs/behaviour.md §L1.2)
 constexpr double kLightWindow = 300.0;       // [m] lights ahead whose states are followed
 
-bool is_red(char state) { return state == 'r' || state == 'u'; }
-
-// SUMO stops for these on its own; a rest at a green link (yielding) is no stop at the light.
-bool asks_to_stop(char state) { return is_red(state) || state == 'y' || state == 'Y'; }
+// SUMO stops for these on its own (red, yellow); a rest at a green link (yielding) is no stop at the light.
+bool asks_to_stop(char state) { return state == 'r' || state == 'u' || state == 'y' || state == 'Y'; }
 
 char link_state(const LightReading* reading, int link_index) {
   if (!reading || link_index < 0 || static_cast<std::size_t>(link_index) >= reading->state.size()) return 0;
@@ -57,9 +55,8 @@ void LightWatch::observe(const TimelineRow& row, const StepObservation& seen, Ru
   // Red crossings: the state each light had at the previous row is the one the step began with.
   for (std::size_t k = nearest_; k < lights_.size(); ++k) {
     const sumo::ApproachLight& light = lights_[k];
-    const double line = light.s_stop_line + kCrossingTolerance;
-    if (line > row.s_front + kLightWindow) break;
-    if (have_previous_ && previous_front_ <= line && row.s_front > line && is_red(states_[k]))
+    if (light.s_stop_line + kCrossingTolerance > row.s_front + kLightWindow) break;
+    if (have_previous_ && crossed_on_red(previous_front_, row.s_front, light.s_stop_line, states_[k]))
       record.red_violations.push_back({light.tls_id, row.time, row.s_front});
     states_[k] = link_state(seen.light(light.tls_id), light.link_index);
   }
@@ -111,19 +108,10 @@ Commands SumoDrivenCore::step(const StepObservation&) { return Commands{.drive =
 bool SumoDrivenCore::record(const StepObservation& seen, const StepFeedback& feedback) {
   const sumo::EgoState& observed = seen.ego;
   if (!place_.on_route) ++record_.off_route_steps;  // the lane is not on the route: s held (counted)
-  TimelineRow row;
-  row.time = observed.time;
-  row.s_front = place_.s_front;
-  row.x = observed.x;
-  row.y = observed.y;
-  row.speed = observed.speed;
-  row.accel = observed.accel;
-  row.edge = observed.edge;
-  row.lane = observed.lane;
-  row.lateral_offset = observed.lateral_offset;
   const int signals = seen.signals.value_or(0);
-  row.blinker = blinker_of_signals(signals);
-  row.blinker_source = row.blinker == Blinker::None ? RequestSource::None : RequestSource::Sumo;
+  const EgoOnRoute ego{place_.s_front, place_.s_front - record_.base_link_to_front, observed.speed};
+  TimelineRow row = timeline_row(observed, ego, observed.lateral_offset, std::nullopt, blinker_of_signals(signals),
+                                 RequestSource::Sumo, nullptr, std::nullopt);
   row.sumo_signals = signals;
   lights_.observe(row, seen, record_);
   if (const sumo::ApproachLight* light = lights_.nearest()) {
@@ -133,11 +121,7 @@ bool SumoDrivenCore::record(const StepObservation& seen, const StepFeedback& fee
   const bool off_plan = place_.on_route && !place_.on_plan;
   if (off_plan) note_off_plan(record_, row, route_.at(place_.index).lane_id, previous_off_plan_);
   previous_off_plan_ = off_plan;
-  if (row.blinker != previous_blinker_) {
-    record_.events.push_back({row.time, row.s_front, "blinker", std::string(to_string(previous_blinker_)),
-                              std::string(to_string(row.blinker)), std::string(to_string(row.blinker_source))});
-    previous_blinker_ = row.blinker;
-  }
+  events_.record(row, {}, record_);  // the blinker's changes (no judge, no lane-change phases)
   record_.rows.push_back(std::move(row));
   if (!feedback.alive) {
     record_.arrived = true;

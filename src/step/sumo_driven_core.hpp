@@ -28,6 +28,7 @@
 #include "scenario/scenario.hpp"
 #include "step/run_core.hpp"
 #include "step/step_core.hpp"
+#include "step/step_record.hpp"
 
 namespace signalsim {
 
@@ -74,7 +75,7 @@ class SumoDrivenCore final : public RunCore {
   RouteLocator locator_;
   RouteLocator::Place place_;
   bool previous_off_plan_ = false;
-  Blinker previous_blinker_ = Blinker::None;
+  StepEvents events_;
   RunRecord record_;
 };
 

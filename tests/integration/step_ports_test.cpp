@@ -46,11 +46,10 @@ struct Recorded {
   std::string text;  // the recording as written
 };
 
-// Runs `relative` on SUMO with its core recorded; the setup is kept for a replay.
-Recorded record_run(const std::string& relative, const StartedRun& run, CoreSetup setup) {
+// Runs `relative` on SUMO with `core` (built from `setup`) recorded.
+Recorded record_run(const std::string& relative, const StartedRun& run, const CoreSetup& setup, RunCore& core) {
   std::ostringstream out;
   write_recording_header(out, setup);
-  StepCore core(std::move(setup));
   RecordingCore recording(core, out);
   Recorded r;
   r.record = run_steps(*run.session, recording);
@@ -68,7 +67,8 @@ TEST_P(StepReplay, GivesTheSameCommandsAndRecordWithoutSumo) {
   const sumo::NetIndex net = sumo::NetIndex::load(scenario.net);
   const StartedRun run = start_run(plan_run(scenario, net), net, RunContext{});
   const CoreSetup setup = core_setup(run, net);
-  const Recorded live = record_run(relative, run, setup);
+  StepCore live_core(setup);
+  const Recorded live = record_run(relative, run, setup, live_core);
   ASSERT_FALSE(live.recording.steps.empty());
   EXPECT_EQ(live.recording.steps.size(), live.record.rows.size());
 
@@ -114,20 +114,16 @@ TEST(StepReplay, TheSumoDrivenCoreGivesTheSameRecordWithoutSumo) {
   context.sumo_drives = true;
   const StartedRun run = start_run(plan_run(scenario, net), net, context);
   const CoreSetup setup = core_setup(run, net);
-  std::ostringstream out;
-  write_recording_header(out, setup);
   SumoDrivenCore live_core(setup);
-  RecordingCore recording_core(live_core, out);
-  const RunRecord live = run_steps(*run.session, recording_core);
-  ASSERT_FALSE(live.stops.empty());  // SUMO stopped at the red light on its own
-  std::istringstream in(out.str());
+  const Recorded live = record_run(relative, run, setup, live_core);
+  ASSERT_FALSE(live.record.stops.empty());  // SUMO stopped at the red light on its own
   SumoDrivenCore again(setup);
-  const Replay replayed = replay(again, read_step_recording(in, relative));
+  const Replay replayed = replay(again, live.recording);
   EXPECT_EQ(replayed.unrecorded, "");
   EXPECT_FALSE(replayed.first_different_commands.has_value());
   const fs::path work = fs::temp_directory_path() / ("signalsim_replay_sumo_" + std::to_string(::getpid()));
   EXPECT_EQ(outputs_of(run.scenario, run.plan, replayed.record, work / "replayed"),
-            outputs_of(run.scenario, run.plan, live, work / "live"));
+            outputs_of(run.scenario, run.plan, live.record, work / "live"));
   fs::remove_all(work);
 }
 
