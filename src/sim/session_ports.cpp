@@ -1,11 +1,13 @@
 // Reading a step's observation from SUMO and applying its commands; see session_ports.hpp.
 #include "sim/session_ports.hpp"
 
+#include <utility>
+
 namespace signalsim {
 
-StepObservation observe(const sumo::SumoSession& session, const sumo::EgoState& ego, const ObservationDemand& want) {
+StepObservation observe(const sumo::SumoSession& session, sumo::EgoState ego, const ObservationDemand& want) {
   StepObservation seen;
-  seen.ego = ego;
+  seen.ego = std::move(ego);
   if (want.lateral_reference_lane) seen.lateral_offset = session.lateral_offset_from(*want.lateral_reference_lane);
   if (want.lane_traffic) seen.lane_traffic = session.vehicles_on_lane(*want.lane_traffic);
   seen.lights.reserve(want.lights.size());

@@ -11,7 +11,7 @@ namespace signalsim {
 
 /// The step's observation: `ego` (read first, to locate the front) and what `want` asks for. Throws
 /// sumo::SumoError when SUMO fails.
-StepObservation observe(const sumo::SumoSession& session, const sumo::EgoState& ego, const ObservationDemand& want);
+StepObservation observe(const sumo::SumoSession& session, sumo::EgoState ego, const ObservationDemand& want);
 
 /// Sends `commands` (nothing when `commands.drive` is false), advances SUMO one step and reads what
 /// it says back. Throws sumo::SumoError when SUMO fails.

@@ -1,6 +1,8 @@
 // The step loop of a run, one step read top to bottom (step_loop.hpp has the algorithm).
 #include "sim/step_loop.hpp"
 
+#include <utility>
+
 #include "sim/session_ports.hpp"
 #include "step/step_core.hpp"
 #include "step/sumo_driven_core.hpp"
@@ -25,9 +27,9 @@ RunRecord drive(const StartedRun& run, const sumo::NetIndex& net) {
 
 RunRecord run_steps(sumo::SumoSession& session, RunCore& core) {
   while (true) {
-    const sumo::EgoState ego = session.ego();                       // SUMO's ego at the step's start
+    sumo::EgoState ego = session.ego();                             // SUMO's ego at the step's start
     const ObservationDemand want = core.demand(ego);                // located; what else to read
-    const StepObservation seen = observe(session, ego, want);       // exactly that, from SUMO
+    const StepObservation seen = observe(session, std::move(ego), want);  // exactly that, from SUMO
     const Commands commands = core.step(seen);                      // maneuver, decide, light, plan
     const StepFeedback feedback = apply(session, commands);         // the one writer; SUMO steps
     if (core.record(seen, feedback)) break;                         // row, events, stops; the end
