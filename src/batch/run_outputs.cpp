@@ -45,7 +45,7 @@ Enum parse_enum(const std::string& text, Enum last, Enum fallback) {
 }
 
 RequestSource parse_source(const std::string& text) {
-  for (int i = 0; i <= static_cast<int>(RequestSource::Sumo); ++i)
+  for (int i = 0; i <= static_cast<int>(RequestSource::Sut); ++i)
     if (to_string(static_cast<RequestSource>(i)) == text) return static_cast<RequestSource>(i);
   return RequestSource::None;
 }

@@ -138,12 +138,15 @@ RunStatus run_status(const std::vector<ExpectationResult>& results) {
 }
 
 // One row a step: numbers appended in place (core/number_text.hpp), no temporary strings.
-void write_timeline_csv(const std::string& path, const std::vector<TimelineRow>& rows, bool v2i_column) {
+void write_timeline_csv(const std::string& path, const std::vector<TimelineRow>& rows, TimelineColumns columns) {
   std::string out =
       "time,s_front,x,y,speed,accel,edge,lane,lateral_offset,blinker,blinker_source,sumo_signals,"
       "tl_id,tl_state,tl_observed,tl_decision,stop_distance,judge_distance,yellow_lamp_line,zone,stop_s,"
       "stop_level,planned_offset";
-  out += v2i_column ? ",v2i_time_to_red\n" : "\n";
+  if (columns.v2i) out += ",v2i_time_to_red";
+  if (columns.decider) out += ",ref_blinker,ref_blinker_source";
+  if (columns.light_judge) out += ",ref_tl_decision,tl_reason";
+  out += '\n';
   out.reserve(out.size() + rows.size() * 160);
   const auto number = [&out](double v) {
     append_fixed(out, v, 3);
@@ -187,9 +190,21 @@ void write_timeline_csv(const std::string& path, const std::vector<TimelineRow>&
     out += ',';
     text(r.stop_level ? to_string(*r.stop_level) : std::string_view());
     optional_number(r.planned_offset);
-    if (v2i_column) {
+    if (columns.v2i) {
       out += ',';
       optional_number(r.v2i_time_to_red);
+    }
+    if (columns.decider) {
+      out += ',';
+      if (r.ref_blinker) out += to_string(*r.ref_blinker);
+      out += ',';
+      if (r.ref_blinker) out += to_string(r.ref_blinker_source);
+    }
+    if (columns.light_judge) {
+      out += ',';
+      if (r.ref_tl_decision) out += to_string(*r.ref_tl_decision);
+      out += ',';
+      out += r.tl_reason;  // the SUT's text: no comma, quote or line break (docs/decider.md)
     }
     out += '\n';
   }
@@ -216,7 +231,8 @@ void write_run_outputs(const std::string& dir, const Scenario& scenario, const s
                        RunStatus status) {
   fs::create_directories(dir);
   fs::remove(fs::path(dir) / run_files::kSummary);  // a stale summary must never describe new files
-  write_timeline_csv((fs::path(dir) / run_files::kTimeline).string(), record.rows, record.v2i);
+  write_timeline_csv((fs::path(dir) / run_files::kTimeline).string(), record.rows,
+                     {record.v2i, !record.decider_sut.empty(), !record.light_judge_sut.empty()});
   write_events_csv((fs::path(dir) / run_files::kEvents).string(), record.events);
 
   nlohmann::ordered_json summary;

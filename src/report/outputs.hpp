@@ -24,7 +24,13 @@ RunStatus run_status(const std::vector<ExpectationResult>& results);
 
 /// `v2i_column`: append the column v2i_time_to_red (only for a run with V2I on, so that every other
 /// run's file stays as it was).
-void write_timeline_csv(const std::string& path, const std::vector<TimelineRow>& rows, bool v2i_column = false);
+/// The timeline's optional columns, after the fixed ones in this order (docs/outputs.md).
+struct TimelineColumns {
+  bool v2i = false;          ///< v2i_time_to_red (V2I runs)
+  bool decider = false;      ///< ref_blinker, ref_blinker_source (a decider under test)
+  bool light_judge = false;  ///< ref_tl_decision, tl_reason (a light judge under test)
+};
+void write_timeline_csv(const std::string& path, const std::vector<TimelineRow>& rows, TimelineColumns columns = {});
 void write_events_csv(const std::string& path, const std::vector<TimelineEvent>& events);
 
 /// Writes timeline.csv, events.csv and summary.json into `dir` (created if missing).

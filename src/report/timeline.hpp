@@ -44,6 +44,14 @@ struct TimelineRow {
   /// and the predicted time to red of the ego's link in the predictions in force [s] (empty: none).
   bool v2i_stop = false;
   std::optional<double> v2i_time_to_red;
+  /// With a decider under test (docs/decider.md): `blinker` is the SUT's (commanded), these are the
+  /// reference decider's, run in shadow on the same inputs.
+  std::optional<Blinker> ref_blinker;
+  RequestSource ref_blinker_source = RequestSource::None;
+  /// With a light judge under test: `tl_decision` is the SUT's for the shown light, this the
+  /// reference judge's (None when it did not run), and the SUT's reason.
+  std::optional<JudgeDecision> ref_tl_decision;
+  std::string tl_reason;
 };
 
 /// One stop at a light: where the front came to rest against where it should have.
@@ -181,6 +189,8 @@ struct RunRecord {
   int collisions = 0;
   double base_link_to_front = 0.0;
   bool v2i = false;  ///< v2i.use_remaining_time: timeline.csv gets its v2i_time_to_red column
+  /// The implementations under test (docs/decider.md), as named; "" when the reference decided.
+  std::string decider_sut, light_judge_sut;
   RunSumoInfo sumo;
 };
 

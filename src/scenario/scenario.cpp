@@ -18,6 +18,9 @@
 #include "scenario/yaml_fields.hpp"
 #include "core/file_paths.hpp"
 
+#include <filesystem>
+#include <utility>
+
 namespace signalsim {
 namespace {
 
@@ -46,6 +49,20 @@ void read_parameters(const YamlFields& top, const std::string& path, const YAML:
   s.run_params = run_parameters(s.params);
 }
 
+// `decider:`, `light_judge:` (a lib: path relative to this file; an exec: command runs in its
+// directory) and `sut_timeout:`.
+void read_systems_under_test(const YamlFields& top, const std::string& path, Scenario& s) {
+  const std::string dir = std::filesystem::path(path).parent_path().string();
+  for (auto [key, spec] : {std::pair{"decider", &s.decider}, std::pair{"light_judge", &s.light_judge}}) {
+    const std::string text = top.text_or(key);
+    if (text.empty()) continue;
+    if (const std::string reason = parse_sut_spec(text, dir, *spec); !reason.empty()) top.fail(key, reason);
+  }
+  if (s.light_judge.kind == SutSpec::Kind::AutowareCore)
+    top.fail("light_judge", "autoware_core is a decider (its path_generator has no traffic-light judge)");
+  s.sut_timeout = top.number("sut_timeout");
+}
+
 }  // namespace
 
 Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrides) {
@@ -72,6 +89,7 @@ Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrid
   read_signal_inputs(top, path, s);
   read_parameters(top, path, parameter_overrides, s);
   read_expectations(top, path, s);
+  read_systems_under_test(top, path, s);
   top.finish();
   for (const std::string& note : s.notes) note_once(note);  // the scenario loaded: say what it ignored
   return s;

@@ -12,6 +12,7 @@
 
 #include "core/blinker_signals.hpp"  // Blinker
 #include "core/vehicle_defaults.hpp"
+#include "scenario/sut_spec.hpp"
 #include "scenario/parameters.hpp"
 #include "route/lane_change_room.hpp"
 #include "net/sumo_options.hpp"
@@ -236,6 +237,11 @@ struct Scenario {
   std::optional<PullOverManeuver> pull_over;      ///< from `maneuvers` (at most one)
   std::vector<Expectation> expect;
   std::vector<int> expect_lines;  ///< the scenario file's line of each expectation (0: unknown)
+  /// `decider:` / `light_judge:` the implementations under test (docs/decider.md); the reference
+  /// (signalsim's own) by default, which then decides alone.
+  SutSpec decider;
+  SutSpec light_judge;
+  double sut_timeout = 5.0;       ///< `sut_timeout:` [s] a SUT's answer to one step at most  ///< the scenario file's line of each expectation (0: unknown)
 };
 
 /// Reads and checks a scenario file. Throws InputError naming the file, line and key for a missing

@@ -44,6 +44,13 @@ const KeyTable& scenario_keys() {
                     "Vehicles standing still on a lane for the whole run."),
           table_key("maneuvers", KeyType::KindList, maneuver_kinds(),
                     "Lateral maneuvers: each item one of lane_change, avoid, pull_out, pull_over."),
+          text_key_or("decider", "reference",
+                      "The turn-signal decider under test (docs/decider.md): reference, autoware_core, traci, "
+                      "lib:PATH.so (relative to this file) or exec:COMMAND (run in this file's directory)."),
+          text_key_or("light_judge", "reference",
+                      "The traffic-light judge under test: reference, traci, lib:PATH.so or exec:COMMAND."),
+          number_key("sut_timeout", d.sut_timeout, 0.01, 3600.0, "s",
+                     "A decider or light judge under test answers each step within this, or the run ends as an error."),
           table_key("expect", KeyType::KindList, expectation_kinds(),
                     "Expectations checked after the run (exit code 1 when one fails)."),
       },

@@ -11,7 +11,7 @@ namespace signalsim::sumo {
 template <class Api>
 void SessionImpl<Api>::command(int signal_mask, double speed) {
   try {
-    Api::Vehicle::setSignals(ego_, signal_mask);
+    if (signal_mask >= 0) Api::Vehicle::setSignals(ego_, signal_mask);
     Api::Vehicle::setSpeed(ego_, speed);
   } catch (const std::exception& e) {
     throw SumoError("SUMO refused a command for the ego: " + failure_reason(e));

@@ -155,7 +155,8 @@ class SumoSession {
   /// The signal mask SUMO shows for the ego now (docs/behaviour.md §S4 read-back).
   virtual int ego_signals() const = 0;
   /// Sets the ego's signals for the next step (must be re-sent every step, docs/behaviour.md §S4) and its
-  /// speed (held until changed).
+  /// speed (held until changed). A negative mask leaves the signals as they are (another TraCI client
+  /// sets them: a traci decider under test, docs/decider.md).
   virtual void command(int signal_mask, double speed) = 0;
 
   /// The ego's lateral offset [m, left positive] from the centre line of `reference_lane_id`, a

@@ -32,7 +32,7 @@ StepFeedback apply(sumo::SumoSession& session, const Commands& commands) {
     session.set_right_of_way(commands.right_of_way);
     session.set_sumo_lane_limits(commands.lane_limits);
     session.set_emergency_braking(commands.emergency_braking);
-    session.command(commands.signal_mask, commands.speed);
+    session.command(commands.write_signals ? commands.signal_mask : -1, commands.speed);
     if (commands.lateral) session.command_lateral_offset(commands.lateral->offset, commands.lateral->reference_lane);
     if (commands.move_back > 0.0) session.move_back(commands.move_back);
   }

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <utility>
 
+#include "sut/sut_factory.hpp"
 #include "route/approach_lights.hpp"
 #include "report/run_files.hpp"
 #include "scenario/input_error.hpp"
@@ -208,7 +209,8 @@ CoreSetup core_setup(const StartedRun& run, const sumo::NetIndex& net) {
   std::vector<sumo::ApproachLight> lights = sumo::approach_lights(net, run.plan.map);
   for (sumo::ApproachLight& a : lights) a.has_arrow = sumo::shows_arrow(session.program_states(a.tls_id), a);
   for (const auto& [tls, offset] : run.scenario.light_offsets) session.shift_light_program(tls, offset);
-  return CoreSetup{run.scenario, run.plan.map, run.lateral, std::move(lights), run_sumo_info(run), session.time()};
+  return CoreSetup{run.scenario,      run.plan.map,    run.lateral, std::move(lights), run_sumo_info(run),
+                   session.time(),    make_systems_under_test(run.scenario)};
 }
 
 }  // namespace signalsim

@@ -114,6 +114,10 @@ std::vector<LightStep> TrafficLightStage::step(double now, double s_front, doubl
     if (const auto& truth = t.truth_of(state)) {
       auto observation = t.perception.observe(*truth, front_to_line, now);
       if (observation) step.observed = t.describe(observation->elements);
+      if (observation && keep_delivered_) {
+        step.delivered = true;
+        step.elements = observation->elements;
+      }
       if (!t.judge) t.judge.emplace(judge_params_);
       TrafficLightJudgeInput in;
       in.now = now;

@@ -29,7 +29,13 @@ struct LightStep {
   bool judged = false;                ///< the judge ran (the light regulates the ego's link)
   std::string observed;               ///< what perception delivered this step ("" = nothing)
   double front_to_stop_line = 0.0;    ///< [m]
-  TrafficLightJudgeResult result;
+  TrafficLightJudgeResult result;     ///< with a light judge under test: its decision and stop point
+  /// What perception delivered this step, kept for a light judge under test (keep_delivered).
+  bool delivered = false;
+  std::vector<SignalElement> elements;
+  /// With a light judge under test: the reference judge's decision (run in shadow) and the SUT's reason.
+  std::optional<JudgeDecision> reference_decision;
+  std::string sut_reason;
 };
 
 /// The V2I predictions of one light as signal elements of this approach (docs/behaviour.md §L1.7, §S3):
@@ -56,6 +62,9 @@ class TrafficLightStage {
 
   /// The next light ahead that is not yet dropped (for the timeline when none is in the window).
   const sumo::ApproachLight* next_light() const;
+
+  /// Keeps each step's delivered signal elements in LightStep (a light judge under test reads them).
+  void keep_delivered() { keep_delivered_ = true; }
 
  private:
   struct Tracked {
@@ -84,6 +93,7 @@ class TrafficLightStage {
   TrafficLightJudgeParameters judge_params_;
   double horizon_;
   V2iChannelParameters v2i_;
+  bool keep_delivered_ = false;
 };
 
 /// Whether the next junction the ego enters is a light showing the ego's link red or yellow: the ego

@@ -6,6 +6,8 @@
 #include <limits>
 #include <utility>
 
+#include <nlohmann/json.hpp>
+
 #include "planning/stop/jerk_limited_stop.hpp"
 #include "step/route_planning.hpp"
 
@@ -46,6 +48,43 @@ BehaviorStageConfig behavior_config_for(const Scenario& scenario, const RouteMap
   return config;
 }
 
+RequestSource module_of(LateralKind kind) {
+  switch (kind) {
+    case LateralKind::LaneChange: return RequestSource::LaneChange;
+    case LateralKind::Avoidance: return RequestSource::Avoidance;
+    case LateralKind::PullOut: return RequestSource::PullOut;
+    case LateralKind::PullOver: return RequestSource::PullOver;
+  }
+  return RequestSource::None;
+}
+
+std::string parameter_text(const ParameterValue& value) {
+  return std::visit(
+      [](const auto& v) -> std::string {
+        using T = std::decay_t<decltype(v)>;
+        if constexpr (std::is_same_v<T, bool>) return v ? "true" : "false";
+        else if constexpr (std::is_same_v<T, int>) return std::to_string(v);
+        else if constexpr (std::is_same_v<T, double>) return nlohmann::json(v).dump();  // shortest round trip
+        else return v;
+      },
+      value);
+}
+
+// What a system under test is given once (docs/decider.md): the route, the planned maneuvers' shift
+// lines and every run parameter by name.
+SutRun sut_run(const Scenario& scenario, const RouteMap& route, const LateralPlan& lateral) {
+  SutRun run;
+  run.scenario = scenario.name;
+  run.step_length = scenario.step_length;
+  run.vehicle_length = scenario.ego.length;
+  run.base_link_to_front = scenario.ego.base_link_to_front;
+  for (const auto& [name, value] : scenario.params.values()) run.parameters.emplace_back(name, parameter_text(value));
+  run.route = &route;
+  for (const LateralSegment& seg : lateral.segments)
+    for (const ShiftLine& line : seg.plan.lines())
+      run.shift_lines.push_back({module_of(seg.kind), seg.edge, line.s_start, line.s_end, line.relative_shift()});
+  return run;
+}
 
 }  // namespace
 
@@ -72,12 +111,23 @@ StepCore::StepCore(CoreSetup setup)
       outcomes_(judge_params_.stop_margin),
       stuck_(scenario_.run_params.stuck_rest_time),
       plan_watch_(route_, lateral_),
-      locator_(route_, scenario_.ego.depart_pos) {
+      locator_(route_, scenario_.ego.depart_pos),
+      suts_(std::move(setup.suts)) {
   for (const LateralSegment& seg : behavior_.plan().segments)
     if (seg.kind == LateralKind::PullOver) pull_over_goal_ = &seg;
   record_.base_link_to_front = b2f_;
   record_.sumo = std::move(setup.sumo);
   record_.v2i = judge_params_.v2i.use_remaining_time;
+  record_.decider_sut = suts_.decider_name;
+  record_.light_judge_sut = suts_.light_judge_name;
+  if (suts_.decider || suts_.light_judge) {
+    const SutRun run = sut_run(scenario_, route_, lateral_);
+    if (suts_.decider) suts_.decider->start(run);
+    if (suts_.light_judge) {
+      lights_.keep_delivered();
+      suts_.light_judge->start(run);
+    }
+  }
 }
 
 // demand: the front located on the route (monotonic: searched from the lanelet it was on), and what
@@ -92,6 +142,7 @@ ObservationDemand StepCore::demand(const sumo::EgoState& ego) {
   if (const LateralSegment* waiting = behavior_.waiting_lane_change(s_front - b2f_))
     want.lane_traffic = waiting->reference_lane;
   lights_.demand(s_front, want);
+  if (suts_.decider && suts_.decider->reads_sumo_signals()) want.signals = true;
   want.leader = outcomes_.needs_leader(row_speed) || stuck_.may_end_at(ego.time, row_speed) ||
                 ego.time + dt_ >= end_time_ - 0.5 * dt_;
   return want;
@@ -150,8 +201,63 @@ Commands StepCore::step(const StepObservation& seen) {
   const TurnSignalDecision decision = decider_.decide(route_, now.ego, p.behavior.behavior);
   p.blinker = {blinker_of(decision), decision.source};
   p.lights = light(now, seen);
+  if (suts_.decider || suts_.light_judge) {
+    // The systems under test decide on the same inputs; the reference's choices are kept beside theirs.
+    SutStep in = sut_step(now, seen, p.behavior.behavior, decision.path_backward_length);
+    if (suts_.decider) {
+      p.reference = p.blinker;
+      p.blinker = {suts_.decider->decide(in), RequestSource::Sut};
+    }
+    if (suts_.light_judge) judge_under_test(in, p.lights);
+  }
   p.plan = plan_speed(now, p.behavior, p.lights);
   return commands(p);
+}
+
+// The step as a system under test sees it (docs/decider.md "Each step"): the ego, the decider's window
+// of route lanelets, the behaviour modules' merged request, SUMO's mask for a traci decider.
+SutStep StepCore::sut_step(const StepNow& now, const StepObservation& seen, const TurnSignalInfo& request,
+                           double path_backward_length) const {
+  SutStep in;
+  in.time = now.sumo.time;
+  const Lanelet& lanelet = route_.at(place_.index);
+  const double yaw = lanelet.shape.heading_at(now.ego.s_front - lanelet.s_start);
+  in.ego = {now.sumo.x, now.sumo.y, yaw, now.ego.speed, now.sumo.accel, now.ego.s_front, now.ego.s_base};
+  in.window = route_.window(now.ego.s_base - path_backward_length,
+                            now.ego.s_base + scenario_.run_params.decider.forward_path_length);
+  in.request = request;
+  in.sumo_signals = seen.signals;
+  return in;
+}
+
+// A light judge under test answers for every judged light of the window; its answer replaces the
+// reference's decision (kept beside it) and the planner executes it as its own: a stop brings the
+// front to the stop point (the stop line - stop_margin), a go plans no stop.
+void StepCore::judge_under_test(SutStep& in, StepLights& lights) {
+  std::vector<LightStep*> judged;
+  for (LightStep& l : lights.steps) {
+    if (!l.judged) continue;
+    judged.push_back(&l);
+    in.lights.push_back({l.light->tls_id, l.light->link_index, l.light->route_index, l.light->s_stop_line,
+                         l.front_to_stop_line, l.delivered, l.elements, l.result.v2i_time_to_red});
+  }
+  if (judged.empty()) return;
+  const std::vector<SutLightAnswer> answers = suts_.light_judge->judge(in);
+  for (std::size_t i = 0; i < judged.size(); ++i) {
+    LightStep& l = *judged[i];
+    l.reference_decision = l.result.decision;
+    l.sut_reason = answers[i].reason;
+    l.result.decision = answers[i].stop ? JudgeDecision::Stop : JudgeDecision::Pass;
+    l.result.zone = JudgeZone::None;
+    l.result.stop_point_distance.reset();
+    if (answers[i].stop) l.result.stop_point_distance = l.front_to_stop_line - judge_params_.stop_margin;
+  }
+  lights.stopping = nullptr;
+  for (const LightStep& l : lights.steps)
+    if (l.result.stop_point_distance &&
+        (!lights.stopping || *l.result.stop_point_distance < *lights.stopping->result.stop_point_distance))
+      lights.stopping = &l;
+  lights.shown = lights.stopping ? lights.stopping : (lights.steps.empty() ? nullptr : &lights.steps.front());
 }
 
 // light: every judge in the window (docs/behaviour.md §L); the ego brakes for the nearest stop requested by any
@@ -221,6 +327,7 @@ Commands StepCore::commands(const PendingStep& step) {
   c.lane_limits = step.plan.sumo_lane_limits;
   c.emergency_braking = step.plan.emergency_braking;
   c.signal_mask = signal_mask(step.blinker.blinker);
+  c.write_signals = !(suts_.decider && suts_.decider->reads_sumo_signals());
   c.speed = step.plan.speed;
   if (now.segment)
     c.lateral = LateralCommand{
@@ -241,6 +348,14 @@ bool StepCore::record(const StepObservation& seen, const StepFeedback& feedback)
   TimelineRow row = timeline_row(now.sumo, now.ego, now.lateral_offset, p.planned_offset, p.blinker.blinker,
                                  p.blinker.source, p.lights.shown, p.plan.stop_level);
   row.sumo_signals = feedback.signals;  // -1 once the ego arrived
+  if (p.reference) {
+    row.ref_blinker = p.reference->blinker;
+    row.ref_blinker_source = p.reference->source;
+  }
+  if (p.lights.shown && p.lights.shown->reference_decision) {
+    row.ref_tl_decision = p.lights.shown->reference_decision;
+    row.tl_reason = p.lights.shown->sut_reason;
+  }
   if (!p.lights.shown)
     if (const sumo::ApproachLight* next = lights_.next_light())  // beyond the horizon
       if (const LightReading* reading = seen.light(next->tls_id)) show_next_light(row, *next, reading->state);
@@ -270,6 +385,8 @@ bool StepCore::end_not_arrived(const std::string& reason, const std::optional<Le
 }
 
 RunRecord StepCore::finish(int collisions) {
+  if (suts_.decider) suts_.decider->finish();
+  if (suts_.light_judge) suts_.light_judge->finish();
   record_.collisions = collisions;
   record_.lane_changes = behavior_.lane_change_records();
   record_.maneuver_lines = maneuver_lines(behavior_.plan(), record_.lane_changes,

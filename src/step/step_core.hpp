@@ -30,6 +30,7 @@
 #include "step/run_core.hpp"
 #include "step/step_record.hpp"
 #include "step/stuck_watch.hpp"
+#include "sut/system_under_test.hpp"
 #include "turn_signal/turn_signal_decider.hpp"
 
 namespace signalsim {
@@ -42,6 +43,9 @@ struct CoreSetup {
   std::vector<sumo::ApproachLight> lights;    ///< the route's lights, has_arrow from SUMO's programs
   RunSumoInfo sumo;                           ///< the record's `sumo` fields
   double start_time = 0.0;                    ///< [s] SUMO's time at the first step
+  /// The decider and light judge under test, if any (docs/decider.md): they decide, signalsim's own
+  /// run in shadow as the reference.
+  SystemsUnderTest suts;
 };
 
 /// [s] SUMO time at which a run started at `start_time` ends: `duration` after the ego's departure
@@ -90,7 +94,8 @@ struct PendingStep {
   StepNow now;
   BehaviorStage::Result behavior;
   std::optional<double> planned_offset;  ///< [m] on a segment's edge only
-  BlinkerChoice blinker;
+  BlinkerChoice blinker;           ///< commanded: the decider under test's, else the reference's
+  std::optional<BlinkerChoice> reference;  ///< the reference's, when a decider under test decides
   StepLights lights;
   SpeedPlan plan;
 };
@@ -114,6 +119,9 @@ class StepCore final : public RunCore {
   StepLights light(const StepNow& now, const StepObservation& seen);
   SpeedPlan plan_speed(const StepNow& now, const BehaviorStage::Result& behavior, const StepLights& lights);
   Commands commands(const PendingStep& step);
+  SutStep sut_step(const StepNow& now, const StepObservation& seen, const TurnSignalInfo& request,
+                   double path_backward_length) const;
+  void judge_under_test(SutStep& in, StepLights& lights);
   bool ended(const StepObservation& seen, const StepFeedback& feedback, const SpeedPlan& plan);
   bool end_not_arrived(const std::string& reason, const std::optional<LeaderInfo>& leader);
 
@@ -146,6 +154,7 @@ class StepCore final : public RunCore {
 
   std::optional<PendingStep> pending_;
   RunRecord record_;
+  SystemsUnderTest suts_;
 };
 
 }  // namespace signalsim

@@ -82,6 +82,7 @@ struct Commands {
   bool lane_limits = true;          ///< SUMO's lane speed limits (speed mode bit)
   bool emergency_braking = false;   ///< SUMO may brake beyond the ego's decel
   int signal_mask = 0;              ///< the blinker as TraCI signal bits
+  bool write_signals = true;        ///< false: the signals are left as another TraCI client sets them
   double speed = 0.0;               ///< [m/s]
   std::optional<LateralCommand> lateral;
   double move_back = 0.0;           ///< [m] emulated backward driving this step

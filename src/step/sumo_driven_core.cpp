@@ -103,7 +103,11 @@ ObservationDemand SumoDrivenCore::demand(const sumo::EgoState& ego) {
   return want;
 }
 
-Commands SumoDrivenCore::step(const StepObservation&) { return Commands{.drive = false}; }
+Commands SumoDrivenCore::step(const StepObservation&) { 
+  Commands c;
+  c.drive = false;
+  return c;
+}
 
 bool SumoDrivenCore::record(const StepObservation& seen, const StepFeedback& feedback) {
   const sumo::EgoState& observed = seen.ego;

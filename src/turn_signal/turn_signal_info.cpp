@@ -12,6 +12,7 @@ std::string_view to_string(RequestSource source) {
     case RequestSource::PullOut: return "pull_out";
     case RequestSource::PullOver: return "pull_over";
     case RequestSource::Sumo: return "sumo";
+    case RequestSource::Sut: return "sut";
     case RequestSource::None: break;
   }
   return "none";

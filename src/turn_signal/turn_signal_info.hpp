@@ -23,6 +23,7 @@ enum class RequestSource : std::uint8_t {
   PullOut,
   PullOver,
   Sumo,  ///< not a request: SUMO's own blinker logic, observed (`run --driver sumo`, docs/behaviour.md §S5)
+  Sut,   ///< not a request: a decider under test decided (docs/decider.md)
 };
 
 std::string_view to_string(RequestSource source);

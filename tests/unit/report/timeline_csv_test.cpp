@@ -90,7 +90,7 @@ TEST_F(TimelineCsv, TheV2iColumnOnlyWhenAskedFor) {
   without.v2i_time_to_red.reset();
   without.sumo_signals = 0;
   const fs::path path = dir_ / "timeline.csv";
-  write_timeline_csv(path.string(), {judged_row(), without}, true);
+  write_timeline_csv(path.string(), {judged_row(), without}, {.v2i = true});
   const std::string row =
       "12.300,118.400,1.600,-81.600,13.890,0.000,in_S,in_S_1,-0.125,left,intersection,2,C,g,green,stop,71.200,"
       "30.001,41.670,stoppable,188.600,limit,0.062";

@@ -1,0 +1,15 @@
+// The systems under test a scenario names (docs/decider.md): one home for turning `decider:` and
+// `light_judge:` into the adapters that run them.
+#pragma once
+
+#include "scenario/scenario.hpp"
+#include "sut/system_under_test.hpp"
+
+namespace signalsim {
+
+/// The scenario's decider and light judge under test; empty pointers for "reference". Loads a lib:
+/// library and checks its ABI, or finds an exec: command, before SUMO starts: throws InputError
+/// naming the key for a library or command that cannot be used.
+SystemsUnderTest make_systems_under_test(const Scenario& scenario);
+
+}  // namespace signalsim
