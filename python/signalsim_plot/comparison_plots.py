@@ -1,7 +1,8 @@
 """The picture of `signalsim compare` (comparison.csv -> comparison.png).
 
 One row of panels per scenario. Left: the blinker's lead distance per section (turn, roundabout entry,
-exit), signalsim and SUMO side by side as horizontal bars; a missed blinker, a section never reached
+exit), signalsim and SUMO (and, with a decider or light judge under test, the SUT first: driver `sut`)
+side by side as horizontal bars; a missed blinker, a section never reached
 or a run in error is written where its bar would be, and a section that asks for no blinker shows
 which blinker each driver had on as the front reached it. Right (when some route has lights): the
 stop position error per light (rest position - stop point), or how the ego went through.
@@ -15,11 +16,17 @@ from signalsim_plot.cli import InputError
 from signalsim_plot.data import number, read_csv
 
 # Fixed colours per driver (tests look for them in the PNG).
-DRIVER_COLORS = {"signalsim": "#1f77b4", "sumo": "#ff7f0e"}
-DRIVERS = ("signalsim", "sumo")
+DRIVER_COLORS = {"sut": "#2ca02c", "signalsim": "#1f77b4", "sumo": "#ff7f0e"}
+DRIVERS = ("sut", "signalsim", "sumo")  # the order of the bars; only the drivers the CSV has are drawn
 REQUIRED = ("scenario", "section", "kind", "id", "blinker", "driver", "status", "lead_distance", "missed",
             "blinker_at_start", "state_at_line", "red_light_violation", "stop_position_error", "notes")
-BAR_H = 0.38
+BAR_H = 0.38  # two drivers; three share the same height between them
+
+
+def drivers_of(rows):
+    """The drivers the CSV has, in DRIVERS order."""
+    present = {r["driver"] for r in rows}
+    return [d for d in DRIVERS if d in present]
 
 
 def is_comparison(path):
@@ -60,7 +67,7 @@ def note_of(row, light):
     return "-"
 
 
-def draw_panel(ax, items, light):
+def draw_panel(ax, items, light, drivers):
     labels = []
     value_key = "stop_position_error" if light else "lead_distance"
     values = [number(r.get(value_key)) for _, by in items for r in by.values()]
@@ -69,15 +76,16 @@ def draw_panel(ax, items, light):
         first = next(iter(by.values()))
         want = "" if light else f" ({first['blinker']})"
         labels.append(f"{name} {first['id']}{want}")
-        for d, driver in enumerate(DRIVERS):
+        bar_h = BAR_H if len(drivers) <= 2 else 0.78 / len(drivers)
+        for d, driver in enumerate(drivers):
             row = by.get(driver)
-            y = k + (d - 0.5) * BAR_H
+            y = k + (d - (len(drivers) - 1) / 2) * bar_h
             if row is None:
                 continue
             v = number(row.get(value_key))
             late = not light and row["missed"] == "true"
             if v is not None and row["status"] != "error":
-                ax.barh(y, v, height=BAR_H, color=DRIVER_COLORS[driver], edgecolor="black", lw=0.4,
+                ax.barh(y, v, height=bar_h, color=DRIVER_COLORS[driver], edgecolor="black", lw=0.4,
                         hatch="//" if late else None)
                 lead_time = number(row.get("lead_time"))
                 text = f"{v:g} m" + (f", {lead_time:g} s" if lead_time is not None else "") + (" (late)" if late else "")
@@ -104,6 +112,7 @@ def plot_comparison(csv_path, out):
     if missing:
         raise InputError(f"{csv_path}: missing column(s) {', '.join(missing)}")
     scenarios = grouped(rows)
+    drivers = drivers_of(rows)
     with_lights = any(by and next(iter(by.values()))["kind"] == "light" for _, items in scenarios for _, by in items)
     ncols = 2 if with_lights else 1
     heights = []
@@ -119,14 +128,14 @@ def plot_comparison(csv_path, out):
         for col, (part, light) in enumerate(((sections, False), (lights, True))[:ncols]):
             ax = row_axes[col]
             if part:
-                draw_panel(ax, part, light)
+                draw_panel(ax, part, light, drivers)
             else:
                 ax.set_axis_off()
                 ax.text(0.5, 0.5, "no lights" if light else "no blinker sections", ha="center", va="center",
                         fontsize=8, transform=ax.transAxes, color="#666666")
             title = "stop position error [m]" if light else "blinker lead distance [m]"
             ax.set_title(f"{scenario}: {title}", fontsize=9, loc="left")
-    fig.legend(handles=[Patch(color=DRIVER_COLORS[d], label=d) for d in DRIVERS], loc="upper right", ncol=2,
+    fig.legend(handles=[Patch(color=DRIVER_COLORS[d], label=d) for d in drivers], loc="upper right", ncol=len(drivers),
                fontsize=8)
     fig.tight_layout(rect=(0, 0, 1, 1 - 0.5 / (sum(heights) + 0.8)))
     os.makedirs(out, exist_ok=True)

@@ -6,6 +6,7 @@
 #include "app/batch_cli.hpp"
 #include "app/command.hpp"
 #include "app/strict_params_flag.hpp"
+#include "app/sut_flags.hpp"
 #include "batch/run_list.hpp"
 #include "batch/scenario_files.hpp"
 #include "scenario/input_error.hpp"
@@ -18,6 +19,7 @@ Command add_batch_command(CLI::App& app) {
     std::vector<std::string> set;
     BatchCliOptions batch;
     BackendCliOptions backend;
+    SutFlags suts;
   };
   auto o = std::make_shared<Options>();
   CLI::App* sub = app.add_subcommand("batch", "Run a suite of scenarios (files or directories) in parallel; results.csv");
@@ -25,6 +27,7 @@ Command add_batch_command(CLI::App& app) {
   sub->add_option("--set", o->set, "Override for every run: a scenario key or a parameter (key=value); repeatable");
   add_batch_options(sub, o->batch, "out/batch", true);
   add_strict_params_flag(sub, o->set);
+  add_sut_flags(sub, o->set, o->suts);
   add_backend_options(sub, o->backend);
   return {sub, [o]() -> int {
             try {

@@ -5,7 +5,9 @@
 // --ignore-expectations makes the expectations a note); a run error, or a scenario file that does
 // not load, is an error (exit 4, wins over 1). A scenario without expectations (status
 // no_expectations) is checked on its events only and says so; it is not a failure (JUnit: skipped).
-// --update rewrites the golden files from the runs; --junit writes JUnit XML.
+// --update rewrites the golden files from the runs; --junit writes JUnit XML. With a decider or light
+// judge under test (--decider, --light-judge or the scenario's keys) the golden file must have been made
+// with the same ones (batch/golden_suts.hpp), else the case fails.
 #include <unistd.h>
 
 #include <cstdio>
@@ -17,7 +19,9 @@
 #include "app/batch_cli.hpp"
 #include "app/cli_numbers.hpp"
 #include "app/command.hpp"
+#include "app/sut_flags.hpp"
 #include "batch/golden.hpp"
+#include "batch/golden_suts.hpp"
 #include "batch/junit_xml.hpp"
 #include "batch/run_list.hpp"
 #include "batch/run_outputs.hpp"
@@ -41,6 +45,8 @@ struct CheckOptions {
   bool expectations_flag = false;    // --expectations: the default behaviour, accepted
   std::string junit;
   BatchCliOptions batch;
+  std::vector<std::string> set;  ///< the overrides of --decider, --light-judge, --sut-timeout
+  SutFlags suts;
 };
 
 std::string cell(const ResultRow& row, const std::string& column) {
@@ -75,10 +81,12 @@ JUnitCase check_one(const RunSpec& run, const ResultRow* row, const CheckOptions
   const std::string events_path = (run_dir / run_files::kEvents).string();
   std::vector<TimelineEvent> events;
   double step = 0.1;
+  GoldenSuts suts;  // the decider and light judge that made this run's events
   try {
     events = read_events_csv(events_path);
     const auto summary = read_json_file((run_dir / run_files::kSummary).string());
     step = summary.value("step_length", 0.1);
+    suts = run_suts(summary);
     // The failed expectations with their details, for the console and JUnit's <system-out>.
     if (summary.contains("expectations") && summary["expectations"].is_array())
       for (const auto& e : summary["expectations"])
@@ -108,16 +116,23 @@ JUnitCase check_one(const RunSpec& run, const ResultRow* row, const CheckOptions
       return verdict(JUnitCase::Result::Failed, "not updated: " + failed_expectations);
     fs::create_directories(o.golden_dir);
     write_file_atomically(golden, read_text_file(events_path));
+    write_golden_suts(golden, suts);
     return matched(format_text("updated %s (%zu events)", golden.c_str(), events.size()));
   }
   if (!fs::is_regular_file(golden))
     return verdict(JUnitCase::Result::Failed, "no golden file " + golden + " (create it with --update)");
   std::vector<TimelineEvent> expected;
+  GoldenSuts golden_suts;
   try {
     expected = read_events_csv(golden);
+    golden_suts = read_golden_suts(golden);
   } catch (const std::exception& e) {
     return verdict(JUnitCase::Result::Error, e.what());
   }
+  // Events of one implementation are no golden for another's (docs/batch.md).
+  if (golden_suts != suts)
+    return verdict(JUnitCase::Result::Failed, golden + " was made with " + describe(golden_suts) + ", this run has " +
+                                                  describe(suts) + " (make one for it with --update)");
   const double tol_t = o.tol_t > 0 ? o.tol_t : step;
   const auto diff = compare_events(expected, events, o.tol_s, tol_t);
   const std::size_t differences = count_differences(diff);
@@ -155,6 +170,7 @@ Command add_check_command(CLI::App& app) {
       ->excludes("--ignore-expectations");
   sub->add_option("--junit", o->junit, "Also write the results as JUnit XML to this file");
   add_batch_options(sub, o->batch, "out/check", false);
+  add_sut_flags(sub, o->set, o->suts);
   return {sub, [o]() -> int {
             try {
               const std::vector<std::string> files = scenario_files(o->paths);
@@ -164,7 +180,7 @@ Command add_check_command(CLI::App& app) {
                 if (!fresh)
                   throw InputError(f, 0, "same golden name '" + it->first + "' as " + it->second + " (file names must differ)");
               }
-              const std::vector<RunSpec> runs = suite_runs(files, {});
+              const std::vector<RunSpec> runs = suite_runs(files, o->set);
               BatchSettings settings = to_settings(o->batch, "out/check", 300.0);
               settings.quiet = settings.quiet || isatty(STDOUT_FILENO) != 1;  // the verdicts below say it all
               const BatchResult result = run_batch(runs, settings);

@@ -1,15 +1,16 @@
 // `signalsim compare PATH... --out DIR` (docs/compare.md): every scenario twice on the same route and traffic,
 // driven by signalsim and by SUMO on its own (run --driver sumo), then OUT/comparison.csv, the
-// picture OUT/comparison.png (signalsim-plot) and a one-screen summary.
+// picture OUT/comparison.png (signalsim-plot) and a one-screen summary. With --decider / --light-judge
+// three times: the system under test in signalsim ("sut"), signalsim's reference alone, and SUMO.
 //
 //   check    every scenario is loaded and its route planned, no SUMO (bad input: one line, exit 2,
 //            nothing written; a comparison.csv/png left in OUT by an earlier compare is removed)
-//   run      per scenario NNNN two workers, OUT/runs/NNNN-<name>-signalsim and -sumo (same seed and
-//            --set values), at most --jobs at a time, each with the wall-clock --timeout
+//   run      per scenario NNNN one worker per driver, OUT/runs/NNNN-<name>-[sut, ]signalsim and -sumo
+//            (same seed and --set values), at most --jobs at a time, each with the wall-clock --timeout
 //   table    app/comparison: one row per section or light and driver; a run that did not finish
 //            gives error rows
 //   picture  signalsim-plot OUT/comparison.csv --out OUT
-// Exit codes: 0 every run finished and no signalsim run failed an expectation (the SUMO runs'
+// Exit codes: 0 every run finished and no signalsim (or sut) run failed an expectation (the SUMO runs'
 // expectation results are reported, not judged: they measure SUMO against the decider's law),
 // 1 a signalsim run failed or any run errored, 2 bad input, 3 the runs were fine but the picture
 // could not be drawn, 130 interrupted (no comparison written).
@@ -23,6 +24,7 @@
 #include "app/command.hpp"
 #include "app/plot_tool.hpp"
 #include "app/strict_params_flag.hpp"
+#include "app/sut_flags.hpp"
 #include "batch/child_process.hpp"
 #include "batch/comparison.hpp"
 #include "batch/run_outputs.hpp"
@@ -40,15 +42,38 @@ namespace signalsim::app {
 namespace fs = std::filesystem;
 namespace {
 
-constexpr const char* kDrivers[] = {"signalsim", "sumo"};
 constexpr const char* kCsv = "comparison.csv";
 constexpr const char* kPicture = "comparison.png";
 
 struct CompareOptions {
   std::vector<std::string> paths;
   std::vector<std::string> set;
+  std::vector<std::string> sut_set;  ///< the overrides of --decider, --light-judge, --sut-timeout
+  SutFlags suts;
   BatchCliOptions batch;
 };
+
+// The drivers of each scenario and the overrides each adds to --set: with a decider or light judge
+// under test, "sut" (signalsim with it), "signalsim" (the reference alone) and "sumo"; else
+// "signalsim" (the scenario as written) and "sumo". SUMO's run never has a SUT in the loop.
+struct DriverPlan {
+  std::string name;
+  std::string driver;  ///< run --driver
+  std::vector<std::string> set;
+};
+
+std::vector<DriverPlan> driver_plans(const CompareOptions& o) {
+  const std::vector<std::string> reference = {"decider=reference", "light_judge=reference"};
+  std::vector<DriverPlan> plans;
+  if (o.suts.any()) {
+    plans.push_back({"sut", "signalsim", o.sut_set});
+    plans.push_back({"signalsim", "signalsim", reference});
+  } else {
+    plans.push_back({"signalsim", "signalsim", {}});
+  }
+  plans.push_back({"sumo", "sumo", reference});
+  return plans;
+}
 
 // One scenario as checked before anything runs.
 struct Checked {
@@ -137,10 +162,14 @@ int compare(const CompareOptions& o) {
   std::vector<Checked> scenarios;
   if (o.paths.empty()) return bad_input(settings.out_dir, "compare: no scenario given (signalsim compare PATH... --out DIR)");
   try {
-    scenarios = check_scenarios(scenario_files(o.paths), o.set);
+    std::vector<std::string> set = o.set;
+    set.insert(set.end(), o.sut_set.begin(), o.sut_set.end());
+    scenarios = check_scenarios(scenario_files(o.paths), set);
   } catch (const std::exception& e) {
     return bad_input(settings.out_dir, e.what());
   }
+  const std::vector<DriverPlan> plans = driver_plans(o);
+  const std::size_t n = plans.size();
   std::vector<ProcessJob> jobs;
   std::vector<std::string> run_dirs;
   try {
@@ -148,15 +177,16 @@ int compare(const CompareOptions& o) {
     for (const char* name : {kCsv, kPicture}) fs::remove(fs::path(settings.out_dir) / name);
     const std::string self = self_executable();
     for (std::size_t i = 0; i < scenarios.size(); ++i)
-      for (const char* driver : kDrivers) {
-        const std::string dir = run_dir_name(i, scenarios[i].comparison.scenario, driver);
+      for (const DriverPlan& plan : plans) {
+        const std::string dir = run_dir_name(i, scenarios[i].comparison.scenario, plan.name);
         fs::remove_all(fs::path(settings.out_dir) / dir);  // a stale run of an earlier compare
         ProcessJob job;
         job.id = run_dirs.size();
         job.timeout = settings.timeout;
         job.argv = {self, "run", scenarios[i].file, "--out", (fs::path(settings.out_dir) / dir).string(), "--quiet",
-                    "--driver", driver};
+                    "--driver", plan.driver};
         for (const std::string& item : o.set) job.argv.insert(job.argv.end(), {"--set", item});
+        for (const std::string& item : plan.set) job.argv.insert(job.argv.end(), {"--set", item});
         jobs.push_back(std::move(job));
         run_dirs.push_back(dir);
       }
@@ -164,14 +194,16 @@ int compare(const CompareOptions& o) {
     return bad_input(settings.out_dir, settings.out_dir + ": " + e.what());
   }
   if (!settings.quiet) {
-    std::printf("compare: %zu scenario%s x 2 drivers (signalsim, sumo), %d at a time -> %s\n", scenarios.size(),
-                scenarios.size() == 1 ? "" : "s", settings.jobs, settings.out_dir.c_str());
+    std::string names;
+    for (const DriverPlan& plan : plans) names += (names.empty() ? "" : ", ") + plan.name;
+    std::printf("compare: %zu scenario%s x %zu drivers (%s), %d at a time -> %s\n", scenarios.size(),
+                scenarios.size() == 1 ? "" : "s", n, names.c_str(), settings.jobs, settings.out_dir.c_str());
     std::fflush(stdout);
   }
 
   std::vector<DriverRun> runs(jobs.size());
   const bool completed = run_jobs(jobs, settings.jobs, settings.isolate, [&](const ProcessJob& job, const ProcessResult& result) {
-    runs[job.id] = driver_run(settings.out_dir, run_dirs[job.id], kDrivers[job.id % 2], result, settings.timeout);
+    runs[job.id] = driver_run(settings.out_dir, run_dirs[job.id], plans[job.id % n].name, result, settings.timeout);
   });
   if (!completed) {
     std::printf("interrupted: no comparison written; the finished runs are in %s/runs\n", settings.out_dir.c_str());
@@ -181,8 +213,12 @@ int compare(const CompareOptions& o) {
   bool failed = false;
   for (std::size_t i = 0; i < scenarios.size(); ++i) {
     ScenarioComparison c = std::move(scenarios[i].comparison);
-    c.runs = {std::move(runs[2 * i]), std::move(runs[2 * i + 1])};
-    failed = failed || c.runs[0].status == "failed" || c.runs[0].status == "error" || c.runs[1].status == "error";
+    for (std::size_t d = 0; d < n; ++d) {
+      c.runs.push_back(std::move(runs[n * i + d]));
+      // signalsim's runs (the SUT's too) are judged by their expectations; SUMO's are only reported.
+      const DriverRun& r = c.runs.back();
+      failed = failed || r.status == "error" || (plans[d].driver == "signalsim" && r.status == "failed");
+    }
     table.push_back(std::move(c));
   }
   const std::string csv = (fs::path(settings.out_dir) / kCsv).string();
@@ -216,6 +252,7 @@ Command add_compare_command(CLI::App& app) {
   sub->add_option("paths", o->paths, "Scenario files or directories of them (*.yaml)");
   sub->add_option("--set", o->set, "Override for every run: a scenario key or a parameter (key=value); repeatable");
   add_strict_params_flag(sub, o->set);
+  add_sut_flags(sub, o->sut_set, o->suts);
   add_batch_options(sub, o->batch, "out/compare", false);
   return {sub, [o] { return compare(*o); }};
 }

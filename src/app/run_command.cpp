@@ -10,6 +10,7 @@
 
 #include "app/command.hpp"
 #include "app/strict_params_flag.hpp"
+#include "app/sut_flags.hpp"
 #include "app/plot_tool.hpp"
 #include "report/expectations.hpp"
 #include "scenario/input_error.hpp"
@@ -41,6 +42,7 @@ struct RunOptions {
   bool quiet = false;
   bool plot = false;  ///< draw the run's pictures with signalsim-plot afterwards
   std::string driver = "signalsim";  ///< who drives the ego: signalsim, or sumo (observed only)
+  SutFlags suts;                     ///< --decider / --light-judge as given (they are overrides too)
 };
 
 // Every exit-2 path: the output directory must not keep a previous run's files that could pass for
@@ -97,6 +99,14 @@ int run(const RunOptions& options) {
   try {
     scenario = load_scenario(options.scenario_path, options.overrides);
     const RunContext context = run_context(options);
+    // SUMO driving leaves no decision to a system under test: refused rather than silently not run.
+    if (context.sumo_drives)
+      for (const SutSpec* sut : {&scenario->decider, &scenario->light_judge})
+        if (sut->kind != SutSpec::Kind::Reference)
+          throw InputError("--driver", 0,
+                           "--driver sumo lets SUMO decide, so the " +
+                               std::string(sut == &scenario->decider ? "decider" : "light_judge") + " under test '" +
+                               sut->text + "' cannot be in the loop (drop --driver sumo, or use compare)");
     // One index per net and process while the file is unchanged: a worker's later runs on the same
     // net skip the load (answers do not depend on what earlier runs looked up).
     const std::shared_ptr<const sumo::NetIndex> net_ptr = sumo::NetIndex::load_shared(scenario->net);
@@ -158,6 +168,7 @@ Command add_run_command(CLI::App& app) {
                   "(turn_signal_search_time=2.5); repeatable");
   sub->add_flag("--quiet", options->quiet, "Print nothing on success");
   add_strict_params_flag(sub, options->overrides.set);
+  add_sut_flags(sub, options->overrides.set, options->suts);
   sub->add_flag("--plot", options->plot, "Draw PNGs of the run into OUT/plots with signalsim-plot");
   sub->add_option("--driver", options->driver,
                   "Who drives the ego: signalsim (its decider, judge and planners) or sumo (SUMO's own blinker, "

@@ -7,6 +7,7 @@
 #include "app/batch_cli.hpp"
 #include "app/command.hpp"
 #include "app/plot_tool.hpp"
+#include "app/sut_flags.hpp"
 #include "batch/run_list.hpp"
 #include "batch/sweep_file.hpp"
 #include "batch/sweep_plot_check.hpp"
@@ -22,6 +23,8 @@ Command add_sweep_command(CLI::App& app) {
     BackendCliOptions backend;
     bool plot = false;
     bool list = false;
+    std::vector<std::string> set;  // the overrides of --decider, --light-judge, --sut-timeout
+    SutFlags suts;
   };
   auto o = std::make_shared<Options>();
   CLI::App* sub = app.add_subcommand("sweep", "Run a sweep file: scenarios x grid x zipped values; results.csv");
@@ -30,10 +33,16 @@ Command add_sweep_command(CLI::App& app) {
   sub->add_flag("--plot", o->plot, "Draw the file's plot: (a heat map of a metric over two swept keys) with signalsim-plot");
   sub->add_flag("--list", o->list, "Print the runs and exit without running them");
   add_backend_options(sub, o->backend);
+  add_sut_flags(sub, o->set, o->suts);
   return {sub, [o]() -> int {
             try {
               const Sweep sweep = load_sweep(o->file);
               std::vector<RunSpec> runs = expand_sweep(sweep);
+              for (const std::string& key : swept_keys(sweep))
+                if ((key == "decider" && !o->suts.decider.empty()) || (key == "light_judge" && !o->suts.light_judge.empty()))
+                  throw InputError(key == "decider" ? "--decider" : "--light-judge", 0,
+                                   "the sweep file " + o->file + " sweeps " + key + " itself");
+              for (RunSpec& run : runs) run.set.insert(run.set.end(), o->set.begin(), o->set.end());
               check_sweep_runs(sweep, runs);
               check_sweep_plot(sweep, runs);  // a plot: no run can give is refused before any run
               const std::string default_out = sweep.out.empty() ? "out/" + sweep.name : sweep.out;

@@ -221,27 +221,33 @@ std::string comparison_csv(const std::vector<ScenarioComparison>& scenarios) {
 
 std::string comparison_screen(const std::vector<ScenarioComparison>& scenarios, std::size_t max_lines) {
   const std::vector<Row> rows = comparison_rows(scenarios);
-  std::string out = padded("scenario", 28) + padded("section", 18) + padded("id", 6) + padded("blinker", 7) +
-                    padded("signalsim", 28) + "sumo\n";
+  // One column per driver, in run order (sut, signalsim, sumo; or signalsim, sumo).
+  std::vector<std::string> drivers;
+  if (!scenarios.empty())
+    for (const DriverRun& run : scenarios.front().runs) drivers.push_back(run.driver);
+  if (drivers.empty()) drivers = {"signalsim", "sumo"};
+  std::string out = padded("scenario", 28) + padded("section", 18) + padded("id", 6) + padded("blinker", 7);
+  for (std::size_t d = 0; d < drivers.size(); ++d) out += d + 1 < drivers.size() ? padded(drivers[d], 28) : drivers[d] + "\n";
   std::size_t lines = 0, items = 0;
   bool off_plan = false;
   for (std::size_t i = 0; i < rows.size();) {
     // The rows of one item: consecutive rows with the same scenario and section.
     std::size_t j = i;
-    std::string cells[2];
+    std::vector<std::string> cells(drivers.size());
     while (j < rows.size() && rows[j][column("scenario")] == rows[i][column("scenario")] &&
            rows[j][column("section")] == rows[i][column("section")]) {
       const std::string text = screen_cell(rows[j]);
       off_plan = off_plan || text.ends_with(" *");
-      cells[rows[j][column("driver")] == "sumo" ? 1 : 0] = text;
+      const auto at = std::find(drivers.begin(), drivers.end(), rows[j][column("driver")]);
+      if (at != drivers.end()) cells[static_cast<std::size_t>(at - drivers.begin())] = text;
       ++j;
     }
     ++items;
     if (lines < max_lines) {
       const Row& r = rows[i];
       out += padded(r[column("scenario")], 28) + padded(r[column("section")].empty() ? "-" : r[column("section")], 18) +
-             padded(r[column("id")], 6) + padded(r[column("blinker")].empty() ? "-" : r[column("blinker")], 7) +
-             padded(cells[0], 28) + cells[1] + "\n";
+             padded(r[column("id")], 6) + padded(r[column("blinker")].empty() ? "-" : r[column("blinker")], 7);
+      for (std::size_t d = 0; d < cells.size(); ++d) out += d + 1 < cells.size() ? padded(cells[d], 28) : cells[d] + "\n";
       ++lines;
     }
     i = j;

@@ -5,7 +5,8 @@
 //   items    per scenario: the route's signal sections (turn, roundabout_entry, roundabout_exit;
 //            report/signal_sections.hpp, numbered per kind from 1 like results.csv) and its
 //            lights (light1, ...), by route s (a light's stop line before a section starting there)
-//   rows     per item, one row per driver (signalsim, sumo): the run's metrics for that item, matched
+//   rows     per item, one row per driver (signalsim, sumo; with a system under test sut, signalsim,
+//            sumo: docs/compare.md): the run's metrics for that item, matched
 //            by kind and number (the route is the same, so both runs have the same sections)
 //   errors   a run that did not finish gives every item of its scenario an error row for that driver
 //            (status error, the message); when no item could be listed, one error row per driver
@@ -41,7 +42,7 @@ std::vector<ComparedItem> compared_items(const RouteMap& route, const TurnSignal
 
 /// What one run (one driver) of a scenario left.
 struct DriverRun {
-  std::string driver;                ///< "signalsim" or "sumo"
+  std::string driver;                ///< "sut" (signalsim with a decider / light judge under test), "signalsim" or "sumo"
   std::string status;                ///< passed, failed, no_expectations, or error
   std::string error;                 ///< why, for status error
   std::string run_dir;               ///< relative to the output directory
@@ -53,7 +54,7 @@ struct ScenarioComparison {
   std::string scenario;              ///< its name
   double base_link_to_front = 0.0;   ///< [m]
   std::vector<ComparedItem> items;
-  std::vector<DriverRun> runs;       ///< signalsim first, then sumo
+  std::vector<DriverRun> runs;       ///< in driver order: [sut,] signalsim, sumo
 };
 
 /// comparison.csv's columns, in order.
@@ -66,7 +67,7 @@ std::vector<std::vector<std::string>> comparison_rows(const std::vector<Scenario
 /// The whole table as CSV (RFC 4180), header first.
 std::string comparison_csv(const std::vector<ScenarioComparison>& scenarios);
 
-/// At most `max_lines` lines, one per item: both drivers side by side (lead distance and time, missed
+/// At most `max_lines` lines, one per item: the drivers side by side (the first scenario's, in order) (lead distance and time, missed
 /// and what was shown, stop error or the state at the line), then the errors.
 std::string comparison_screen(const std::vector<ScenarioComparison>& scenarios, std::size_t max_lines = 30);
 

@@ -51,7 +51,7 @@ std::vector<RunSpec> expand_sweep(const Sweep& sweep) {
       for (std::size_t f = 0; f < factors.size(); ++f)
         for (const auto& [key, value] : factors[f][at[f]]) {
           run.values.emplace_back(key, value);
-          run.set.push_back(set_argument(key, value));
+          run.set.push_back(sweep_set_argument(sweep, key, value));
         }
       runs.push_back(std::move(run));
       // Odometer: the last factor turns fastest; done when the first one wraps around.

@@ -108,7 +108,8 @@ std::vector<TimelineRow> read_timeline_csv(const std::string& path) {
   const int c_x = col("x"), c_y = col("y"), c_edge = col("edge"), c_lane = col("lane"), c_lat = col("lateral_offset"),
             c_source = col("blinker_source"), c_signals = col("sumo_signals"), c_tl = col("tl_id"),
             c_state = col("tl_state"), c_decision = col("tl_decision"), c_zone = col("zone"),
-            c_planned = col("planned_offset"), c_v2i = col("v2i_time_to_red");
+            c_planned = col("planned_offset"), c_v2i = col("v2i_time_to_red"), c_ref = col("ref_blinker"),
+            c_ref_source = col("ref_blinker_source"), c_ref_tl = col("ref_tl_decision"), c_reason = col("tl_reason");
   std::vector<TimelineRow> rows;
   for (std::size_t r = 1; r < table.size(); ++r) {
     const auto& f = table[r];
@@ -135,6 +136,12 @@ std::vector<TimelineRow> read_timeline_csv(const std::string& path) {
     if (c_zone >= 0) row.zone = parse_enum(f[c_zone], JudgeZone::Slow, JudgeZone::None);
     if (c_planned >= 0 && !f[c_planned].empty()) row.planned_offset = number(f[c_planned], path, r + 1);
     if (c_v2i >= 0 && !f[c_v2i].empty()) row.v2i_time_to_red = number(f[c_v2i], path, r + 1);  // V2I runs only
+    // A decider / light judge under test: the reference's decisions in shadow, the SUT's reason.
+    if (c_ref >= 0 && !f[c_ref].empty()) row.ref_blinker = parse_blinker(f[c_ref]);
+    if (c_ref_source >= 0) row.ref_blinker_source = parse_source(f[c_ref_source]);
+    if (c_ref_tl >= 0 && !f[c_ref_tl].empty())
+      row.ref_tl_decision = parse_enum(f[c_ref_tl], JudgeDecision::EmergencyStop, JudgeDecision::None);
+    if (c_reason >= 0) row.tl_reason = f[c_reason];
     rows.push_back(std::move(row));
   }
   return rows;

@@ -50,6 +50,14 @@ void read_summary(ResultRow& row, const RunSpec& run, const std::string& dir) {
   }
   for (const auto& [column, text] : flatten_metrics(metrics))
     if (!text.empty()) row.cells.emplace(column, text);
+  // A system under test: its name (a swept decider keeps its column as swept) and its agreement.
+  for (const std::string role : {"decider", "light_judge"}) {
+    if (!summary.contains(role) || !summary[role].is_object()) continue;
+    const auto& block = summary[role];
+    row.cells.emplace(role, block.value("name", std::string()));
+    if (block.contains("agreement") && block["agreement"].is_number())
+      row.cells.emplace(role + "_agreement", block["agreement"].dump());
+  }
 }
 
 }  // namespace

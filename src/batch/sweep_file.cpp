@@ -11,6 +11,7 @@
 #include "batch/scenario_files.hpp"
 #include "batch/sweep_plot_check.hpp"
 #include "scenario/input_error.hpp"
+#include "scenario/sut_spec.hpp"
 #include "scenario/yaml_fields.hpp"
 #include "core/file_paths.hpp"
 
@@ -29,6 +30,19 @@ std::string value_text(const YAML::Node& value, const std::string& file, const s
   throw InputError(file, yaml_line(value), where + ": expected a value (a number, a text or a list)");
 }
 
+bool is_sut_key(const std::string& key) { return key == "decider" || key == "light_judge"; }
+
+// A swept or set decider / light judge: a name signalsim knows (a lib: path relative to the sweep file).
+void check_sut_value(const std::string& key, const std::string& value, const std::string& file, int line,
+                     const std::string& where) {
+  if (!is_sut_key(key)) return;
+  SutSpec spec;
+  std::string reason = parse_sut_spec(value, fs::path(file).parent_path().string(), spec);
+  if (reason.empty() && key == "light_judge" && spec.kind == SutSpec::Kind::AutowareCore)
+    reason = "autoware_core is a decider (its path_generator has no traffic-light judge)";
+  if (!reason.empty()) throw InputError(file, line, where + "." + key + ": " + reason);
+}
+
 SweepAxis read_axis(const std::string& key, const YAML::Node& list, const std::string& file, const std::string& where) {
   const std::string what = where + "." + key;
   if (!list.IsSequence()) throw InputError(file, yaml_line(list), what + ": expected a list of values");
@@ -39,6 +53,7 @@ SweepAxis read_axis(const std::string& key, const YAML::Node& list, const std::s
     if (item.IsNull()) throw InputError(file, yaml_line(item), what + ": a value is empty");
     axis.values.push_back(value_text(item, file, what));
     axis.lines.push_back(yaml_line(item) > 0 ? yaml_line(item) : yaml_line(list));
+    check_sut_value(key, axis.values.back(), file, axis.lines.back(), where);
   }
   return axis;
 }
@@ -125,7 +140,9 @@ void read_set(const YamlFields& top, const std::string& path, std::set<std::stri
     const std::string key = entry.first.Scalar();
     check_key(key, entry.first, path, "set", seen);
     if (entry.second.IsNull()) throw InputError(path, yaml_line(entry.first), "set." + key + ": the value is empty");
-    s.set.push_back(set_argument(key, value_text(entry.second, path, "set." + key)));
+    const std::string value = value_text(entry.second, path, "set." + key);
+    check_sut_value(key, value, path, yaml_line(entry.second), "set");
+    s.set.push_back(sweep_set_argument(s, key, value));
     s.set_lines.push_back(yaml_line(entry.first));
   }
 }
@@ -168,7 +185,7 @@ Sweep load_sweep(const std::string& path) {
   if (!root || root.IsNull()) throw InputError(path, 0, "the sweep file is empty");
   YamlFields top(root, path, "", sweep_keys());
   Sweep s;
-  s.path = path;
+  s.path = path;  // first: read_set's sweep_set_argument resolves beside it
   s.name = top.text_or("name", fs::path(path).stem().string());
   s.description = top.text_or("description", "");
   s.scenarios = read_scenarios(top, path);
@@ -200,6 +217,11 @@ std::vector<std::string> swept_keys(const Sweep& sweep) {
   for (const auto& group : sweep.zips)
     for (const SweepAxis& a : group) keys.push_back(a.key);
   return keys;
+}
+
+std::string sweep_set_argument(const Sweep& sweep, const std::string& key, const std::string& value) {
+  if (is_sut_key(key)) return sut_override(key, value, fs::path(sweep.path).parent_path().string());
+  return set_argument(key, value);
 }
 
 std::string set_argument(const std::string& key, const std::string& value) {

@@ -18,7 +18,9 @@
 //                                          # (or a list of such mappings: one picture each)
 //
 // Keys of grid, zip and set are anything `signalsim run --set` accepts: scenario keys (`seed`,
-// `country`, `ego.max_speed`, ...) or parameter names. Runs are numbered 0.. in the order
+// `country`, `ego.max_speed`, `decider`, ...) or parameter names. A swept `decider` / `light_judge`
+// (`decider: [reference, autoware_core, lib:../build/my.so]`) names lib: paths and exec: directories
+// relative to the sweep file. Runs are numbered 0.. in the order
 // scenarios (outermost) x grid x zip factors (innermost).
 #pragma once
 
@@ -68,6 +70,10 @@ Sweep load_sweep(const std::string& path);
 
 /// The swept keys, grid first then zip, in file order.
 std::vector<std::string> swept_keys(const Sweep& sweep);
+
+/// set_argument, but a `decider` or `light_judge` value names its lib: path and exec: directory
+/// relative to the sweep file (sut_override, scenario/sut_spec.hpp).
+std::string sweep_set_argument(const Sweep& sweep, const std::string& key, const std::string& value);
 
 /// "key=value" for `--set`: the value as written, double-quoted when YAML would read it back
 /// differently (a list given in flow style stays as it is).

@@ -16,7 +16,9 @@ int rank_in(const std::vector<std::string>& list, const std::string& name) {
 }
 
 const std::vector<std::string>& run_level_order() {
-  static const std::vector<std::string> order = {"max_decel",      "max_jerk",       "collisions",
+  static const std::vector<std::string> order = {"decider",        "decider_agreement", "light_judge",
+                                                 "light_judge_agreement",
+                                                 "max_decel",      "max_jerk",       "collisions",
                                                  "blinker_events", "flickers",       "missed_signals",
                                                  "red_light_violations"};
   return order;

@@ -17,7 +17,8 @@ namespace signalsim {
 std::vector<std::pair<std::string, std::string>> flatten_metrics(const nlohmann::ordered_json& metrics);
 
 /// A fixed order of flattened metric columns, independent of which runs have which: run-level
-/// keys first, then turns, roundabout entries, exits, other sections, lights; by number, then field.
+/// keys first (a SUT's decider, decider_agreement, light_judge, light_judge_agreement before the
+/// metrics), then turns, roundabout entries, exits, other sections, lights; by number, then field.
 bool metric_column_less(const std::string& a, const std::string& b);
 
 }  // namespace signalsim

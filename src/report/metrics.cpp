@@ -19,6 +19,15 @@ nlohmann::ordered_json optional_json(const std::optional<T>& v) {
 
 }  // namespace
 
+std::vector<SignalSection> run_signal_sections(const Scenario& scenario, const RouteMap& route, const RunRecord& record) {
+  std::vector<SignalSection> sections = signal_sections(route, scenario.run_params.decider);
+  for (const ManeuverLine& line : record.maneuver_lines)
+    sections.push_back({line.kind, line.id, line.blinker, line.s_start + record.base_link_to_front, line.s_end, {}});
+  std::stable_sort(sections.begin(), sections.end(),
+                   [](const SignalSection& a, const SignalSection& b) { return a.s_start < b.s_start; });
+  return sections;
+}
+
 RunMetrics compute_metrics(const Scenario& scenario, const RouteMap& route, const RunRecord& record) {
   RunMetrics m;
   const auto& rows = record.rows;
@@ -39,13 +48,7 @@ RunMetrics compute_metrics(const Scenario& scenario, const RouteMap& route, cons
                                                     [](const TimelineEvent& e) { return e.kind == "blinker"; }));
   m.flickers = count_flickers(rows, scenario.step_length);
 
-  // The route's sections and the maneuvers' lateral motions (front bumper at base_link's start), by start.
-  std::vector<SignalSection> sections = signal_sections(route, scenario.run_params.decider);
-  for (const ManeuverLine& line : record.maneuver_lines)
-    sections.push_back({line.kind, line.id, line.blinker, line.s_start + record.base_link_to_front, line.s_end, {}});
-  std::stable_sort(sections.begin(), sections.end(),
-                   [](const SignalSection& a, const SignalSection& b) { return a.s_start < b.s_start; });
-  m.sections = measure_sections(sections, record, scenario.step_length);
+  m.sections = measure_sections(run_signal_sections(scenario, route, record), record, scenario.step_length);
   for (const SectionMetrics& s : m.sections) m.missed_signals += s.missed.value_or(false);
   m.lights = measure_lights(route, record);
   for (const LightMetrics& l : m.lights) m.red_light_violations += l.red_light_violation.value_or(false);

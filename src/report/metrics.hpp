@@ -45,6 +45,10 @@ struct RunMetrics {
   std::vector<LightMetrics> lights;
 };
 
+/// The sections a run is measured on: the route's (signal_sections) and its maneuvers' lateral
+/// motions (front bumper at base_link's start), sorted by start.
+std::vector<SignalSection> run_signal_sections(const Scenario& scenario, const RouteMap& route, const RunRecord& record);
+
 RunMetrics compute_metrics(const Scenario& scenario, const RouteMap& route, const RunRecord& record);
 
 /// The "metrics" object of summary.json.

@@ -11,6 +11,7 @@
 #include "report/metrics.hpp"
 #include "report/run_files.hpp"
 #include "report/summary_sections.hpp"
+#include "report/sut_agreement.hpp"
 #include "scenario/take_over.hpp"
 #include "session/sumo_session.hpp"
 
@@ -255,6 +256,9 @@ void write_run_outputs(const std::string& dir, const Scenario& scenario, const s
   summary["lights"] = lights_json(record);
   summary["lane_changes"] = lane_changes_json(record);
   summary["metrics"] = metrics_json(scenario, plan.map, record);
+  // Only with a system under test of the role (docs/decider.md): every other summary stays as it was.
+  if (!record.decider_sut.empty()) summary["decider"] = decider_agreement_json(scenario, plan.map, record);
+  if (!record.light_judge_sut.empty()) summary["light_judge"] = light_judge_agreement_json(record);
   nlohmann::ordered_json expectations = nlohmann::ordered_json::array();
   for (const ExpectationResult& r : results)
     expectations.push_back({{"expectation", r.description}, {"passed", r.passed}, {"detail", r.detail}});

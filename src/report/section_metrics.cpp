@@ -85,6 +85,8 @@ SectionMetrics measure_section(const SignalSection& section, const RunRecord& re
   m.lead_distance = rounded(section.s_start - rows[first].s_front, 3);
   m.lead_time = rounded(t_enter - rows[first].time, 3);
   m.time_on = rounded(duration_of(rows, first, last, step), 3);
+  m.on_s = rounded(rows[first].s_front, 3);
+  m.off_s = rounded(rows[last + 1 < rows.size() ? last + 1 : last].s_front, 3);
   return m;
 }
 

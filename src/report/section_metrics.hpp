@@ -31,6 +31,9 @@ struct SectionMetrics {
   std::optional<double> time_on;         ///< [s] length of the blinker stretch serving the section
   int flickers = 0;                      ///< blinker states shorter than 1 s near the section
   std::optional<bool> missed;            ///< the blinker was not on when the front reached the start
+  /// [m] front bumper route s where the serving stretch began, and where it ended (the first row
+  /// after it, or its last row when the run ended with it on); empty when no stretch served.
+  std::optional<double> on_s, off_s;
 };
 
 /// Shorter than this a blinker state counts as a flicker [s].

@@ -50,11 +50,21 @@ void read_parameters(const YamlFields& top, const std::string& path, const YAML:
 }
 
 // `decider:`, `light_judge:` (a lib: path relative to this file; an exec: command runs in its
-// directory) and `sut_timeout:`.
+// directory) and `sut_timeout:`. An override of sut_override's form {sut: TEXT, dir: DIR} (--decider,
+// a sweep file) names its own directory instead.
 void read_systems_under_test(const YamlFields& top, const std::string& path, Scenario& s) {
-  const std::string dir = std::filesystem::path(path).parent_path().string();
   for (auto [key, spec] : {std::pair{"decider", &s.decider}, std::pair{"light_judge", &s.light_judge}}) {
-    const std::string text = top.text_or(key);
+    std::string dir = std::filesystem::path(path).parent_path().string();
+    std::string text;
+    if (const YAML::Node given = top.node(key); given && given.IsMap()) {
+      const YAML::Node sut = given["sut"], base = given["dir"];
+      if (given.size() != 2 || !sut || !sut.IsScalar() || !base || !base.IsScalar())
+        top.fail(key, "expected a text (reference, autoware_core, traci, lib:PATH.so or exec:COMMAND)");
+      text = sut.Scalar();
+      dir = base.Scalar();
+    } else {
+      text = top.text_or(key);
+    }
     if (text.empty()) continue;
     if (const std::string reason = parse_sut_spec(text, dir, *spec); !reason.empty()) top.fail(key, reason);
   }

@@ -3,6 +3,8 @@
 
 #include <filesystem>
 
+#include <yaml-cpp/yaml.h>
+
 namespace signalsim {
 
 std::string parse_sut_spec(const std::string& text, const std::string& base_dir, SutSpec& out) {
@@ -30,6 +32,14 @@ std::string parse_sut_spec(const std::string& text, const std::string& base_dir,
   }
   out = std::move(spec);
   return "";
+}
+
+std::string sut_override(const std::string& key, const std::string& text, const std::string& base_dir) {
+  YAML::Emitter out;
+  out << YAML::Flow << YAML::BeginMap << YAML::Key << "sut" << YAML::Value << YAML::DoubleQuoted << text
+      << YAML::Key << "dir" << YAML::Value << YAML::DoubleQuoted
+      << std::filesystem::absolute(base_dir.empty() ? "." : base_dir).lexically_normal().string() << YAML::EndMap;
+  return key + "=" + out.c_str();
 }
 
 }  // namespace signalsim

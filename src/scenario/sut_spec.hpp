@@ -21,4 +21,10 @@ struct SutSpec {
 /// `base_dir`). Returns the reason when the text is none of them (or lib:/exec: is empty), else "".
 std::string parse_sut_spec(const std::string& text, const std::string& base_dir, SutSpec& out);
 
+/// The override item that names a SUT for `key` ("decider" or "light_judge") relative to `base_dir`
+/// instead of the scenario file's directory: `key={sut: "TEXT", dir: "ABSOLUTE_DIR"}` (the command
+/// line's --decider gives the current directory, a sweep file its own). The scenario reader takes this
+/// mapping in place of the plain text; `text` stays as given (summaries, results.csv).
+std::string sut_override(const std::string& key, const std::string& text, const std::string& base_dir);
+
 }  // namespace signalsim
