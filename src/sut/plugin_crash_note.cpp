@@ -2,6 +2,7 @@
 // a stack buffer and calls write(2), sigaction(2) and raise(3) (async-signal-safe).
 #include "sut/plugin_crash_note.hpp"
 
+#include <fcntl.h>
 #include <signal.h>
 #include <unistd.h>
 
@@ -16,6 +17,7 @@ struct sigaction g_previous[sizeof kSignals / sizeof kSignals[0]];
 volatile sig_atomic_t g_installed = 0;
 const char* volatile g_who = nullptr;
 volatile double g_time = -1.0;
+volatile int g_stderr = -1;  // a copy of the stderr of before SUMO started; -1: fd 2
 
 const char* signal_name(int sig) {
   switch (sig) {
@@ -62,7 +64,7 @@ void on_fatal(int sig) {
       append(line, at, sizeof line, " at the start");
     }
     line[at++] = '\n';
-    (void)!write(STDERR_FILENO, line, at);
+    (void)!write(g_stderr >= 0 ? g_stderr : STDERR_FILENO, line, at);
   }
   for (std::size_t i = 0; i < sizeof kSignals / sizeof kSignals[0]; ++i)
     if (kSignals[i] == sig) sigaction(sig, &g_previous[i], nullptr);
@@ -80,6 +82,13 @@ void install() {
 }
 
 }  // namespace
+
+void keep_stderr_for_crash_notes() {
+  const int copy = fcntl(STDERR_FILENO, F_DUPFD_CLOEXEC, 10);
+  const int previous = g_stderr;
+  g_stderr = copy;
+  if (previous >= 0) close(previous);
+}
 
 PluginCallGuard::PluginCallGuard(const char* who, double time) {
   install();

@@ -6,6 +6,10 @@
 
 namespace signalsim {
 
+/// The stderr the crash line goes to: the process's stderr now (an embedded SUMO later sends fd 2 to
+/// a capture file of its own while it runs). Call before SUMO starts; each call replaces the last.
+void keep_stderr_for_crash_notes();
+
 /// Marks a call into a plugin for as long as it lives: `who` ("decider lib:d.so", must outlive the
 /// guard) at simulation time `time` [s] (negative: at the start). Installs the handlers once.
 class PluginCallGuard {

@@ -5,6 +5,7 @@
 
 #include "scenario/input_error.hpp"
 #include "sut/bundled_plugins.hpp"
+#include "sut/plugin_crash_note.hpp"
 #include "sut/plugin_library.hpp"
 #include "sut/sut_library.hpp"
 
@@ -60,6 +61,7 @@ SystemsUnderTest make_systems_under_test(const Scenario& scenario) {
 }
 
 void check_plugins_load(const Scenario& scenario) {
+  if (is_plugin(scenario.decider) || is_plugin(scenario.light_judge)) keep_stderr_for_crash_notes();
   if (is_plugin(scenario.decider)) load(scenario, "decider", scenario.decider, PluginRole::Decider);
   if (is_plugin(scenario.light_judge)) load(scenario, "light_judge", scenario.light_judge, PluginRole::LightJudge);
 }
