@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "core/blinker_signals.hpp"
-#include "signalsim/decider_plugin.h"
+#include <signalsim/decider_plugin.h>
 #include "sut/sut_values.hpp"
 
 namespace signalsim {

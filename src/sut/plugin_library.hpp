@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "signalsim/decider_plugin.h"
+#include <signalsim/decider_plugin.h>
 
 namespace signalsim {
 
