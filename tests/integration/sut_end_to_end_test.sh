@@ -8,11 +8,14 @@
 #   - check: golden files made with the SUT pass with it and fail the reference; golden files made with
 #     the reference fail the SUT, naming both
 #   - compare --decider SUT: rows of sut, signalsim and sumo per item, the picture with the SUT's colour
-# usage: sut_end_to_end_test.sh SIGNALSIM_BINARY SOURCE_DIR SUT   (SUT: autoware_core, lib:/abs/x.so, ...)
+#   - with JUDGE, batch --light-judge JUDGE on a red light: summary.json "light_judge" and its columns
+# usage: sut_end_to_end_test.sh SIGNALSIM_BINARY SOURCE_DIR SUT [JUDGE]   (autoware_core, lib:x.so, ...; a
+# relative lib: path is relative to the current directory, as on the command line)
 set -u
 bin=$1
 src=$2
 sut=$3
+judge=${4:-}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 fail() { echo "FAIL: $*"; exit 1; }
@@ -64,18 +67,20 @@ for a, b in zip(sut[:first], ref[:first]):
 print(f"ok   ref_blinker is the reference's: identical to a reference run for the first {first} rows")
 PY
 
-# sweep: implementations x countries
+# sweep: implementations x countries. A lib: path in a sweep file is relative to the file.
+swept=$sut
+case $sut in lib:*) swept="lib:$(realpath -m --relative-to="$work" "${sut#lib:}")" ;; esac
 cat > "$work/sweep.yaml" <<YAML
 name: deciders
 scenarios: ${scenarios[0]}
 grid:
-  decider: [reference, "$sut"]
+  decider: [reference, "$swept"]
   country: [jp, de]
 YAML
 "$bin" sweep "$work/sweep.yaml" --out "$work/sweep" --quiet --jobs 2 > "$work/sweep.log" 2>&1
 code=$?
 [ $code -le 1 ] || fail "sweep: exit $code: $(cat "$work/sweep.log")"
-$py - "$work/sweep" "$sut" <<'PY' || exit 1
+$py - "$work/sweep" "$swept" <<'PY' || exit 1
 import csv, os, sys
 out, sut = sys.argv[1], sys.argv[2]
 rows = list(csv.DictReader(open(os.path.join(out, "results.csv"), newline="")))
@@ -83,6 +88,30 @@ assert [(r["decider"], r["country"]) for r in rows] == [("reference", "jp"), ("r
 assert all(r["decider_agreement"] == "" for r in rows[:2]) and all(r["decider_agreement"] != "" for r in rows[2:]), rows
 print("ok   sweep decider x country:", [(r["decider"], r["country"], r["decider_agreement"]) for r in rows])
 PY
+
+# A light judge under test, when the SUT has that role too (JUDGE given): agreement over the judged rows.
+if [ -n "$judge" ]; then
+  "$bin" batch "$src/scenarios/tl_red_stop_then_go.yaml" --light-judge "$judge" --out "$work/judge" --quiet \
+    > "$work/judge.log" 2>&1
+  code=$?
+  [ $code -le 1 ] || fail "batch --light-judge $judge: exit $code: $(cat "$work/judge.log")"
+  $py - "$work/judge" "$judge" <<'PY' || exit 1
+import csv, json, os, sys
+out, judge = sys.argv[1], sys.argv[2]
+r = list(csv.DictReader(open(os.path.join(out, "results.csv"), newline="")))[0]
+s = json.load(open(os.path.join(out, r["run_dir"], "summary.json")))
+j = s["light_judge"]
+assert "decider" not in s and r["light_judge"] == judge == j["name"], (r, j)
+timeline = list(csv.DictReader(open(os.path.join(out, r["run_dir"], "timeline.csv"), newline="")))
+judged = [t for t in timeline if t["tl_id"] and t["ref_tl_decision"]]
+assert j["steps"] == len(judged) > 0, (j["steps"], len(judged))
+assert j["agreeing_steps"] == sum(t["tl_decision"] == t["ref_tl_decision"] for t in judged), j
+assert float(r["light_judge_agreement"]) == j["agreement"] == round(j["agreeing_steps"] / j["steps"], 4), (r, j)
+light = j["lights"][0]
+assert light["id"] == "C" and "stop" in light["sut"] and "stop" in light["reference"], light
+print(f"ok   batch --light-judge: agreement {j['agreement']} over {j['steps']} judged rows; C: sut {light['sut']}, reference {light['reference']}")
+PY
+fi
 
 # check: golden files per SUT. A scenario without expectations: --update accepts its runs whatever the
 # SUT does (a run whose expectations failed is never accepted).
