@@ -224,7 +224,7 @@ void SutProcess::write(const std::string& line, double timeout) {
     if (n > 0) {
       done += static_cast<std::size_t>(n);
     } else if (errno == EPIPE) {
-      throw SutProcessError(exit_reason());
+      throw SutProcessError(exit_reason() + " before reading the message");
     } else if (errno != EAGAIN && errno != EINTR) {
       throw SutProcessError(std::string("cannot write to it: ") + std::strerror(errno));
     }
@@ -241,7 +241,7 @@ std::string SutProcess::read_line(double timeout) {
       if (!line.empty() && line.back() == '\r') line.pop_back();
       return line;
     }
-    if (eof_) throw SutProcessError(exit_reason());
+    if (eof_) throw SutProcessError(exit_reason() + " before replying");
     if (Clock::now() >= deadline) throw SutProcessError("no reply within " + seconds_text(timeout) + " s");
     fill(ms_left(deadline));
   }

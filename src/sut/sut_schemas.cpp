@@ -148,8 +148,8 @@ std::string sut_request_schema(const std::string& role) {
 std::string sut_reply_schema(const std::string& role) {
   Json schema{{"$schema", "http://json-schema.org/draft-07/schema#"},
               {"title", "signalsim JSON-lines reply of a " + role + " to one step"}};
-  for (const auto& [key, value] : Json::parse(role == "decider" ? kDeciderReply : kLightJudgeReply).items())
-    schema[key] = value;
+  const Json reply = Json::parse(role == "decider" ? kDeciderReply : kLightJudgeReply);
+  for (const auto& [key, value] : reply.items()) schema[key] = value;
   return text_of(schema);
 }
 
