@@ -174,7 +174,9 @@ void SutProcess::kill_and_reap() {
 bool SutProcess::fill(int timeout_ms) {
   if (eof_) return false;
   pollfd p{out_, POLLIN, 0};
-  if (::poll(&p, 1, timeout_ms) <= 0) return true;
+  const int ready = ::poll(&p, 1, timeout_ms);
+  if (ready < 0 && errno == EINTR) throw SutProcessError("interrupted by a signal while waiting");
+  if (ready <= 0) return true;
   char chunk[65536];
   const ssize_t n = ::read(out_, chunk, sizeof chunk);
   if (n > 0) {
@@ -217,7 +219,8 @@ void SutProcess::write(const std::string& line, double timeout) {
     pollfd p[2] = {{in_, POLLOUT, 0}, {out_, POLLIN, 0}};
     const int ready = ::poll(p, eof_ ? 1 : 2, ms_left(deadline));
     if (ready == 0) throw SutProcessError("did not read its input within " + seconds_text(timeout) + " s");
-    if (ready < 0) continue;  // EINTR
+    if (ready < 0 && errno == EINTR) throw SutProcessError("interrupted by a signal while waiting");
+    if (ready < 0) continue;
     if (!eof_ && (p[1].revents & (POLLIN | POLLHUP))) fill(0);  // keep its output, never block it
     if (!(p[0].revents & (POLLOUT | POLLERR | POLLHUP))) continue;
     const ssize_t n = ::write(in_, line.data() + done, line.size() - done);
