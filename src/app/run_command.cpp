@@ -108,7 +108,7 @@ int run(const RunOptions& options) {
                            "--driver sumo lets SUMO decide, so the " +
                                std::string(sut == &scenario->decider ? "decider" : "light_judge") + " under test '" +
                                sut->text + "' cannot be in the loop (drop --driver sumo, or use compare)");
-    check_plugins_load(*scenario);  // a library that cannot be used: bad input before SUMO starts
+    check_systems_under_test(*scenario);  // a library or command that cannot be used: bad input before SUMO starts
     // One index per net and process while the file is unchanged: a worker's later runs on the same
     // net skip the load (answers do not depend on what earlier runs looked up).
     const std::shared_ptr<const sumo::NetIndex> net_ptr = sumo::NetIndex::load_shared(scenario->net);
