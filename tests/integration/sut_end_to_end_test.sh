@@ -9,6 +9,8 @@
 #     the reference fail the SUT, naming both
 #   - compare --decider SUT: rows of sut, signalsim and sumo per item, the picture with the SUT's colour
 #   - with JUDGE, batch --light-judge JUDGE on a red light: summary.json "light_judge" and its columns
+#   - the sweep file names a lib: path relative to itself; for an exec: command its folder links the
+#     current folder's files
 # usage: sut_end_to_end_test.sh SIGNALSIM_BINARY SOURCE_DIR SUT [JUDGE]   (autoware_core, lib:x.so, ...; a
 # relative lib: path is relative to the current directory, as on the command line)
 set -u
@@ -68,8 +70,12 @@ print(f"ok   ref_blinker is the reference's: identical to a reference run for th
 PY
 
 # sweep: implementations x countries. A lib: path in a sweep file is relative to the file.
+# An exec: command runs in the sweep file's folder: it gets links to the current folder's files.
 swept=$sut
-case $sut in lib:*) swept="lib:$(realpath -m --relative-to="$work" "${sut#lib:}")" ;; esac
+case $sut in
+  lib:*) swept="lib:$(realpath -m --relative-to="$work" "${sut#lib:}")" ;;
+  exec:*) for f in ./*; do [ -e "$work/${f#./}" ] || ln -s "$PWD/${f#./}" "$work/${f#./}"; done ;;
+esac
 cat > "$work/sweep.yaml" <<YAML
 name: deciders
 scenarios: ${scenarios[0]}
