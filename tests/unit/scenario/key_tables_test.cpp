@@ -151,6 +151,9 @@ TEST(KeyTables, TheLoaderReadsEveryKey) {
   EXPECT_DOUBLE_EQ(s.pull_out->at, 6.0);
   EXPECT_EQ(s.avoids.at(0).side, "left");
   EXPECT_EQ(s.expect.size(), expectation_kinds().keys.size());
+  EXPECT_EQ(s.decider.kind, SutSpec::Kind::AutowareCore);
+  EXPECT_EQ(s.light_judge.target, "python3 judge.py");
+  EXPECT_DOUBLE_EQ(s.sut_timeout, 2.5);
   Scenario take_over;
   ASSERT_NO_THROW(take_over = load_scenario(kTakeOver));
   EXPECT_EQ(take_over.ego.id, "veh42");
