@@ -36,10 +36,10 @@
 #include <vector>
 
 #include "core/vehicle_defaults.hpp"
-#include "generate/sections.hpp"
-#include "generate/speed_profile.hpp"
+#include "law/sections.hpp"
+#include "law/speed_profile.hpp"
 
-namespace signalsim::generate {
+namespace signalsim::law {
 
 /// [m] kept from every rule's boundary (numeric noise, the step's discrete positions).
 inline constexpr double kMargin = 0.5;
@@ -51,6 +51,7 @@ struct RuleParameters {
   double minimum_search_distance = 10.0; ///< turn_signal_minimum_search_distance [m]
   double base_link_to_front = vehicle_defaults::kBaseLinkToFront;  ///< [m]
   double straight = 50.0;                ///< [m] shortest stretch given a no_blinker
+  double step_length = kStepLength;      ///< [s] the run's step (a stated stretch holds a step)
 };
 
 struct LightFact {
@@ -73,6 +74,8 @@ struct GeneratedExpectation {
   double from_s = 0.0;      ///< [m]
   double to_s = 0.0;        ///< [m]
   std::string why;          ///< where the numbers come from (the file's comment)
+  /// The section a blinker expectation serves (index into the sections given); -1 for the others.
+  int section = -1;
 };
 
 /// One section's stretches, for the file's comment and for tests.
@@ -89,10 +92,10 @@ struct Derivation {
 };
 
 Derivation derive_expectations(const std::vector<Section>& sections, const RouteFacts& facts,
-                               const SpeedProfile& speed, const RuleParameters& params);
+                               const SpeedBounds& speed, const RuleParameters& params);
 
 /// Rounding used for every number written: down / up to 0.1 m (with a tolerance of 1e-6).
 double floor_tenth(double v);
 double ceil_tenth(double v);
 
-}  // namespace signalsim::generate
+}  // namespace signalsim::law

@@ -1,13 +1,13 @@
 // A route's sections: turn groups, roundabout entries and exits (the decider's own,
 // turn_signal/signal_sections), lane changes.
-#include "generate/sections.hpp"
+#include "law/sections.hpp"
 
 #include <algorithm>
 #include <map>
 
 #include "turn_signal/signal_sections.hpp"
 
-namespace signalsim::generate {
+namespace signalsim::law {
 namespace {
 
 Side side_of(TurnIndicator command) {
@@ -93,6 +93,24 @@ Module module_of(SectionKind kind) {
   return Module::Intersection;
 }
 
+Section maneuver_section(const ManeuverFact& m) {
+  Section s;
+  s.kind = SectionKind::LaneChange;
+  s.maneuver = m.kind;
+  s.id = m.edge;
+  s.lanelets = {m.lane};
+  s.start = m.edge_start;
+  s.end = m.edge_end;
+  s.motion_end = m.motion_end;
+  // A lane change's earliest start lies on its edge; the shift generator's modules signal from
+  // max(v * search_time, minimum_search_distance) before their motion's start (docs/behaviour.md §T8.1).
+  s.lane_change_at = m.kind == "lane_change" ? m.edge_start : m.motion_start;
+  const bool sided = m.side == Side::Left || m.side == Side::Right;
+  s.side = m.kind == "lane_change" && sided && m.approval_front ? m.side : Side::Either;
+  if (s.side != Side::Either) s.approval_front = m.approval_front;
+  return s;
+}
+
 std::vector<Section> route_sections(const RouteMap& route, const SectionParameters& params,
                                     const std::vector<LaneChangeFact>& lane_changes) {
   std::vector<Section> out;
@@ -123,4 +141,4 @@ std::vector<Section> route_sections(const RouteMap& route, const SectionParamete
   return out;
 }
 
-}  // namespace signalsim::generate
+}  // namespace signalsim::law
