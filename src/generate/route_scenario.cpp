@@ -114,6 +114,7 @@ SectionParameters section_parameters(const RunParameters& typed) {
   out.roundabout_search_distance = typed.decider.turn_signal_roundabout_search_distance;
   out.on_entry = typed.decider.turn_signal_roundabout_on_entry;
   out.on_exit = typed.decider.turn_signal_roundabout_on_exit;
+  out.entry_persistence = typed.decider.turn_signal_roundabout_entry_indicator_persistence;
   return out;
 }
 

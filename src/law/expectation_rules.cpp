@@ -118,6 +118,7 @@ Window initial_window(const Section& s, const SpeedBounds& speed, const RulePara
   }
   w.possible_to = s.end + b2f;  // base_link leaves the section: its desired end (§T4.3, §T5.2, §T5.3)
   w.to = w.possible_to;
+  if (s.persistent_end) w.possible_to = std::max(w.possible_to, *s.persistent_end + b2f);  // §T5.2 persistence
   w.to_why = "until base_link leaves it (its desired end, docs/behaviour.md §T4.3/§T5)";
   return w;
 }

@@ -61,6 +61,16 @@ Section section_of(const RouteMap& route, const Spans& spans, SectionKind kind, 
   return s;
 }
 
+// The end of the roundabout passage after entry lanelet `last` (docs/behaviour.md §T5.2: follow the
+// route while its lanelets belong to the entry's roundabout); nullopt when the route leaves at once.
+std::optional<double> passage_end(const RouteMap& route, std::size_t last) {
+  const std::string& id = route.at(last).roundabout_id;
+  std::size_t i = last;
+  while (i + 1 < route.size() && route.at(i + 1).roundabout_id == id && !id.empty()) ++i;
+  if (i == last) return std::nullopt;
+  return route.at(i).s_end();
+}
+
 }  // namespace
 
 const char* to_string(Side side) {
@@ -123,6 +133,7 @@ std::vector<Section> route_sections(const RouteMap& route, const SectionParamete
     s.side = side_of(r.command);
     if (kind == SectionKind::Turn) s.search_distance = params.intersection_search_distance;
     if (kind == SectionKind::RoundaboutEntry) s.search_distance = params.roundabout_search_distance;
+    if (kind == SectionKind::RoundaboutEntry && params.entry_persistence) s.persistent_end = passage_end(route, r.back_index);
     if (kind == SectionKind::RoundaboutExit) s.exit_desired_start = route.at(r.desired_start_index).s_start;
     out.push_back(std::move(s));
   }

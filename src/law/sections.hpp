@@ -54,6 +54,8 @@ struct Section {
   /// whole search distance (turn_signal_distance, docs/behaviour.md §T4.3).
   double search_distance = 30.0;
   std::optional<double> search_override;
+  /// Entry with entry_persistence: route s of the end of the exit the route takes (its desired end).
+  std::optional<double> persistent_end;
   /// Exit: route s where its desired start lies (the enable_exit_turn_signal chain, else its start).
   double exit_desired_start = 0.0;
   /// Lane change: base_link's earliest start of the lateral motion (route s) [m]. A run's other
@@ -72,6 +74,9 @@ struct SectionParameters {
   double roundabout_search_distance = 30.0;    ///< turn_signal_roundabout_search_distance [m]
   std::string on_entry = "None";               ///< turn_signal_roundabout_on_entry
   std::string on_exit = "Left";                ///< turn_signal_roundabout_on_exit
+  /// turn_signal_roundabout_entry_indicator_persistence: an entry's request lasts to the end of the
+  /// exit the route takes (docs/behaviour.md §T5.2), so its blinker may be on that far.
+  bool entry_persistence = false;
 };
 
 /// A lane change the route's lane plan needs (scenario/route_planning LateralSegment).

@@ -10,6 +10,7 @@
 #include "law/expectation_rules.hpp"
 #include "law/recorded_speed.hpp"
 #include "law/sections.hpp"
+#include "traffic_light/judge_line.hpp"
 
 namespace signalsim {
 namespace {
@@ -186,6 +187,7 @@ std::vector<Section> run_sections(const Scenario& scenario, const RouteMap& rout
   sp.roundabout_search_distance = scenario.run_params.decider.turn_signal_roundabout_search_distance;
   sp.on_entry = scenario.run_params.decider.turn_signal_roundabout_on_entry;
   sp.on_exit = scenario.run_params.decider.turn_signal_roundabout_on_exit;
+  sp.entry_persistence = scenario.run_params.decider.turn_signal_roundabout_entry_indicator_persistence;
   std::vector<Section> sections = law::route_sections(route, sp, {});
   for (const law::ManeuverFact& f : maneuver_facts(route, record)) sections.push_back(law::maneuver_section(f));
   std::stable_sort(sections.begin(), sections.end(), [](const Section& a, const Section& b) { return a.start < b.start; });
@@ -230,27 +232,55 @@ void judge_route_wide(const Judged& j, const std::vector<Section>& sections, con
   }
 }
 
-// Per light on the route whose stop line the front crossed: never on red (the one red-crossing rule,
-// step/light_outcomes crossed_on_red, recorded as RunRecord::red_violations).
-void judge_lights(const Judged& j, const RouteMap& route) {
+bool stop_colour(const std::string& observed) { return observed == "red" || observed == "amber"; }
+
+// Whether the rules say stop at row k (docs/behaviour.md §L1-§L2): the judge's input for the light
+// is red or amber (no arrow) for the hysteresis and two steps from k, and the ego can stop before the
+// stop point even after that time at its highest speed then (judge_dist < d, or slow, or no pass judge).
+bool stop_required_at(const RunRecord& record, std::size_t k, const std::string& id, double stop_point,
+                      const TrafficLightJudgeParameters& p, double step) {
+  const auto& rows = record.rows;
+  const double hold = p.stop_time_hysteresis + 2.0 * step;
+  double v = std::max(0.0, rows[k].speed), a0 = rows[k].accel;
+  for (std::size_t j = k; j < rows.size() && rows[j].time <= rows[k].time + hold + 1e-9; ++j) {
+    if (rows[j].tl_id != id || !stop_colour(rows[j].tl_observed)) return false;
+    v = std::max(v, rows[j].speed);
+    a0 = std::max(a0, rows[j].accel);  // a higher a0 lengthens the judge line (§L2.2 quirk 3)
+  }
+  const double d = stop_point - rows[k].s_front - v * hold;
+  if (d <= 0.0) return false;
+  if (!p.enable_pass_judge || v < p.yellow_light_stop_velocity) return true;
+  return calc_judge_line_dist_with_jerk_limit(v, a0, p.max_accel, p.max_jerk,
+                                              p.delay_response_time) < d;
+}
+
+// Per light on the route whose stop line the front crossed: not while the judge's input still said
+// red or amber since a step where the rules said stop.
+void judge_lights(const Judged& j, const RouteMap& route, const TrafficLightJudgeParameters& p, double step) {
+  const auto& rows = j.record.rows;
   std::vector<std::string> seen;
   for (const Lanelet& l : route.lanelets()) {
     if (l.is_internal || !l.traffic_light) continue;
     const std::string& id = l.traffic_light->tls_id;
-    const double line = l.stop_line_s();
     if (std::find(seen.begin(), seen.end(), id) != seen.end()) continue;
-    const bool crossed = std::any_of(j.record.rows.begin(), j.record.rows.end(),
-                                     [&](const TimelineRow& r) { return r.s_front >= line; });
-    if (!crossed) continue;
+    const double line = l.stop_line_s();
+    const auto cross = std::find_if(rows.begin(), rows.end(), [&](const TimelineRow& r) { return r.s_front >= line; });
+    if (cross == rows.begin() || cross == rows.end()) continue;
     seen.push_back(id);
-    LawVerdict v{"light", id, "red", true, "crossed the stop line at s " + m(line) + " not on red"};
-    for (const RedLightViolation& r : j.record.red_violations)
-      if (r.tl_id == id) {
-        v.passed = false;
-        v.detail = "crossed the stop line on red at t=" + rounded_fixed(r.time, 2) + " s, s_front=" +
-                   rounded_fixed(r.s_front, 2) + " m";
-        break;
-      }
+    const std::size_t c = static_cast<std::size_t>(cross - rows.begin());
+    // The steps before the crossing since the judge's input last said anything but red or amber.
+    std::size_t from = c;
+    while (from > 0 && rows[from - 1].tl_id == id && stop_colour(rows[from - 1].tl_observed)) --from;
+    LawVerdict v{"light", id, "stop", true, "crossed the stop line at " + at(*cross) + ", the judge's input not red or amber"};
+    for (std::size_t k = from; k < c; ++k) {
+      if (!stop_required_at(j.record, k, id, line - p.stop_margin, p, step)) continue;
+      v.passed = false;
+      v.detail = "crossed the stop line at " + at(*cross) + " with the judge given " + rows[c - 1].tl_observed +
+                 " since " + at(rows[from]) + "; the rules say stop from " + at(rows[k]) + " (docs/behaviour.md §L2.3)";
+      break;
+    }
+    if (v.passed && from < c) v.detail = "crossed the stop line at " + at(*cross) + " on " + rows[c - 1].tl_observed +
+                                         " where it could not stop (docs/behaviour.md §L2.6)";
     j.out.push_back(std::move(v));
   }
 }
@@ -272,7 +302,7 @@ std::vector<LawVerdict> law_verdicts(const Scenario& scenario, const RouteMap& r
   for (const GeneratedExpectation& e : d.expectations)
     if (e.section >= 0) judge_section(j, sections[static_cast<std::size_t>(e.section)], e, params.base_link_to_front);
   judge_route_wide(j, sections, d);
-  judge_lights(j, route);
+  judge_lights(j, route, scenario.run_params.judge, scenario.step_length);
   return out;
 }
 
