@@ -77,22 +77,29 @@ std::optional<LawVerdict> not_wrong_side(const RunRecord& record, Blinker wanted
   return v;
 }
 
-// No change of the blinker between steps with the front in [from, to].
-std::optional<LawVerdict> no_flicker(const RunRecord& record, double from, double to) {
+// Once the section's blinker is on with the front in [from, to], it stays on there: every change away
+// from it (and back) counts.
+std::optional<LawVerdict> no_flicker(const RunRecord& record, Blinker wanted, double from, double to) {
   const std::vector<std::size_t> in = rows_in(record, from, to);
   if (in.empty()) return std::nullopt;
   LawVerdict v;
   int changes = 0;
+  bool on = false;
   std::string first;
-  for (std::size_t k = 1; k < in.size(); ++k) {
-    const TimelineRow& a = record.rows[in[k - 1]];
+  for (std::size_t k = 0; k < in.size(); ++k) {
     const TimelineRow& b = record.rows[in[k]];
+    if (!on) {
+      on = b.blinker == wanted;
+      continue;
+    }
+    const TimelineRow& a = record.rows[in[k - 1]];
     if (a.blinker == b.blinker) continue;
-    if (changes++ == 0) first = std::string(name(a.blinker)) + " -> " + name(b.blinker) + " at " + at(b);
+    if (changes++ == 0) first = name(a.blinker) + " -> " + name(b.blinker) + " at " + at(b);
   }
   v.passed = changes == 0;
-  v.detail = v.passed ? "no change in [" + m(from) + ", " + m(to) + "]"
-                      : std::to_string(changes) + " change(s) in [" + m(from) + ", " + m(to) + "], first " + first;
+  v.detail = v.passed ? "no change after it came on in [" + m(from) + ", " + m(to) + "]"
+                      : std::to_string(changes) + " change(s) after it came on in [" + m(from) + ", " + m(to) +
+                            "], first " + first;
   return v;
 }
 
@@ -137,7 +144,7 @@ void judge_section(const Judged& j, const Section& s, const GeneratedExpectation
     j.add(s, "through", shows(j.record, wanted, std::nextafter(s.start, to), to));
   }
   j.add(s, "wrong_side", not_wrong_side(j.record, wanted, from, to));
-  j.add(s, "flicker", no_flicker(j.record, from, to));
+  j.add(s, "flicker", no_flicker(j.record, wanted, from, to));
 }
 
 // The run's maneuvers as the law sees them: each lateral motion, its edge's lanelet, and a lane
