@@ -11,7 +11,7 @@ With --connect HOST:PORT the long run attaches to that SUMO instead (start it wi
 scenario's net and step length); each libtraci call but getSubscriptionResults is one TraCI message.
 The runs end with exit code 1 (at 3 m/s the scenario's expectations do not hold); that is expected.
 
-Usage: tools/bench step-cost [--bin SIGNALSIM] [--scenario YAML] [--out DIR] [--connect HOST:PORT]
+Usage: tools/bench step-cost [--bin SIGNALSIM] [--scenario YAML] [--out DIR] [--set KEY=VALUE] [--connect HOST:PORT]
 Needs valgrind (Debian package valgrind). Takes about a minute.
 """
 import argparse
@@ -36,6 +36,8 @@ def run(args, duration, out_dir, connect=None):
     cg_file = os.path.join(out_dir, name + ".callgrind")
     command = ["valgrind", "--tool=callgrind", f"--callgrind-out-file={cg_file}", args.bin, "run", args.scenario,
                "--out", os.path.join(out_dir, name), "--quiet", "--set", f"duration={duration}"] + SLOW
+    for value in args.set:
+        command += ["--set", value]
     if connect:
         command += ["--connect", connect]
     done = subprocess.run(command, capture_output=True, text=True)
@@ -86,6 +88,8 @@ def main():
     parser.add_argument("--bin", default=os.path.join(ROOT, "build/src/app/signalsim"))
     parser.add_argument("--scenario", default=os.path.join(ROOT, "scenarios/intersection_left.yaml"))
     parser.add_argument("--out", default=os.path.join(ROOT, "out/step_cost"))
+    parser.add_argument("--set", action="append", default=[],
+                        help="one more --set of both runs (e.g. decider=lib:PATH.so: a decider under test)")
     parser.add_argument("--connect", help="HOST:PORT of a SUMO started with --remote-port (the long run only)")
     args = parser.parse_args()
     os.makedirs(args.out, exist_ok=True)

@@ -11,6 +11,14 @@ file(RELATIVE_PATH SIGNALSIM_INSTALL_DATA_FROM_BIN
 set_source_files_properties(src/scenario/data_dir.cpp TARGET_DIRECTORY signalsim_scenario PROPERTIES
   COMPILE_DEFINITIONS SIGNALSIM_INSTALL_DATA_FROM_BIN="${SIGNALSIM_INSTALL_DATA_FROM_BIN}")
 
+# The bundled plugins (the autoware_core decider, src/sut/bundled_plugins.cpp): P/lib/signalsim/plugins
+# installed, build/plugins in the build tree (each plugin target's LIBRARY_OUTPUT_DIRECTORY).
+set(SIGNALSIM_INSTALL_PLUGINDIR lib/signalsim/plugins)
+file(RELATIVE_PATH SIGNALSIM_INSTALL_PLUGINS_FROM_BIN
+     /prefix/${SIGNALSIM_INSTALL_BINDIR} /prefix/${SIGNALSIM_INSTALL_PLUGINDIR})
+set_source_files_properties(src/sut/bundled_plugins.cpp TARGET_DIRECTORY signalsim_sut PROPERTIES
+  COMPILE_DEFINITIONS SIGNALSIM_INSTALL_PLUGINS_FROM_BIN="${SIGNALSIM_INSTALL_PLUGINS_FROM_BIN}")
+
 # Build tree: one line naming the source tree, found by walking up from the binary's folder. It is
 # not installed, so an installed binary never reads this tree.
 file(CONFIGURE OUTPUT ${PROJECT_BINARY_DIR}/signalsim-data-dir.txt CONTENT "${PROJECT_SOURCE_DIR}\n")
@@ -29,3 +37,15 @@ install(DIRECTORY python/signalsim_plot DESTINATION ${SIGNALSIM_INSTALL_DATADIR}
 # left out: its sweep names the test data (tests/data), which is not installed.
 install(DIRECTORY scenarios DESTINATION ${SIGNALSIM_INSTALL_DATADIR} PATTERN sweeps EXCLUDE)
 install(DIRECTORY sumo_nets DESTINATION ${SIGNALSIM_INSTALL_DATADIR})
+
+# The plugin ABI's header, for plugins built against an installation (docs/decider.md "The C ABI").
+install(FILES include/signalsim/decider_plugin.h DESTINATION include/signalsim)
+# The bundled plugins, wherever their targets are added (called once the top directory is read).
+function(signalsim_install_bundled_plugins)
+  foreach(plugin IN ITEMS signalsim_autoware_core)
+    if(TARGET ${plugin})
+      install(TARGETS ${plugin} LIBRARY DESTINATION ${SIGNALSIM_INSTALL_PLUGINDIR})
+    endif()
+  endforeach()
+endfunction()
+cmake_language(DEFER DIRECTORY ${PROJECT_SOURCE_DIR} CALL signalsim_install_bundled_plugins)

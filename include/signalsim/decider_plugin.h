@@ -69,6 +69,11 @@ typedef struct {
   size_t tag_count;
   const ss_point* centerline;      /* net coordinates, in driving direction */
   size_t centerline_size;
+  /* The turn directions of every map successor of the lane, on or off the route (Autoware's
+   * "near next turn lane" check, docs/behaviour.md §T4.1); in the net's connection order. */
+  const ss_turn_direction* successor_turn_directions;
+  size_t successor_turn_direction_count;
+  int leaves_ring_at_end;          /* 1: a ring lane whose end has a connection off the ring (an exit branches there) */
 } ss_lanelet;
 
 /* One lateral motion the behaviour modules plan on the route (docs/maneuvers.md). */
@@ -147,23 +152,30 @@ typedef struct {
 
 /* ---- the functions a plugin exports ---------------------------------------------------------- */
 
+/* Declared with default visibility: a plugin built with -fvisibility=hidden still exports them. */
+#if defined(__GNUC__)
+#define SIGNALSIM_PLUGIN_EXPORT __attribute__((visibility("default")))
+#else
+#define SIGNALSIM_PLUGIN_EXPORT
+#endif
+
 /* Required: the ABI the plugin was built against (return SIGNALSIM_PLUGIN_ABI_VERSION). */
-uint32_t signalsim_plugin_abi_version(void);
+SIGNALSIM_PLUGIN_EXPORT uint32_t signalsim_plugin_abi_version(void);
 
 /* Optional: the plugin's name and version, printed in summaries ("my_decider 1.2"). */
-const char* signalsim_plugin_name(void);
+SIGNALSIM_PLUGIN_EXPORT const char* signalsim_plugin_name(void);
 
 /* The decider role (all three, or none). create returns NULL on failure and writes a reason into
  * `error` (at most error_size bytes, NUL-terminated). step returns 0 and writes `blinker`, or
  * returns non-zero and writes a reason into `error`: the run ends as an error. */
-void* signalsim_decider_create(const ss_run* run, char* error, size_t error_size);
-int signalsim_decider_step(void* decider, const ss_step* step, ss_blinker* blinker, char* error, size_t error_size);
-void signalsim_decider_destroy(void* decider);
+SIGNALSIM_PLUGIN_EXPORT void* signalsim_decider_create(const ss_run* run, char* error, size_t error_size);
+SIGNALSIM_PLUGIN_EXPORT int signalsim_decider_step(void* decider, const ss_step* step, ss_blinker* blinker, char* error, size_t error_size);
+SIGNALSIM_PLUGIN_EXPORT void signalsim_decider_destroy(void* decider);
 
 /* The light-judge role (all three, or none): one answer per light of step->lights. */
-void* signalsim_light_judge_create(const ss_run* run, char* error, size_t error_size);
-int signalsim_light_judge_step(void* judge, const ss_step* step, ss_light_answer* answers, char* error, size_t error_size);
-void signalsim_light_judge_destroy(void* judge);
+SIGNALSIM_PLUGIN_EXPORT void* signalsim_light_judge_create(const ss_run* run, char* error, size_t error_size);
+SIGNALSIM_PLUGIN_EXPORT int signalsim_light_judge_step(void* judge, const ss_step* step, ss_light_answer* answers, char* error, size_t error_size);
+SIGNALSIM_PLUGIN_EXPORT void signalsim_light_judge_destroy(void* judge);
 
 #ifdef __cplusplus
 }

@@ -25,6 +25,7 @@
 #include "report/run_files.hpp"
 #include "session/sumo_session.hpp"
 #include "sim/session_setup.hpp"
+#include "sut/sut_factory.hpp"
 
 namespace signalsim::app {
 namespace {
@@ -97,6 +98,7 @@ int run(const RunOptions& options) {
   try {
     scenario = load_scenario(options.scenario_path, options.overrides);
     const RunContext context = run_context(options);
+    check_systems_under_test(*scenario);  // a library or command that cannot be used: bad input before SUMO starts
     // One index per net and process while the file is unchanged: a worker's later runs on the same
     // net skip the load (answers do not depend on what earlier runs looked up).
     const std::shared_ptr<const sumo::NetIndex> net_ptr = sumo::NetIndex::load_shared(scenario->net);
