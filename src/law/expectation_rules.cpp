@@ -1,4 +1,4 @@
-// The expectation rules of generate: windows per section, their narrowing by the others, emission.
+// The expectation rules: windows per section, their narrowing by the others, emission.
 #include "law/expectation_rules.hpp"
 
 #include <algorithm>

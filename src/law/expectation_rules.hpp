@@ -1,5 +1,10 @@
-// The expectations a generated scenario states, derived from the rules alone (docs/behaviour.md §T4-§T6, §T8.2;
-// docs/behaviour.md §L) and the predicted speed (speed_profile.hpp), never from running signalsim. SUMO-free.
+// The expectations the rules imply for a route, derived from the rules alone (docs/behaviour.md §T4-§T6, §T8.2;
+// docs/behaviour.md §L) and the ego's speed (speed_bounds.hpp), never from running signalsim. SUMO-free.
+// `signalsim generate` writes them into scenario files with the predicted speed (speed_profile.hpp); a
+// run judges its own record by them with its recorded speeds (recorded_speed.hpp, report/law_verdicts),
+// where a lane change approved in the run is guaranteed from its approval until base_link ends the
+// motion (sections.hpp maneuver_section) and a roundabout entry with entry persistence may be on to
+// the end of its exit.
 //
 // Per section X (sections.hpp) two stretches of the front bumper's route position:
 //   possible   P(X) = [early, desired end]: where X's request can be valid at all

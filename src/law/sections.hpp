@@ -1,4 +1,4 @@
-// The stretches of a route that ask for a blinker, as the generator reads them from the rules
+// The stretches of a route that ask for a blinker, as the law reads them from the rules
 // (docs/behaviour.md §T4, §T5, §T8.2) and the route's lanelets (docs/behaviour.md §S3). SUMO-free and pure.
 // The turns and roundabout connections are the decider's own (turn_signal/signal_sections.hpp).
 //
