@@ -1,6 +1,7 @@
 // Spawning a line-speaking child and talking to it with deadlines; see sut_process.hpp.
 #include "sut/sut_process.hpp"
 
+#include <fstream>
 #include <cerrno>
 #include <chrono>
 #include <csignal>
@@ -125,6 +126,7 @@ SutProcess::SutProcess(const std::string& program, const std::vector<std::string
   posix_spawn_file_actions_adddup2(&actions, to_child[0], 0);
   posix_spawn_file_actions_adddup2(&actions, from_child[1], 1);
   const std::string err = fs::absolute(stderr_path).string();
+  stderr_path_ = err;
   posix_spawn_file_actions_addopen(&actions, 2, err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
   posix_spawn_file_actions_addchdir_np(&actions, work_dir.c_str());
   posix_spawnattr_t attr;
@@ -188,6 +190,21 @@ bool SutProcess::fill(int timeout_ms) {
   return !eof_;
 }
 
+// Why the child is gone, and the last line of its stderr (a Python traceback's last line, "can't open
+// file ..."): the one line of the run's error says what the SUT said.
+std::string SutProcess::ended_how(const char* when) {
+  std::string reason = exit_reason() + when;
+  std::ifstream in(stderr_path_, std::ios::binary);
+  std::string line, last;
+  while (std::getline(in, line))
+    if (line.find_first_not_of(" \t\r") != std::string::npos) last = line;
+  for (char& c : last)
+    if (static_cast<unsigned char>(c) < 0x20) c = ' ';
+  if (last.size() > 200) last = last.substr(0, 200) + "...";
+  if (!last.empty()) reason += "; its stderr ends: " + last;
+  return reason;
+}
+
 std::string SutProcess::exit_reason() {
   if (!reaped_ && pid_ > 0) {  // its stdout or stdin closed: it is normally exiting; give it a second
     const auto deadline = deadline_after(1.0);
@@ -227,7 +244,7 @@ void SutProcess::write(const std::string& line, double timeout) {
     if (n > 0) {
       done += static_cast<std::size_t>(n);
     } else if (errno == EPIPE) {
-      throw SutProcessError(exit_reason() + " before reading the message");
+      throw SutProcessError(ended_how(" before reading the message"));
     } else if (errno != EAGAIN && errno != EINTR) {
       throw SutProcessError(std::string("cannot write to it: ") + std::strerror(errno));
     }
@@ -244,7 +261,7 @@ std::string SutProcess::read_line(double timeout) {
       if (!line.empty() && line.back() == '\r') line.pop_back();
       return line;
     }
-    if (eof_) throw SutProcessError(exit_reason() + " before replying");
+    if (eof_) throw SutProcessError(ended_how(" before replying"));
     if (Clock::now() >= deadline) throw SutProcessError("no reply within " + seconds_text(timeout) + " s");
     fill(ms_left(deadline));
   }
@@ -275,7 +292,7 @@ std::string SutProcess::close(double timeout) {
     return rest;
   }
   close_fd(out_);
-  if (!WIFEXITED(status_) || WEXITSTATUS(status_) != 0) throw SutProcessError(exit_reason() + " after bye");
+  if (!WIFEXITED(status_) || WEXITSTATUS(status_) != 0) throw SutProcessError(ended_how(" after bye"));
   return rest;
 }
 

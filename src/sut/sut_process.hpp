@@ -50,6 +50,8 @@ class SutProcess {
  private:
   bool fill(int timeout_ms);  // reads what is available into buffer_; false on EOF
   std::string exit_reason();  // why the child is gone ("exited with status 3", "killed by signal 11")
+  std::string ended_how(const char* when);  // the same, `when`, and the last line the child wrote to its stderr file
+  std::string stderr_path_;
   void kill_and_reap();
 
   pid_t pid_ = -1;
