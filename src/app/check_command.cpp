@@ -93,12 +93,27 @@ JUnitCase check_one(const RunSpec& run, const ResultRow* row, const CheckOptions
         if (!e.value("passed", true))
           c.system_out += "expectation failed: " + e.value("expectation", std::string("?")) + ": " +
                           e.value("detail", std::string()) + "\n";
+    if (summary.contains("law") && summary["law"].is_object())
+      for (const auto& v : summary["law"].value("verdicts", nlohmann::ordered_json::array()))
+        if (!v.value("passed", true))
+          c.system_out += "law verdict failed: " + v.value("section", std::string()) + " " +
+                          v.value("id", std::string()) + " " + v.value("rule", std::string()) + ": " +
+                          v.value("detail", std::string()) + "\n";
   } catch (const std::exception& e) {
     return verdict(JUnitCase::Result::Error, e.what());
   }
   const bool no_expectations = cell(*row, "status") == "no_expectations";
+  // A failed run: its failed expectations and, when any, how many law verdicts failed (summary.json law).
+  const std::string law_failed = cell(*row, "law_failed");
+  const bool law_fails = !law_failed.empty() && law_failed != "0";
+  const std::string expectations_part = !cell(*row, "failed_expectations").empty() || !law_fails
+                                            ? "expectations failed: " + cell(*row, "failed_expectations")
+                                            : "";
+  const std::string law_part = law_fails ? "law verdicts failed: " + law_failed : "";
   const std::string failed_expectations =
-      cell(*row, "status") == "failed" ? "expectations failed: " + cell(*row, "failed_expectations") : "";
+      cell(*row, "status") == "failed"
+          ? expectations_part + (!expectations_part.empty() && law_fails ? "; " : "") + law_part
+          : "";
   const bool expectations_fail = !failed_expectations.empty() && !o.ignore_expectations;
   const std::string note = !failed_expectations.empty() && !expectations_fail
                                ? " (note: " + failed_expectations + ", ignored: --ignore-expectations)"

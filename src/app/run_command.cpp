@@ -134,14 +134,18 @@ int run(const RunOptions& options) {
     if (!record.sumo.log.empty()) record.sumo.log_counts = sumo::count_sumo_log(record.sumo.log);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const auto results = evaluate_expectations(*scenario, plan.map, record);
-    const RunStatus status = run_status(results);
-    write_run_outputs(options.out_dir, *scenario, plan, record, results, status);
+    const std::vector<LawVerdict> law = law_verdicts(*scenario, plan.map, record);
+    const RunStatus status = run_status(results, law);
+    write_run_outputs(options.out_dir, *scenario, plan, record, results, status, &law);
     if (!options.quiet) {
       std::printf("%s%s: %s (%zu steps, %.1f s simulated, %zu events, %.2f s wall)\n", scenario->name.c_str(),
                   context.sumo_drives ? " (driven by SUMO)" : "", std::string(to_string(status)).c_str(), record.rows.size(),
                   record.rows.empty() ? 0.0 : record.rows.back().time, record.events.size(), wall);
       for (const auto& r : results)
         std::printf("  [%s] %s: %s\n", r.passed ? "ok" : "FAIL", r.description.c_str(), r.detail.c_str());
+      for (const LawVerdict& v : law)
+        if (!v.passed)
+          std::printf("  [FAIL] law: %s %s %s: %s\n", v.section.c_str(), v.id.c_str(), v.rule.c_str(), v.detail.c_str());
       if (status == RunStatus::NoExpectations)
         std::printf("  the scenario has no expectations (expect:): nothing was checked\n");
     }

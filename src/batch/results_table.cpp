@@ -20,7 +20,7 @@ const std::vector<std::string>& leading_columns() {
 }
 const std::vector<std::string>& outcome_columns() {
   static const std::vector<std::string> columns = {"status", "expectations_passed", "expectations_total",
-                                                   "failed_expectations", "run_dir"};
+                                                   "failed_expectations", "law_failed", "run_dir"};
   return columns;
 }
 const std::vector<std::string>& trailing_columns() {

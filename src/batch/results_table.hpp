@@ -24,7 +24,7 @@ using ResultRows = std::map<std::size_t, ResultRow>;  ///< by run index
 bool is_fixed_result_column(const std::string& name);
 
 /// Columns: run, scenario, file, <swept keys>, status, expectations_passed, expectations_total,
-/// failed_expectations, run_dir, <metric columns of any row, metric_column_less order>, wall_time,
+/// failed_expectations, law_failed, run_dir, <metric columns of any row, metric_column_less order>, wall_time,
 /// error.
 std::vector<std::string> result_columns(const std::vector<std::string>& swept, const ResultRows& rows);
 

@@ -35,6 +35,9 @@ void read_summary(ResultRow& row, const RunSpec& run, const std::string& dir) {
   row.cells["expectations_passed"] = std::to_string(passed);
   row.cells["expectations_total"] = std::to_string(total);
   if (!failed.empty()) row.cells["failed_expectations"] = failed;
+  // The law's failed verdicts (empty for a run SUMO drove, whose "law" is null).
+  if (summary.contains("law") && summary["law"].is_object())
+    row.cells["law_failed"] = std::to_string(summary["law"].value("failed", 0));
   nlohmann::ordered_json metrics;
   if (summary.contains("metrics")) {
     metrics = summary["metrics"];

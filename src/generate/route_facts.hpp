@@ -6,13 +6,14 @@
 #include <string>
 #include <vector>
 
-#include "generate/expectation_rules.hpp"
-#include "generate/sections.hpp"
-#include "generate/speed_profile.hpp"
+#include "law/expectation_rules.hpp"
+#include "law/sections.hpp"
+#include "law/speed_profile.hpp"
 #include "step/route_planning.hpp"
 #include "net/net_index.hpp"
 
 namespace signalsim::generate {
+using namespace law;  // the rules: sections, speeds, expectations (src/law)
 
 struct PlannedRouteFacts {
   std::vector<LightFact> lights;            ///< signalised approaches, route order

@@ -5,15 +5,16 @@
 #include <cmath>
 #include <sstream>
 
-#include "generate/expectation_rules.hpp"
+#include "law/expectation_rules.hpp"
 #include "core/number_text.hpp"
 #include "generate/route_facts.hpp"
-#include "generate/speed_profile.hpp"
+#include "law/speed_profile.hpp"
 #include "planning/stop/jerk_limited_stop.hpp"
 #include "scenario/input_error.hpp"
 #include "step/route_planning.hpp"
 
 namespace signalsim::generate {
+using namespace law;  // the rules: sections, speeds, expectations (src/law)
 namespace {
 
 constexpr double kInsertionRoom = 5.0;   // [m] SUMO inserts the ego only if it can stop this short of the edge end
@@ -113,6 +114,7 @@ SectionParameters section_parameters(const RunParameters& typed) {
   out.roundabout_search_distance = typed.decider.turn_signal_roundabout_search_distance;
   out.on_entry = typed.decider.turn_signal_roundabout_on_entry;
   out.on_exit = typed.decider.turn_signal_roundabout_on_exit;
+  out.entry_persistence = typed.decider.turn_signal_roundabout_entry_indicator_persistence;
   return out;
 }
 

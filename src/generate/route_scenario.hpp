@@ -9,11 +9,12 @@
 
 #include "core/vehicle_defaults.hpp"
 #include "generate/scenario_text.hpp"
-#include "generate/sections.hpp"
+#include "law/sections.hpp"
 #include "scenario/parameters.hpp"
 #include "net/net_index.hpp"
 
 namespace signalsim::generate {
+using namespace law;  // the rules: sections, speeds, expectations (src/law)
 
 /// What the ego is and how the generated files look (the command's options).
 struct RouteScenarioOptions {

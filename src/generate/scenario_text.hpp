@@ -7,9 +7,10 @@
 #include <vector>
 
 #include "core/vehicle_defaults.hpp"
-#include "generate/expectation_rules.hpp"
+#include "law/expectation_rules.hpp"
 
 namespace signalsim::generate {
+using namespace law;  // the rules: sections, speeds, expectations (src/law)
 
 struct ScenarioDraft {
   std::vector<std::string> header;   ///< comment lines (without "# "), before the keys

@@ -138,6 +138,10 @@ RunStatus run_status(const std::vector<ExpectationResult>& results) {
   return RunStatus::Passed;
 }
 
+RunStatus run_status(const std::vector<ExpectationResult>& results, const std::vector<LawVerdict>& law) {
+  return law_failed(law) > 0 ? RunStatus::Failed : run_status(results);
+}
+
 // One row a step: numbers appended in place (core/number_text.hpp), no temporary strings.
 void write_timeline_csv(const std::string& path, const std::vector<TimelineRow>& rows, TimelineColumns columns) {
   std::string out =
@@ -229,7 +233,7 @@ void write_events_csv(const std::string& path, const std::vector<TimelineEvent>&
 
 void write_run_outputs(const std::string& dir, const Scenario& scenario, const sumo::RoutePlan& plan,
                        const RunRecord& record, const std::vector<ExpectationResult>& results,
-                       RunStatus status) {
+                       RunStatus status, const std::vector<LawVerdict>* law) {
   fs::create_directories(dir);
   fs::remove(fs::path(dir) / run_files::kSummary);  // a stale summary must never describe new files
   write_timeline_csv((fs::path(dir) / run_files::kTimeline).string(), record.rows,
@@ -263,6 +267,7 @@ void write_run_outputs(const std::string& dir, const Scenario& scenario, const s
   for (const ExpectationResult& r : results)
     expectations.push_back({{"expectation", r.description}, {"passed", r.passed}, {"detail", r.detail}});
   summary["expectations"] = expectations;
+  summary["law"] = law ? law_json(record, *law) : law_json(record, law_verdicts(scenario, plan.map, record));
   summary["parameters"] = parameters_json(scenario.params);
   summary["parameter_sources"] = parameter_sources_json(scenario.params);
   summary["parameter_files"] = parameter_files_json(scenario.params);

@@ -8,6 +8,7 @@
 
 #include "core/number_text.hpp"  // fixed(): numbers as the files write them
 #include "scenario/scenario.hpp"
+#include "report/law_verdicts.hpp"
 #include "report/timeline.hpp"
 #include "route/route_builder.hpp"
 
@@ -21,6 +22,8 @@ std::string_view to_string(RunStatus status);
 
 /// The status of a finished run from its expectation results: NoExpectations when there are none.
 RunStatus run_status(const std::vector<ExpectationResult>& results);
+/// The same with the law's verdicts (law_verdicts.hpp): a failed verdict fails the run too.
+RunStatus run_status(const std::vector<ExpectationResult>& results, const std::vector<LawVerdict>& law);
 
 /// `v2i_column`: append the column v2i_time_to_red (only for a run with V2I on, so that every other
 /// run's file stays as it was).
@@ -33,10 +36,11 @@ struct TimelineColumns {
 void write_timeline_csv(const std::string& path, const std::vector<TimelineRow>& rows, TimelineColumns columns = {});
 void write_events_csv(const std::string& path, const std::vector<TimelineEvent>& events);
 
-/// Writes timeline.csv, events.csv and summary.json into `dir` (created if missing).
+/// Writes timeline.csv, events.csv and summary.json into `dir` (created if missing). `law`: the
+/// run's law verdicts (law_verdicts.hpp); nullptr: computed here.
 void write_run_outputs(const std::string& dir, const Scenario& scenario, const sumo::RoutePlan& plan,
                        const RunRecord& record, const std::vector<ExpectationResult>& results,
-                       RunStatus status);
+                       RunStatus status, const std::vector<LawVerdict>* law = nullptr);
 
 /// Creates `dir` and removes the files of an earlier run there (summary.json first, then the timeline,
 /// the events and the gui screenshot), before SUMO starts writing into it.

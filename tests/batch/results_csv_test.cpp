@@ -20,7 +20,7 @@ TEST(ResultsCsv, ColumnsAreFixedAroundCanonicallyOrderedMetrics) {
   const auto columns = result_columns({"country"}, rows);
   const std::vector<std::string> expected = {
       "run", "scenario", "file", "country", "status", "expectations_passed", "expectations_total",
-      "failed_expectations", "run_dir", "max_decel", "max_jerk", "turn1.id", "turn1.lead_distance", "turn2.id",
+      "failed_expectations", "law_failed", "run_dir", "max_decel", "max_jerk", "turn1.id", "turn1.lead_distance", "turn2.id",
       "turn10.id", "roundabout_exit1.missed", "light1.id", "wall_time", "error"};
   EXPECT_EQ(columns, expected);
 }
@@ -33,7 +33,7 @@ TEST(ResultsCsv, QuotesWhatNeedsQuotingAndReadsItBack) {
   rows[0] = row(0, {{"scenario", "y"}, {"file", "y.yaml"}, {"status", "passed"}, {"turn1.lead_distance", "71.5"}});
   const std::string text = results_csv({}, rows);
   EXPECT_EQ(text.substr(0, text.find('\n')),
-            "run,scenario,file,status,expectations_passed,expectations_total,failed_expectations,run_dir,"
+            "run,scenario,file,status,expectations_passed,expectations_total,failed_expectations,law_failed,run_dir,"
             "turn1.lead_distance,wall_time,error");
   EXPECT_NE(text.find("\"a,b.yaml\""), std::string::npos);
   EXPECT_NE(text.find("\"said \"\"no\"\", twice\nsecond line\""), std::string::npos);

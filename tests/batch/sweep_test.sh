@@ -23,7 +23,7 @@ assert len(rows) == 18, len(rows)
 assert [r["run"] for r in rows] == [str(i) for i in range(18)]
 header = list(rows[0].keys())
 assert header[:5] == ["run", "scenario", "file", "country", "ego.max_speed"], header[:5]
-assert header[5:10] == ["status", "expectations_passed", "expectations_total", "failed_expectations", "run_dir"]
+assert header[5:11] == ["status", "expectations_passed", "expectations_total", "failed_expectations", "law_failed", "run_dir"]
 assert header[-2:] == ["wall_time", "error"], header[-2:]
 combos = [(r["scenario"], r["country"], r["ego.max_speed"]) for r in rows]
 expected = [(s, c, v) for s in ("roundabout_exit", "turns") for c in ("jp", "de", "kr") for v in ("8.33", "11.11", "13.89")]
@@ -31,6 +31,7 @@ assert combos == expected, combos
 for r in rows:
     assert r["status"] == "passed" and r["error"] == "", r
     assert (r["expectations_passed"], r["expectations_total"]) == ("1", "1"), r
+    assert r["law_failed"] == "0", r
     assert os.path.isfile(os.path.join(sys.argv[2], r["run_dir"], "summary.json")), r["run_dir"]
     assert r["max_decel"] != "" and r["collisions"] == "0", r
     # The run's time, as text with two decimals: "0.00" is a valid value (a run in a warm persistent

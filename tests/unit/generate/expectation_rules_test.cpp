@@ -2,7 +2,7 @@
 // hand from the spec in the comments (docs/behaviour.md §T4.1 search = 3 s x v + 30 m; base_link 3.7 m behind the
 // front; kSpeedSlack 0.3 m/s; kMargin 0.5 m; numbers rounded inwards to 0.1 m; the activation scan's
 // 0.1 m grid may move a lead by one tenth).
-#include "generate/expectation_rules.hpp"
+#include "law/expectation_rules.hpp"
 
 #include <algorithm>
 
@@ -12,6 +12,7 @@
 #include "route_fixture.hpp"
 
 namespace signalsim::generate {
+using namespace law;  // the rules: sections, speeds, expectations (src/law)
 namespace {
 
 using Kind = GeneratedExpectation::Kind;

@@ -1,12 +1,13 @@
 // The sections generate reads from a route (sections.hpp): docs/behaviour.md §T4.2 grouping, §T5.2 entries with
 // exit tags, §T5.3 exits with the enable_exit_turn_signal chain, the lane changes.
-#include "generate/sections.hpp"
+#include "law/sections.hpp"
 
 #include <gtest/gtest.h>
 
 #include "route_fixture.hpp"
 
 namespace signalsim::generate {
+using namespace law;  // the rules: sections, speeds, expectations (src/law)
 namespace {
 
 TEST(Sections, ALeftTurnsTwoInternalLanesAreOneTurnNamedByItsJunction) {

@@ -1,6 +1,6 @@
 // The speed the generator predicts (speed_profile.hpp): the step loop's planner rolled out, and the
 // bounds the rules use.
-#include "generate/speed_profile.hpp"
+#include "law/speed_profile.hpp"
 
 #include <cmath>
 
@@ -9,6 +9,7 @@
 #include "route_fixture.hpp"
 
 namespace signalsim::generate {
+using namespace law;  // the rules: sections, speeds, expectations (src/law)
 namespace {
 
 const SpeedLimits kEgo{13.89, 1.0, 1.0};

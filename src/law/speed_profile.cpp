@@ -1,12 +1,12 @@
 // The speed planner rolled out along a route, and the bounds the rules use.
-#include "generate/speed_profile.hpp"
+#include "law/speed_profile.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 #include "core/number_text.hpp"
 
-namespace signalsim::generate {
+namespace signalsim::law {
 
 double light_braking_distance(double v) { return v * v / 1.6 + 2.0 * v + 10.0; }
 double yield_braking_distance(double v) { return v * v / 6.0 + 15.0; }
@@ -80,4 +80,4 @@ double SpeedProfile::max_planned(double from, double to) const {
   return best;
 }
 
-}  // namespace signalsim::generate
+}  // namespace signalsim::law

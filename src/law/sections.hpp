@@ -1,4 +1,4 @@
-// The stretches of a route that ask for a blinker, as the generator reads them from the rules
+// The stretches of a route that ask for a blinker, as the law reads them from the rules
 // (docs/behaviour.md §T4, §T5, §T8.2) and the route's lanelets (docs/behaviour.md §S3). SUMO-free and pure.
 // The turns and roundabout connections are the decider's own (turn_signal/signal_sections.hpp).
 //
@@ -24,7 +24,7 @@
 
 #include "map/route_map.hpp"
 
-namespace signalsim::generate {
+namespace signalsim::law {
 
 enum class Side { None, Left, Right, Either };  ///< Either: a lane change (its side is not modelled)
 const char* to_string(Side side);               ///< "none", "left", "right", "either"
@@ -54,10 +54,19 @@ struct Section {
   /// whole search distance (turn_signal_distance, docs/behaviour.md §T4.3).
   double search_distance = 30.0;
   std::optional<double> search_override;
+  /// Entry with entry_persistence: route s of the end of the exit the route takes (its desired end).
+  std::optional<double> persistent_end;
   /// Exit: route s where its desired start lies (the enable_exit_turn_signal chain, else its start).
   double exit_desired_start = 0.0;
-  /// Lane change: base_link's earliest start of the lateral motion (route s) [m].
+  /// Lane change: base_link's earliest start of the lateral motion (route s) [m]. A run's other
+  /// maneuvers: the start of their lateral motion.
   double lane_change_at = 0.0;
+  /// A run's maneuver (maneuver_section): its kind ("lane_change", "avoidance", "pull_out",
+  /// "pull_over"), where base_link ends its lateral motion [m], and for a lane change approved in
+  /// the run, the front's route s at its approval [m]; unset for the generator's sections.
+  std::string maneuver;
+  std::optional<double> motion_end;
+  std::optional<double> approval_front;
 };
 
 struct SectionParameters {
@@ -65,6 +74,9 @@ struct SectionParameters {
   double roundabout_search_distance = 30.0;    ///< turn_signal_roundabout_search_distance [m]
   std::string on_entry = "None";               ///< turn_signal_roundabout_on_entry
   std::string on_exit = "Left";                ///< turn_signal_roundabout_on_exit
+  /// turn_signal_roundabout_entry_indicator_persistence: an entry's request lasts to the end of the
+  /// exit the route takes (docs/behaviour.md §T5.2), so its blinker may be on that far.
+  bool entry_persistence = false;
 };
 
 /// A lane change the route's lane plan needs (scenario/route_planning LateralSegment).
@@ -76,9 +88,26 @@ struct LaneChangeFact {
   double edge_end = 0.0;      ///< route s of the edge's end [m]
 };
 
+/// A maneuver a run executed (report/law_verdicts reads it from the run's record).
+struct ManeuverFact {
+  std::string kind;                     ///< "lane_change", "avoidance", "pull_out", "pull_over"
+  std::string edge, lane;               ///< the edge it is driven on, its lanelet
+  Side side = Side::None;               ///< the motion's direction (left: moving left)
+  double motion_start = 0.0;            ///< [m] base_link route s where the lateral motion starts
+  double motion_end = 0.0;              ///< [m] where it ends
+  double edge_start = 0.0, edge_end = 0.0;  ///< [m] route s of the edge's lanelet
+  std::optional<double> approval_front;  ///< [m] lane change: the front's s at its approval
+};
+
+/// A run's maneuver as a section: a lane change approved in the run has its side and a guaranteed
+/// stretch from its approval until base_link ends the motion (docs/behaviour.md §T8.2: the module
+/// signals from before its approval until base_link passes the lateral end); any other maneuver (and
+/// a lane change never approved) has side Either: only where its blinker may be on.
+Section maneuver_section(const ManeuverFact& m);
+
 /// Every section of the route, sorted by start (ties: route order). `route` must carry the
 /// exit-signal marking when the parameters ask for it (scenario/route_planning prepare_route).
 std::vector<Section> route_sections(const RouteMap& route, const SectionParameters& params,
                                     const std::vector<LaneChangeFact>& lane_changes);
 
-}  // namespace signalsim::generate
+}  // namespace signalsim::law

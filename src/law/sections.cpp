@@ -1,13 +1,13 @@
 // A route's sections: turn groups, roundabout entries and exits (the decider's own,
 // turn_signal/signal_sections), lane changes.
-#include "generate/sections.hpp"
+#include "law/sections.hpp"
 
 #include <algorithm>
 #include <map>
 
 #include "turn_signal/signal_sections.hpp"
 
-namespace signalsim::generate {
+namespace signalsim::law {
 namespace {
 
 Side side_of(TurnIndicator command) {
@@ -61,6 +61,16 @@ Section section_of(const RouteMap& route, const Spans& spans, SectionKind kind, 
   return s;
 }
 
+// The end of the roundabout passage after entry lanelet `last` (docs/behaviour.md §T5.2: follow the
+// route while its lanelets belong to the entry's roundabout); nullopt when the route leaves at once.
+std::optional<double> passage_end(const RouteMap& route, std::size_t last) {
+  const std::string& id = route.at(last).roundabout_id;
+  std::size_t i = last;
+  while (i + 1 < route.size() && route.at(i + 1).roundabout_id == id && !id.empty()) ++i;
+  if (i == last) return std::nullopt;
+  return route.at(i).s_end();
+}
+
 }  // namespace
 
 const char* to_string(Side side) {
@@ -93,6 +103,24 @@ Module module_of(SectionKind kind) {
   return Module::Intersection;
 }
 
+Section maneuver_section(const ManeuverFact& m) {
+  Section s;
+  s.kind = SectionKind::LaneChange;
+  s.maneuver = m.kind;
+  s.id = m.edge;
+  s.lanelets = {m.lane};
+  s.start = m.edge_start;
+  s.end = m.edge_end;
+  s.motion_end = m.motion_end;
+  // A lane change's earliest start lies on its edge; the shift generator's modules signal from
+  // max(v * search_time, minimum_search_distance) before their motion's start (docs/behaviour.md §T8.1).
+  s.lane_change_at = m.kind == "lane_change" ? m.edge_start : m.motion_start;
+  const bool sided = m.side == Side::Left || m.side == Side::Right;
+  s.side = m.kind == "lane_change" && sided && m.approval_front ? m.side : Side::Either;
+  if (s.side != Side::Either) s.approval_front = m.approval_front;
+  return s;
+}
+
 std::vector<Section> route_sections(const RouteMap& route, const SectionParameters& params,
                                     const std::vector<LaneChangeFact>& lane_changes) {
   std::vector<Section> out;
@@ -105,6 +133,7 @@ std::vector<Section> route_sections(const RouteMap& route, const SectionParamete
     s.side = side_of(r.command);
     if (kind == SectionKind::Turn) s.search_distance = params.intersection_search_distance;
     if (kind == SectionKind::RoundaboutEntry) s.search_distance = params.roundabout_search_distance;
+    if (kind == SectionKind::RoundaboutEntry && params.entry_persistence) s.persistent_end = passage_end(route, r.back_index);
     if (kind == SectionKind::RoundaboutExit) s.exit_desired_start = route.at(r.desired_start_index).s_start;
     out.push_back(std::move(s));
   }
@@ -123,4 +152,4 @@ std::vector<Section> route_sections(const RouteMap& route, const SectionParamete
   return out;
 }
 
-}  // namespace signalsim::generate
+}  // namespace signalsim::law

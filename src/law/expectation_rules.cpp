@@ -1,5 +1,5 @@
-// The expectation rules of generate: windows per section, their narrowing by the others, emission.
-#include "generate/expectation_rules.hpp"
+// The expectation rules: windows per section, their narrowing by the others, emission.
+#include "law/expectation_rules.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 
 #include "core/number_text.hpp"
 
-namespace signalsim::generate {
+namespace signalsim::law {
 namespace {
 
 constexpr double kScanStep = 0.1;      // [m] resolution of the activation scan
@@ -16,14 +16,14 @@ constexpr double kMinEntryQuiet = 2.0; // [m] a shorter no-entry-signal stretch 
 // (and neither is a stretch shorter than the step's travel, step_room)
 
 std::string name_of(const Section& s) {
-  std::string what = to_string(s.kind);
+  std::string what = s.maneuver.empty() ? to_string(s.kind) : s.maneuver;
   std::replace(what.begin(), what.end(), '_', ' ');
   if (s.kind == SectionKind::Turn) what = std::string(to_string(s.side)) + " turn";
   return what + " " + (s.kind == SectionKind::LaneChange ? "on edge " : "at ") + s.id;
 }
 
 // Upper bound of the search distance of a turn or an entry (docs/behaviour.md §T4.1, §T5.1).
-double search_upper(const Section& s, const SpeedProfile& speed, const RuleParameters& p) {
+double search_upper(const Section& s, const SpeedBounds& speed, const RuleParameters& p) {
   if (s.search_override) return *s.search_override;
   const double reach = p.search_time * 40.0 + s.search_distance;  // beyond any speed the planner gives
   return p.search_time * (speed.max_planned(s.start - reach, s.start) + kSpeedSlack) + s.search_distance;
@@ -36,7 +36,7 @@ struct Activation {
 
 // The front position from which the request of a turn or an entry is certainly stored (§T4.4): the
 // lowest s such that start - s' < search(lower speed at s') for every s' in [s, start].
-Activation guaranteed_activation(const Section& s, const SpeedProfile& speed, const RuleParameters& p,
+Activation guaranteed_activation(const Section& s, const SpeedBounds& speed, const RuleParameters& p,
                                  double depart) {
   const auto search_at = [&](double pos) {
     return s.search_override ? *s.search_override : p.search_time * speed.lower(pos) + s.search_distance;
@@ -72,7 +72,27 @@ struct Window {
   std::string from_why, to_why;
 };
 
-Window initial_window(const Section& s, const SpeedProfile& speed, const RuleParameters& p, double depart) {
+// A lane change (or a run's other maneuver): possible from max(v * search_time,
+// minimum_search_distance) before its earliest start until the motion ends; the generator's are never
+// guaranteed, a run's approved lane change from its approval until base_link ends the motion.
+Window maneuver_window(const Section& s, const SpeedBounds& speed, const RuleParameters& p) {
+  Window w;
+  const double reach_to = s.motion_end ? std::max(s.lane_change_at, *s.motion_end) : s.lane_change_at;
+  const double v = speed.max_planned(s.lane_change_at - 150.0, reach_to) + kSpeedSlack;
+  w.possible_from = s.lane_change_at - std::max(v * p.search_time, p.minimum_search_distance) - kMargin;
+  w.possible_to = s.end + kMargin;  // the lateral motion ends before the front leaves the edge
+  if (s.motion_end) w.possible_to = std::max(w.possible_to, *s.motion_end + p.base_link_to_front + kMargin);
+  w.from = w.to = w.possible_from;  // never guaranteed
+  if (s.approval_front && s.motion_end && (s.side == Side::Left || s.side == Side::Right)) {
+    w.from = *s.approval_front;
+    w.from_why = "from its approval (the module signals before it approves, docs/behaviour.md §T8.2)";
+    w.to = *s.motion_end + p.base_link_to_front;
+    w.to_why = "until base_link ends the lateral motion (the module runs until then, docs/behaviour.md §T8.2)";
+  }
+  return w;
+}
+
+Window initial_window(const Section& s, const SpeedBounds& speed, const RuleParameters& p, double depart) {
   Window w;
   const double b2f = p.base_link_to_front;
   switch (s.kind) {
@@ -94,24 +114,19 @@ Window initial_window(const Section& s, const SpeedProfile& speed, const RulePar
                        : "from the exit lanelet's start: exit signals have no search distance (docs/behaviour.md "
                          "§T5.3, §T12.1.8)";
       break;
-    case SectionKind::LaneChange: {
-      const double v = speed.max_planned(s.lane_change_at - 150.0, s.lane_change_at) + kSpeedSlack;
-      w.possible_from = s.lane_change_at - std::max(v * p.search_time, p.minimum_search_distance) - kMargin;
-      w.possible_to = s.end + kMargin;  // the lateral motion ends before the front leaves the edge
-      w.from = w.to = w.possible_from;  // never guaranteed
-      return w;
-    }
+    case SectionKind::LaneChange: return maneuver_window(s, speed, p);
   }
   w.possible_to = s.end + b2f;  // base_link leaves the section: its desired end (§T4.3, §T5.2, §T5.3)
   w.to = w.possible_to;
+  if (s.persistent_end) w.possible_to = std::max(w.possible_to, *s.persistent_end + b2f);  // §T5.2 persistence
   w.to_why = "until base_link leaves it (its desired end, docs/behaviour.md §T4.3/§T5)";
   return w;
 }
 
 // A stretch shorter than this may hold no step at all: the ego moves up to upper speed x step per
 // step (the generated scenarios' 0.1 s), so a stated stretch is at least that and a metre more.
-double step_room(const SpeedProfile& speed, double from, double to) {
-  return speed.max_planned(from, to) * kStepLength + kSpeedSlack * kStepLength + 1.0;
+double step_room(const SpeedBounds& speed, double from, double to, double step_length) {
+  return speed.max_planned(from, to) * step_length + kSpeedSlack * step_length + 1.0;
 }
 
 bool overlaps(double a_from, double a_to, double b_from, double b_to) { return a_from <= b_to && b_from <= a_to; }
@@ -175,7 +190,7 @@ std::vector<Interval> free_parts(double from, double to, std::vector<Interval> b
 // The blinker expectation of a left or right section from its narrowed window: through the whole
 // section when the window covers it and it has a junction or lanelet to name, else blinker_on over
 // the window's stretch when that is long enough, else a note saying why nothing is stated.
-void add_blinker_expectation(const Section& s, const Window& w, const SpeedProfile& speed,
+void add_blinker_expectation(const Section& s, const Window& w, const SpeedBounds& speed,
                              const RuleParameters& params, Derivation& d) {
   if (s.side != Side::Left && s.side != Side::Right) return;
   using Kind = GeneratedExpectation::Kind;
@@ -195,7 +210,7 @@ void add_blinker_expectation(const Section& s, const Window& w, const SpeedProfi
     e.why = name_of(s) + " (s " + rounded_fixed(s.start, 1) + "-" + rounded_fixed(s.end, 1) + "): " + e.blinker +
             " from " + rounded_fixed(e.lead, 1) + " m before it (" + rounded_fixed(kMargin, 1) +
             " m kept): " + w.from_why + "; " + w.to_why;
-  } else if (w.to - w.from >= std::max(kMinBlinkerOn, step_room(speed, w.from, w.to)) + 2 * kMargin) {
+  } else if (w.to - w.from >= std::max(kMinBlinkerOn, step_room(speed, w.from, w.to, params.step_length)) + 2 * kMargin) {
     e.kind = Kind::BlinkerOn;
     e.from_s = ceil_tenth(w.from + kMargin);
     e.to_s = floor_tenth(w.to - kMargin);
@@ -238,14 +253,14 @@ std::vector<Interval> add_no_blinker_stretches(const std::vector<Interval>& bloc
 // on_entry None, no exit tag): no_blinker over the free piece around its start, else the longest
 // one, unless a stated stretch covers it already; a note when no piece is long enough.
 void add_quiet_entry(const Section& s, const std::vector<Interval>& blocked, const std::vector<Interval>& stated,
-                     const RouteFacts& facts, const SpeedProfile& speed, const RuleParameters& params,
+                     const RouteFacts& facts, const SpeedBounds& speed, const RuleParameters& params,
                      Derivation& d) {
   const double from = std::max(facts.depart_front + 1.0, s.start - s.search_distance);
   const double to = s.end + params.base_link_to_front;
   std::optional<Interval> best;
   bool best_contains = false;
   for (const Interval& q : free_parts(from, to, blocked)) {
-    if (q.second - q.first < std::max(kMinEntryQuiet, step_room(speed, q.first, q.second))) continue;
+    if (q.second - q.first < std::max(kMinEntryQuiet, step_room(speed, q.first, q.second, params.step_length))) continue;
     const bool contains = q.first <= s.start && s.start <= q.second;
     if (!best || (contains && !best_contains) ||
         (contains == best_contains && q.second - q.first > best->second - best->first)) {
@@ -312,7 +327,7 @@ double floor_tenth(double v) { return std::floor(v * 10.0 + 1e-6) / 10.0; }
 double ceil_tenth(double v) { return std::ceil(v * 10.0 - 1e-6) / 10.0; }
 
 Derivation derive_expectations(const std::vector<Section>& sections, const RouteFacts& facts,
-                               const SpeedProfile& speed, const RuleParameters& params) {
+                               const SpeedBounds& speed, const RuleParameters& params) {
   Derivation d;
   std::vector<Window> windows;
   windows.reserve(sections.size());
@@ -326,7 +341,9 @@ Derivation derive_expectations(const std::vector<Section>& sections, const Route
   for (std::size_t i = 0; i < sections.size(); ++i) {
     const Window& w = narrowed[i];
     d.windows.push_back({w.possible_from, w.possible_to, w.from, w.to, w.from_why, w.to_why});
+    const std::size_t before = d.expectations.size();
     add_blinker_expectation(sections[i], w, speed, params, d);
+    if (d.expectations.size() > before) d.expectations.back().section = static_cast<int>(i);
   }
   // Stretches where no request can be valid: outside every section's possible window (not narrowed).
   std::vector<Interval> blocked;
@@ -341,4 +358,4 @@ Derivation derive_expectations(const std::vector<Section>& sections, const Route
   return d;
 }
 
-}  // namespace signalsim::generate
+}  // namespace signalsim::law

@@ -1,5 +1,10 @@
-// The expectations a generated scenario states, derived from the rules alone (docs/behaviour.md §T4-§T6, §T8.2;
-// docs/behaviour.md §L) and the predicted speed (speed_profile.hpp), never from running signalsim. SUMO-free.
+// The expectations the rules imply for a route, derived from the rules alone (docs/behaviour.md §T4-§T6, §T8.2;
+// docs/behaviour.md §L) and the ego's speed (speed_bounds.hpp), never from running signalsim. SUMO-free.
+// `signalsim generate` writes them into scenario files with the predicted speed (speed_profile.hpp); a
+// run judges its own record by them with its recorded speeds (recorded_speed.hpp, report/law_verdicts),
+// where a lane change approved in the run is guaranteed from its approval until base_link ends the
+// motion (sections.hpp maneuver_section) and a roundabout entry with entry persistence may be on to
+// the end of its exit.
 //
 // Per section X (sections.hpp) two stretches of the front bumper's route position:
 //   possible   P(X) = [early, desired end]: where X's request can be valid at all
@@ -36,10 +41,10 @@
 #include <vector>
 
 #include "core/vehicle_defaults.hpp"
-#include "generate/sections.hpp"
-#include "generate/speed_profile.hpp"
+#include "law/sections.hpp"
+#include "law/speed_profile.hpp"
 
-namespace signalsim::generate {
+namespace signalsim::law {
 
 /// [m] kept from every rule's boundary (numeric noise, the step's discrete positions).
 inline constexpr double kMargin = 0.5;
@@ -51,6 +56,7 @@ struct RuleParameters {
   double minimum_search_distance = 10.0; ///< turn_signal_minimum_search_distance [m]
   double base_link_to_front = vehicle_defaults::kBaseLinkToFront;  ///< [m]
   double straight = 50.0;                ///< [m] shortest stretch given a no_blinker
+  double step_length = kStepLength;      ///< [s] the run's step (a stated stretch holds a step)
 };
 
 struct LightFact {
@@ -73,6 +79,8 @@ struct GeneratedExpectation {
   double from_s = 0.0;      ///< [m]
   double to_s = 0.0;        ///< [m]
   std::string why;          ///< where the numbers come from (the file's comment)
+  /// The section a blinker expectation serves (index into the sections given); -1 for the others.
+  int section = -1;
 };
 
 /// One section's stretches, for the file's comment and for tests.
@@ -89,10 +97,10 @@ struct Derivation {
 };
 
 Derivation derive_expectations(const std::vector<Section>& sections, const RouteFacts& facts,
-                               const SpeedProfile& speed, const RuleParameters& params);
+                               const SpeedBounds& speed, const RuleParameters& params);
 
 /// Rounding used for every number written: down / up to 0.1 m (with a tolerance of 1e-6).
 double floor_tenth(double v);
 double ceil_tenth(double v);
 
-}  // namespace signalsim::generate
+}  // namespace signalsim::law

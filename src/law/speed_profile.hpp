@@ -17,9 +17,10 @@
 #include <vector>
 
 #include "map/route_map.hpp"
+#include "law/speed_bounds.hpp"
 #include "planning/speed_limit_planner.hpp"
 
-namespace signalsim::generate {
+namespace signalsim::law {
 
 /// [m/s] the planned rollout agrees with the ego's speed in SUMO to well within this (one step of
 /// accel or decel at 0.1 s is 0.1 m/s).
@@ -41,7 +42,7 @@ double light_braking_distance(double v);
 /// at the link and sees the junction from 4.5 m: v^2 / 6 + 15 m (margin included).
 double yield_braking_distance(double v);
 
-class SpeedProfile {
+class SpeedProfile : public SpeedBounds {
  public:
   /// Rolls the planner out from (depart_front, depart_speed) to the end of the route.
   SpeedProfile(const RouteMap& route, double depart_front, double depart_speed, const SpeedLimits& limits,
@@ -49,12 +50,12 @@ class SpeedProfile {
 
   double planned(double s) const;   ///< [m/s] at front position s (clamped to the rollout)
   double upper(double s) const;     ///< planned + slack
-  double lower(double s) const;     ///< see the file comment
+  double lower(double s) const override;  ///< see the file comment
   /// Why lower(s) is what it is: "planned - 0.3 m/s", "may be braking for light 51", "restarting
   /// from rest at light 51".
-  std::string lower_reason(double s) const;
+  std::string lower_reason(double s) const override;
   /// Highest planned speed over [from, to] (sampled every metre and at the ends).
-  double max_planned(double from, double to) const;
+  double max_planned(double from, double to) const override;
   /// Simulated seconds the rollout takes to the route's end (no stops).
   double travel_time() const { return travel_time_; }
   const std::vector<StopPoint>& stops() const { return stops_; }
@@ -68,4 +69,4 @@ class SpeedProfile {
   double travel_time_ = 0.0;
 };
 
-}  // namespace signalsim::generate
+}  // namespace signalsim::law
