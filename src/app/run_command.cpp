@@ -98,7 +98,7 @@ int run(const RunOptions& options) {
   try {
     scenario = load_scenario(options.scenario_path, options.overrides);
     const RunContext context = run_context(options);
-    check_plugins_load(*scenario);  // a library that cannot be used: bad input before SUMO starts
+    check_systems_under_test(*scenario);  // a library or command that cannot be used: bad input before SUMO starts
     // One index per net and process while the file is unchanged: a worker's later runs on the same
     // net skip the load (answers do not depend on what earlier runs looked up).
     const std::shared_ptr<const sumo::NetIndex> net_ptr = sumo::NetIndex::load_shared(scenario->net);

@@ -72,7 +72,7 @@ std::string parameter_text(const ParameterValue& value) {
 
 // What a system under test is given once (docs/decider.md): the route, the planned maneuvers' shift
 // lines and every run parameter by name.
-SutRun sut_run(const Scenario& scenario, const RouteMap& route, const LateralPlan& lateral) {
+SutRun sut_run(const Scenario& scenario, const RouteMap& route, const LateralPlan& lateral, const std::string& out_dir) {
   SutRun run;
   run.scenario = scenario.name;
   run.step_length = scenario.step_length;
@@ -80,6 +80,8 @@ SutRun sut_run(const Scenario& scenario, const RouteMap& route, const LateralPla
   run.base_link_to_front = scenario.ego.base_link_to_front;
   for (const auto& [name, value] : scenario.params.values()) run.parameters.emplace_back(name, parameter_text(value));
   run.route = &route;
+  run.timeout = scenario.sut_timeout;
+  run.out_dir = out_dir;
   for (const LateralSegment& seg : lateral.segments)
     for (const ShiftLine& line : seg.plan.lines())
       run.shift_lines.push_back({module_of(seg.kind), seg.edge, line.s_start, line.s_end, line.relative_shift()});
@@ -129,7 +131,7 @@ StepCore::StepCore(CoreSetup setup)
   record_.decider_sut = suts_.decider_name;
   record_.light_judge_sut = suts_.light_judge_name;
   if (suts_.decider || suts_.light_judge) {
-    const SutRun run = sut_run(scenario_, route_, lateral_);
+    const SutRun run = sut_run(scenario_, route_, lateral_, record_.sumo.out_dir);
     if (suts_.decider) suts_.decider->start(run);
     if (suts_.light_judge) {
       lights_.keep_delivered();

@@ -8,10 +8,21 @@
 #include "sut/plugin_crash_note.hpp"
 #include "sut/plugin_library.hpp"
 #include "sut/sut_library.hpp"
+#include "sut/sut_exec.hpp"
 #include "sut/sut_traci.hpp"
 
 namespace signalsim {
 namespace {
+
+// An exec: adapter, or InputError naming the key when its command cannot be run.
+template <typename Adapter>
+std::shared_ptr<Adapter> exec_adapter(const Scenario& scenario, const SutSpec& spec, const char* key) {
+  try {
+    return std::make_shared<Adapter>(spec);
+  } catch (const SutProcessError& e) {
+    throw InputError(scenario.path, 0, std::string("key '") + key + "': " + spec.text + ": " + e.what());
+  }
+}
 
 constexpr const char* kAutowareCorePlugin = "libsignalsim_autoware_core.so";
 
@@ -36,6 +47,7 @@ std::shared_ptr<BlinkerSut> make_decider(const Scenario& scenario) {
   const SutSpec& spec = scenario.decider;
   if (is_plugin(spec))
     return std::make_shared<LibraryDecider>(load(scenario, "decider", spec, PluginRole::Decider), spec.text);
+  if (spec.kind == SutSpec::Kind::Exec) return exec_adapter<ExecDecider>(scenario, spec, "decider");
   if (spec.kind == SutSpec::Kind::Traci) return std::make_shared<TraciDecider>();
   throw InputError(scenario.path, 0, "decider '" + spec.text + "' is not available in this build");
 }
@@ -44,6 +56,7 @@ std::shared_ptr<LightJudgeSut> make_light_judge(const Scenario& scenario) {
   const SutSpec& spec = scenario.light_judge;
   if (spec.kind == SutSpec::Kind::Library)
     return std::make_shared<LibraryLightJudge>(load(scenario, "light_judge", spec, PluginRole::LightJudge), spec.text);
+  if (spec.kind == SutSpec::Kind::Exec) return exec_adapter<ExecLightJudge>(scenario, spec, "light_judge");
   if (spec.kind == SutSpec::Kind::Traci) return std::make_shared<TraciLightJudge>();
   throw InputError(scenario.path, 0, "light_judge '" + spec.text + "' is not available in this build");
 }
@@ -63,10 +76,9 @@ SystemsUnderTest make_systems_under_test(const Scenario& scenario) {
   return suts;
 }
 
-void check_plugins_load(const Scenario& scenario) {
+void check_systems_under_test(const Scenario& scenario) {
   if (is_plugin(scenario.decider) || is_plugin(scenario.light_judge)) keep_stderr_for_crash_notes();
-  if (is_plugin(scenario.decider)) load(scenario, "decider", scenario.decider, PluginRole::Decider);
-  if (is_plugin(scenario.light_judge)) load(scenario, "light_judge", scenario.light_judge, PluginRole::LightJudge);
+  make_systems_under_test(scenario);  // loads the libraries, finds the commands; starts nothing
 }
 
 }  // namespace signalsim

@@ -12,9 +12,9 @@ namespace signalsim {
 /// naming the key for a library or command that cannot be used.
 SystemsUnderTest make_systems_under_test(const Scenario& scenario);
 
-/// Loads and checks the scenario's lib: and autoware_core plugins (and lets them go): called before
-/// SUMO starts, so that a library that cannot be used is bad input of the run. Throws InputError
+/// Loads and checks the scenario's plugins and finds its exec: commands (and lets them go): called
+/// before SUMO starts, so that a SUT that cannot be used is bad input of the run. Throws InputError
 /// naming the scenario file and the key (`decider`, `light_judge`).
-void check_plugins_load(const Scenario& scenario);
+void check_systems_under_test(const Scenario& scenario);
 
 }  // namespace signalsim

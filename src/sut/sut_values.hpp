@@ -35,6 +35,8 @@ struct SutRun {
   std::vector<std::pair<std::string, std::string>> parameters;  ///< every run parameter by name, as text, sorted
   const RouteMap* route = nullptr;      ///< the route as driven (outlives the SUT)
   std::vector<SutShiftLine> shift_lines;  ///< the planned maneuvers, route order
+  double timeout = 5.0;                 ///< [s] `sut_timeout`: the longest a SUT may take to answer one step
+  std::string out_dir;                  ///< the run's output directory (an exec: SUT's stderr goes there)
 };
 
 /// The ego at the step's start.
