@@ -57,6 +57,8 @@ class SessionImpl : public SumoSession {
   double time() const override;
   EgoState ego() const override;
   int ego_signals() const override;
+  int ego_signals_now() const override;
+  std::string ego_parameter(const std::string& key) const override;
   std::optional<Leader> ego_leader(double range) const override;
   std::vector<LaneVehicle> vehicles_on_lane(const std::string& lane_id) const override;
   double lateral_offset_from(const std::string& reference_lane_id) const override;

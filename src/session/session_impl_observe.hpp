@@ -1,6 +1,6 @@
 // SessionImpl<Api>, part 1 of 3: what the session reads from SUMO (session_impl.hpp has the class).
 // SUMO's step and the answer that comes with it (a TraCI subscription of the ego's and the
-// simulation's variables: one round trip a step over a socket), the ego's state and signals, its
+// simulation's variables: one round trip a step over a socket), the ego's state, signals and parameters, its
 // leader, the vehicles on a lane, the ego's offset from a lane, and the traffic lights' states,
 // programs and timing. What a step answered is asked once and kept until the next step
 // (session_step_answers.hpp).
@@ -131,6 +131,16 @@ int SessionImpl<Api>::ego_signals() const {
     }
     return *answers_.ego_signals;
   });
+}
+
+template <class Api>
+int SessionImpl<Api>::ego_signals_now() const {
+  return guarded("the ego's signals", [this] { return Api::Vehicle::getSignals(ego_); });
+}
+
+template <class Api>
+std::string SessionImpl<Api>::ego_parameter(const std::string& key) const {
+  return guarded("a parameter of the ego", [&] { return Api::Vehicle::getParameter(ego_, key); });
 }
 
 template <class Api>

@@ -154,6 +154,13 @@ class SumoSession {
   virtual EgoState ego() const = 0;
   /// The signal mask SUMO shows for the ego now (docs/behaviour.md §S4 read-back).
   virtual int ego_signals() const = 0;
+  /// The ego's signal mask asked of SUMO now (Vehicle::getSignals), never from the step's answer: over
+  /// --connect it shows what a client of a lower order set during this step's round (setSignals
+  /// shows at once), which the step's subscribed answer, computed when SUMO stepped, does not.
+  virtual int ego_signals_now() const = 0;
+  /// The ego's generic parameter `key` now (Vehicle::getParameter, as another TraCI client set it with
+  /// setParameter); "" when it was never set.
+  virtual std::string ego_parameter(const std::string& key) const = 0;
   /// Sets the ego's signals for the next step (must be re-sent every step, docs/behaviour.md §S4) and its
   /// speed (held until changed). A negative mask leaves the signals as they are (another TraCI client
   /// sets them: a traci decider under test, docs/decider.md).

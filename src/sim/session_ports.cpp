@@ -21,7 +21,8 @@ StepObservation observe(const sumo::SumoSession& session, sumo::EgoState ego, co
   // Vehicle::getLeader: also on the lanes ahead.
   if (want.leader)
     if (const auto leader = session.ego_leader(kLeaderRange)) seen.leader = LeaderInfo{leader->id, leader->gap};
-  if (want.signals) seen.signals = session.ego_signals();
+  if (want.signals) seen.signals = want.signals_now ? session.ego_signals_now() : session.ego_signals();
+  for (const std::string& key : want.ego_parameters) seen.ego_parameters.emplace_back(key, session.ego_parameter(key));
   return seen;
 }
 

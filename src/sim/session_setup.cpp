@@ -45,6 +45,11 @@ double take_over_deadline(const Scenario& s) { return s.sumo.end ? *s.sumo.end :
 sumo::SessionConfig session_config(const Scenario& scenario, const sumo::RoutePlan& plan, const LateralPlan& lateral,
                                    const RunContext& context) {
   const bool connect = context.backend.kind == sumo::BackendKind::Connect;
+  // A traci SUT is another client of the SUMO signalsim connects to (docs/decider.md "Another TraCI client").
+  for (const auto& [key, spec] : {std::pair{"decider", &scenario.decider}, std::pair{"light_judge", &scenario.light_judge}})
+    if (!connect && spec->kind == SutSpec::Kind::Traci)
+      throw InputError(scenario.path, 0, std::string(key) + " traci is another TraCI client of the SUMO the run "
+                                         "shares with it: it needs --connect HOST:PORT");
   if (connect && !scenario.light_offsets.empty())
     throw InputError(scenario.path, 0, "light_offsets change the lights of every client of the SUMO at " +
                                            context.backend.host + ":" + std::to_string(context.backend.port) +

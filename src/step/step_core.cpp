@@ -88,6 +88,14 @@ SutRun sut_run(const Scenario& scenario, const RouteMap& route, const LateralPla
   return run;
 }
 
+// The lights a step reads, as a SUT's step before it is filled: a light judge names the ego
+// parameters it reads for them (LightJudgeSut::ego_parameters).
+SutStep demanded_lights(const ObservationDemand& want) {
+  SutStep in;
+  for (const LightDemand& l : want.lights) in.lights.emplace_back().tls_id = l.tls_id;
+  return in;
+}
+
 }  // namespace
 
 double run_end_time(const Scenario& scenario, double start_time) {
@@ -144,7 +152,8 @@ ObservationDemand StepCore::demand(const sumo::EgoState& ego) {
   if (const LateralSegment* waiting = behavior_.waiting_lane_change(s_front - b2f_))
     want.lane_traffic = waiting->reference_lane;
   lights_.demand(s_front, want);
-  if (suts_.decider && suts_.decider->reads_sumo_signals()) want.signals = true;
+  if (suts_.decider && suts_.decider->reads_sumo_signals()) want.signals = want.signals_now = true;
+  if (suts_.light_judge) want.ego_parameters = suts_.light_judge->ego_parameters(demanded_lights(want));
   want.leader = outcomes_.needs_leader(row_speed) || stuck_.may_end_at(ego.time, row_speed) ||
                 ego.time + dt_ >= end_time_ - 0.5 * dt_;
   return want;
@@ -229,6 +238,7 @@ SutStep StepCore::sut_step(const StepNow& now, const StepObservation& seen, cons
                             now.ego.s_base + scenario_.run_params.decider.forward_path_length);
   in.request = request;
   in.sumo_signals = seen.signals;
+  in.ego_parameters = seen.ego_parameters;
   return in;
 }
 

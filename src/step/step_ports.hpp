@@ -9,6 +9,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "report/timeline.hpp"
@@ -41,6 +42,11 @@ struct ObservationDemand {
   bool leader = false;
   /// SUMO's signal mask of the ego at the observation (a SUMO-driven run's blinker).
   bool signals = false;
+  /// With `signals`: the mask asked of SUMO at the observation itself (SumoSession::ego_signals_now),
+  /// not from the step's answer: what another TraCI client set before this one's turn (a traci decider).
+  bool signals_now = false;
+  /// The ego's generic parameters to read at the observation, by key (a traci light judge's answers).
+  std::vector<std::string> ego_parameters;
 
   /// The entry for `tls_id`, added when missing (one entry per light id, whatever asks for it).
   LightDemand& light(const std::string& tls_id);
@@ -63,6 +69,8 @@ struct StepObservation {
   std::vector<sumo::SumoSession::LaneVehicle> lane_traffic;  ///< as demanded
   std::optional<LeaderInfo> leader;                          ///< when demanded and there is one
   std::optional<int> signals;                                ///< when demanded
+  /// As demanded, in demand order: key and value ("" for a parameter never set).
+  std::vector<std::pair<std::string, std::string>> ego_parameters;
 
   /// The reading of `tls_id`, or nullptr when it was not demanded.
   const LightReading* light(const std::string& tls_id) const;

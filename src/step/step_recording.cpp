@@ -61,9 +61,11 @@ json observation_json(const StepObservation& o) {
   json traffic = json::array();
   for (const sumo::SumoSession::LaneVehicle& v : o.lane_traffic)
     traffic.push_back({{"id", v.id}, {"pos", v.pos}, {"length", v.length}});
-  return {{"ego", o.ego},         {"lateral_offset", optional_json(o.lateral_offset)},
-          {"lights", lights},     {"lane_traffic", traffic},
-          {"leader", optional_json(o.leader)}, {"signals", optional_json(o.signals)}};
+  json out = {{"ego", o.ego},         {"lateral_offset", optional_json(o.lateral_offset)},
+              {"lights", lights},     {"lane_traffic", traffic},
+              {"leader", optional_json(o.leader)}, {"signals", optional_json(o.signals)}};
+  if (!o.ego_parameters.empty()) out["ego_parameters"] = o.ego_parameters;  // a traci light judge's only
+  return out;
 }
 
 StepObservation observation_of(const json& j) {
@@ -78,6 +80,8 @@ StepObservation observation_of(const json& j) {
     o.lane_traffic.push_back({v.at("id").get<std::string>(), v.at("pos").get<double>(), v.at("length").get<double>()});
   o.leader = optional_of<LeaderInfo>(j, "leader");
   o.signals = optional_of<int>(j, "signals");
+  if (j.contains("ego_parameters"))
+    o.ego_parameters = j.at("ego_parameters").get<std::vector<std::pair<std::string, std::string>>>();
   return o;
 }
 
@@ -167,6 +171,7 @@ std::string unrecorded(const ObservationDemand& want, const StepObservation& see
   if (want.lateral_reference_lane && !seen.lateral_offset)
     return "the lateral offset from " + *want.lateral_reference_lane;
   if (want.signals && !seen.signals) return "the signal mask";
+  if (want.ego_parameters.size() > seen.ego_parameters.size()) return "the ego's parameters";
   return "";
 }
 

@@ -9,6 +9,7 @@
 #include "sut/plugin_library.hpp"
 #include "sut/sut_library.hpp"
 #include "sut/sut_exec.hpp"
+#include "sut/sut_traci.hpp"
 
 namespace signalsim {
 namespace {
@@ -47,6 +48,7 @@ std::shared_ptr<BlinkerSut> make_decider(const Scenario& scenario) {
   if (is_plugin(spec))
     return std::make_shared<LibraryDecider>(load(scenario, "decider", spec, PluginRole::Decider), spec.text);
   if (spec.kind == SutSpec::Kind::Exec) return exec_adapter<ExecDecider>(scenario, spec, "decider");
+  if (spec.kind == SutSpec::Kind::Traci) return std::make_shared<TraciDecider>();
   throw InputError(scenario.path, 0, "decider '" + spec.text + "' is not available in this build");
 }
 
@@ -55,6 +57,7 @@ std::shared_ptr<LightJudgeSut> make_light_judge(const Scenario& scenario) {
   if (spec.kind == SutSpec::Kind::Library)
     return std::make_shared<LibraryLightJudge>(load(scenario, "light_judge", spec, PluginRole::LightJudge), spec.text);
   if (spec.kind == SutSpec::Kind::Exec) return exec_adapter<ExecLightJudge>(scenario, spec, "light_judge");
+  if (spec.kind == SutSpec::Kind::Traci) return std::make_shared<TraciLightJudge>();
   throw InputError(scenario.path, 0, "light_judge '" + spec.text + "' is not available in this build");
 }
 
