@@ -54,6 +54,23 @@ std::string cell(const ResultRow& row, const std::string& column) {
   return it == row.cells.end() ? std::string() : it->second;
 }
 
+// The failed expectations and law verdicts of a run's summary with their details, one a line, for the
+// console and JUnit's <system-out>.
+std::string failures_of(const nlohmann::ordered_json& summary) {
+  std::string out;
+  if (summary.contains("expectations") && summary["expectations"].is_array())
+    for (const auto& e : summary["expectations"])
+      if (!e.value("passed", true))
+        out += "expectation failed: " + e.value("expectation", std::string("?")) + ": " +
+               e.value("detail", std::string()) + "\n";
+  if (summary.contains("law") && summary["law"].is_object())
+    for (const auto& v : summary["law"].value("verdicts", nlohmann::ordered_json::array()))
+      if (!v.value("passed", true))
+        out += "law verdict failed: " + v.value("section", std::string()) + " " + v.value("id", std::string()) +
+               " " + v.value("rule", std::string()) + ": " + v.value("detail", std::string()) + "\n";
+  return out;
+}
+
 // Compares (or updates) one run; prints its verdict and returns its JUnit case.
 JUnitCase check_one(const RunSpec& run, const ResultRow* row, const CheckOptions& o, const std::string& out_dir) {
   JUnitCase c;
@@ -87,18 +104,7 @@ JUnitCase check_one(const RunSpec& run, const ResultRow* row, const CheckOptions
     const auto summary = read_json_file((run_dir / run_files::kSummary).string());
     step = summary.value("step_length", 0.1);
     suts = run_suts(summary);
-    // The failed expectations with their details, for the console and JUnit's <system-out>.
-    if (summary.contains("expectations") && summary["expectations"].is_array())
-      for (const auto& e : summary["expectations"])
-        if (!e.value("passed", true))
-          c.system_out += "expectation failed: " + e.value("expectation", std::string("?")) + ": " +
-                          e.value("detail", std::string()) + "\n";
-    if (summary.contains("law") && summary["law"].is_object())
-      for (const auto& v : summary["law"].value("verdicts", nlohmann::ordered_json::array()))
-        if (!v.value("passed", true))
-          c.system_out += "law verdict failed: " + v.value("section", std::string()) + " " +
-                          v.value("id", std::string()) + " " + v.value("rule", std::string()) + ": " +
-                          v.value("detail", std::string()) + "\n";
+    c.system_out += failures_of(summary);
   } catch (const std::exception& e) {
     return verdict(JUnitCase::Result::Error, e.what());
   }

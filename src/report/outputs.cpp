@@ -209,7 +209,7 @@ void write_timeline_csv(const std::string& path, const std::vector<TimelineRow>&
       out += ',';
       if (r.ref_tl_decision) out += to_string(*r.ref_tl_decision);
       out += ',';
-      out += r.tl_reason;  // the SUT's text: no comma, quote or line break (docs/decider.md)
+      out += r.tl_reason;  // the SUT's text, cleaned by the step core: no comma, quote or line break
     }
     out += '\n';
   }

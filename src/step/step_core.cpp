@@ -70,6 +70,20 @@ std::string parameter_text(const ParameterValue& value) {
       value);
 }
 
+// A light judge's reason as the timeline writes it: at most 64 bytes (not cut inside a UTF-8
+// character), a comma as ';', a quote or a control character as a space (docs/decider.md).
+std::string cleaned_reason(const std::string& text) {
+  std::string out = text.substr(0, 64);
+  if (text.size() > 64)
+    while (!out.empty() && (static_cast<unsigned char>(out.back()) & 0xC0) == 0x80) out.pop_back();
+  if (text.size() > 64 && !out.empty() && static_cast<unsigned char>(out.back()) >= 0xC0) out.pop_back();
+  for (char& c : out) {
+    if (c == ',') c = ';';
+    else if (c == '"' || static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = ' ';
+  }
+  return out;
+}
+
 // What a system under test is given once (docs/decider.md): the route, the planned maneuvers' shift
 // lines and every run parameter by name.
 SutRun sut_run(const Scenario& scenario, const RouteMap& route, const LateralPlan& lateral, const std::string& out_dir) {
@@ -249,6 +263,13 @@ void StepCore::judge_under_test(SutStep& in, StepLights& lights) {
   std::vector<LightStep*> judged;
   for (LightStep& l : lights.steps) {
     if (!l.judged) continue;
+    if (l.front_to_stop_line <= 0.0) {  // its line is behind the front: passed, nothing to ask
+      l.reference_decision = l.result.decision;
+      l.result.decision = JudgeDecision::Pass;
+      l.result.zone = JudgeZone::None;
+      l.result.stop_point_distance.reset();
+      continue;
+    }
     judged.push_back(&l);
     in.lights.push_back({l.light->tls_id, l.light->link_index, l.light->route_index, l.light->s_stop_line,
                          l.front_to_stop_line, l.delivered, l.elements, l.result.v2i_time_to_red});
@@ -258,11 +279,14 @@ void StepCore::judge_under_test(SutStep& in, StepLights& lights) {
   for (std::size_t i = 0; i < judged.size(); ++i) {
     LightStep& l = *judged[i];
     l.reference_decision = l.result.decision;
-    l.sut_reason = answers[i].reason;
+    l.sut_reason = cleaned_reason(answers[i].reason);
     l.result.decision = answers[i].stop ? JudgeDecision::Stop : JudgeDecision::Pass;
     l.result.zone = JudgeZone::None;
     l.result.stop_point_distance.reset();
-    if (answers[i].stop) l.result.stop_point_distance = l.front_to_stop_line - judge_params_.stop_margin;
+    // Within stop_margin of the line the stop point is behind the front: stay here (as the
+    // reference's restart suppression does), never a brake to a point already passed.
+    if (answers[i].stop)
+      l.result.stop_point_distance = std::max(0.0, l.front_to_stop_line - judge_params_.stop_margin);
   }
   lights.stopping = nullptr;
   for (const LightStep& l : lights.steps)

@@ -36,6 +36,7 @@ Json lanelet_json(const Lanelet& l) {
               {"successor_turns", std::move(successors)},
               {"roundabout_role", to_string(l.roundabout_role)},
               {"roundabout_id", l.roundabout_id},
+              {"leaves_ring_at_end", l.leaves_ring_at_end},
               {"turn_signal_distance", l.turn_signal_distance ? number(*l.turn_signal_distance) : Json(nullptr)},
               {"tags", std::move(tags)},
               {"centerline", std::move(centerline)}};

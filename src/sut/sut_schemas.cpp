@@ -13,7 +13,7 @@ const char* const kDefinitions = R"({
   "lanelet": {
     "type": "object", "additionalProperties": false,
     "required": ["id", "edge", "junction", "s_start", "s_end", "length", "speed_limit", "turn_direction",
-                 "successor_turns", "roundabout_role", "roundabout_id", "turn_signal_distance", "tags", "centerline"],
+                 "successor_turns", "roundabout_role", "roundabout_id", "leaves_ring_at_end", "turn_signal_distance", "tags", "centerline"],
     "properties": {
       "id": {"type": "string", "description": "SUMO lane id"},
       "edge": {"type": "string"},
@@ -26,6 +26,7 @@ const char* const kDefinitions = R"({
       "successor_turns": {"type": "array", "items": {"enum": ["none", "straight", "left", "right"]}},
       "roundabout_role": {"enum": ["none", "entry", "internal", "exit"]},
       "roundabout_id": {"type": "string"},
+      "leaves_ring_at_end": {"type": "boolean"},
       "turn_signal_distance": {"type": ["number", "null"], "description": "[m] null: none"},
       "tags": {"type": "object", "additionalProperties": {"type": "string"}},
       "centerline": {"type": "array", "items": {"type": "array", "items": {"type": "number"}, "minItems": 2, "maxItems": 2}}
