@@ -64,7 +64,8 @@ cosim() {
 "$bin" run "$src/scenarios/intersection_left.yaml" --out "$work/reference" --quiet || fail "reference run: exit code $?"
 cosim decider "$data/left_traci_decider.yaml" "$src/examples/traci_controller/blinker_controller.py" \
   --log "$work/decider.set.csv"
-[ "$(cat "$work/decider.code")" = 0 ] || fail "decider: exit code $(cat "$work/decider.code"): $(cat "$work/decider.err")"
+# Exit 1 is allowed: the controller's blinker rule is not the law's, and the law verdicts say so.
+[ "$(cat "$work/decider.code")" -le 1 ] || fail "decider: exit code $(cat "$work/decider.code"): $(cat "$work/decider.err")"
 "$py" - "$work/decider" "$work/decider.set.csv" "$work/reference" <<'PY' || fail "decider: the timeline is not the controller's"
 import csv, sys
 out, log, ref = sys.argv[1:]
@@ -105,7 +106,8 @@ def answer_at(t):  # SUMO keeps a parameter until it is set again: the last answ
     return [a for when, a in said if when <= t + 1e-6][-1]
 rows = list(csv.DictReader(open(out + "/timeline.csv")))
 line = 189.60  # C's stop line on in_S, route s
-judged = [r for r in rows if r["tl_id"] == "C" and r["tl_decision"]]
+# Rows before C's stop line: behind it the light is passed and the judge is not asked (docs/decider.md).
+judged = [r for r in rows if r["tl_id"] == "C" and r["tl_decision"] and float(r["s_front"]) < line]
 assert len(judged) > 100, len(judged)
 for r in judged:
     answer = answer_at(float(r["time"]))  # the controller's answer at the row's time
