@@ -39,6 +39,16 @@ void append_collapsed(nlohmann::ordered_json& list, JudgeDecision d) {
   if (list.empty() || list.back() != text) list.push_back(text);
 }
 
+// The head of a SUT's block: its name, the agreement and the two counts it is made of.
+nlohmann::ordered_json agreement_json(const std::string& name, std::size_t agreeing, std::size_t compared) {
+  nlohmann::ordered_json out;
+  out["name"] = name;
+  out["agreement"] = fraction(agreeing, compared);
+  out["steps"] = compared;
+  out["agreeing_steps"] = agreeing;
+  return out;
+}
+
 }  // namespace
 
 nlohmann::ordered_json decider_agreement_json(const Scenario& scenario, const RouteMap& route, const RunRecord& record) {
@@ -55,11 +65,7 @@ nlohmann::ordered_json decider_agreement_json(const Scenario& scenario, const Ro
   const std::vector<SignalSection> sections = run_signal_sections(scenario, route, record);
   const std::vector<SectionMetrics> sut = measure_sections(sections, record, scenario.step_length);
   const std::vector<SectionMetrics> ref = measure_sections(sections, reference, scenario.step_length);
-  nlohmann::ordered_json out;
-  out["name"] = record.decider_sut;
-  out["agreement"] = fraction(agreeing, compared);
-  out["steps"] = compared;
-  out["agreeing_steps"] = agreeing;
+  nlohmann::ordered_json out = agreement_json(record.decider_sut, agreeing, compared);
   nlohmann::ordered_json list = nlohmann::ordered_json::array();
   for (std::size_t i = 0; i < sections.size(); ++i) {
     nlohmann::ordered_json j;
@@ -98,11 +104,7 @@ nlohmann::ordered_json light_judge_agreement_json(const RunRecord& record) {
     append_collapsed(it->sut, row.tl_decision);
     append_collapsed(it->reference, *row.ref_tl_decision);
   }
-  nlohmann::ordered_json out;
-  out["name"] = record.light_judge_sut;
-  out["agreement"] = fraction(agreeing, compared);
-  out["steps"] = compared;
-  out["agreeing_steps"] = agreeing;
+  nlohmann::ordered_json out = agreement_json(record.light_judge_sut, agreeing, compared);
   nlohmann::ordered_json list = nlohmann::ordered_json::array();
   for (Light& l : lights)
     list.push_back({{"id", l.id},

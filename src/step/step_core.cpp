@@ -260,34 +260,40 @@ SutStep StepCore::sut_step(const StepNow& now, const StepObservation& seen, cons
 // reference's decision (kept beside it) and the planner executes it as its own: a stop brings the
 // front to the stop point (the stop line - stop_margin), a go plans no stop.
 void StepCore::judge_under_test(SutStep& in, StepLights& lights) {
+  // The SUT's decision replaces the reference's (kept beside it); a stop's point is the reference's,
+  // but within stop_margin of the line it is where the front is (as the reference's restart
+  // suppression does): never a brake to a point already passed.
+  const auto decide = [this](LightStep& l, bool stop) {
+    l.reference_decision = l.result.decision;
+    l.result.decision = stop ? JudgeDecision::Stop : JudgeDecision::Pass;
+    l.result.zone = JudgeZone::None;
+    l.result.stop_point_distance.reset();
+    if (stop) l.result.stop_point_distance = std::max(0.0, l.front_to_stop_line - judge_params_.stop_margin);
+  };
   std::vector<LightStep*> judged;
   for (LightStep& l : lights.steps) {
     if (!l.judged) continue;
     if (l.front_to_stop_line <= 0.0) {  // its line is behind the front: passed, nothing to ask
-      l.reference_decision = l.result.decision;
-      l.result.decision = JudgeDecision::Pass;
-      l.result.zone = JudgeZone::None;
-      l.result.stop_point_distance.reset();
+      decide(l, false);
       continue;
     }
     judged.push_back(&l);
     in.lights.push_back({l.light->tls_id, l.light->link_index, l.light->route_index, l.light->s_stop_line,
                          l.front_to_stop_line, l.delivered, l.elements, l.result.v2i_time_to_red});
   }
-  if (judged.empty()) return;
-  const std::vector<SutLightAnswer> answers = suts_.light_judge->judge(in);
-  for (std::size_t i = 0; i < judged.size(); ++i) {
-    LightStep& l = *judged[i];
-    l.reference_decision = l.result.decision;
-    l.sut_reason = cleaned_reason(answers[i].reason);
-    l.result.decision = answers[i].stop ? JudgeDecision::Stop : JudgeDecision::Pass;
-    l.result.zone = JudgeZone::None;
-    l.result.stop_point_distance.reset();
-    // Within stop_margin of the line the stop point is behind the front: stay here (as the
-    // reference's restart suppression does), never a brake to a point already passed.
-    if (answers[i].stop)
-      l.result.stop_point_distance = std::max(0.0, l.front_to_stop_line - judge_params_.stop_margin);
+  if (!judged.empty()) {
+    const std::vector<SutLightAnswer> answers = suts_.light_judge->judge(in);
+    for (std::size_t i = 0; i < judged.size(); ++i) {
+      decide(*judged[i], answers[i].stop);
+      judged[i]->sut_reason = cleaned_reason(answers[i].reason);
+    }
   }
+  choose_stopping_and_shown(lights);  // also when only passed lights were decided here
+}
+
+// The light the ego brakes for: the nearest stop requested; the light the row describes: that one,
+// else the nearest.
+void choose_stopping_and_shown(StepLights& lights) {
   lights.stopping = nullptr;
   for (const LightStep& l : lights.steps)
     if (l.result.stop_point_distance &&
@@ -301,11 +307,7 @@ void StepCore::judge_under_test(SutStep& in, StepLights& lights) {
 StepLights StepCore::light(const StepNow& now, const StepObservation& seen) {
   StepLights out;
   out.steps = lights_.step(now.sumo.time, now.ego.s_front, now.sumo.speed, now.sumo.accel, seen);
-  for (const LightStep& l : out.steps)
-    if (l.result.stop_point_distance &&
-        (!out.stopping || *l.result.stop_point_distance < *out.stopping->result.stop_point_distance))
-      out.stopping = &l;
-  out.shown = out.stopping ? out.stopping : (out.steps.empty() ? nullptr : &out.steps.front());
+  choose_stopping_and_shown(out);
   // SUMO's right of way would hold the ego at a red line on its own (docs/behaviour.md §S4, measured): while
   // the next junction is a light showing the ego red or yellow, the judge alone decides there.
   out.sumo_right_of_way = !light_decides_next_junction(route_, now.ego.s_front, out.steps);

@@ -79,6 +79,9 @@ struct StepLights {
   bool sumo_right_of_way = true;        ///< false while a light decides the next junction
 };
 
+/// Sets `stopping` (the nearest stop requested, if any) and `shown` (that light, else the nearest).
+void choose_stopping_and_shown(StepLights& lights);
+
 /// plan: the speed commanded for the step, SUMO's modes for it, and what holds the ego.
 struct SpeedPlan {
   double speed = 0.0;                   ///< [m/s] commanded (0 while backing up)
