@@ -45,7 +45,7 @@ std::string ExecChannel::exchange(const SutStep& step) {
       throw SutProcessError("wrote a line no step asked for (after its reply " + last_step_ + ")");
     process_->write(sut_step_message(step, *route_), timeout_);
     std::string reply = process_->read_line(timeout_);
-    if (process_->has_unread_output()) throw SutProcessError("wrote more than one line for the step");
+    if (process_->has_buffered_output()) throw SutProcessError("wrote more than one line for the step");
     last_step_ = when;
     return reply;
   } catch (const SutProcessError& e) {

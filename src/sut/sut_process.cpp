@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <poll.h>
 #include <pthread.h>
+#include <signal.h>
 #include <spawn.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
@@ -29,6 +30,7 @@ namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
 constexpr std::size_t kMaxLine = 64u << 20;  // a reply longer than this is refused
+constexpr auto kBriefWait = std::chrono::microseconds(200);  // asked in a loop before sleeping on poll
 
 Clock::time_point deadline_after(double seconds) {
   return Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
@@ -45,39 +47,38 @@ bool executable_file(const fs::path& path) {
   return ::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode) && ::access(path.c_str(), X_OK) == 0;
 }
 
-// SIGPIPE blocked while writing to the child: a write to a closed pipe then fails with EPIPE instead
-// of ending signalsim; a SIGPIPE this write raised is consumed before the mask is restored.
-class SigpipeBlock {
- public:
-  SigpipeBlock() {
-    sigemptyset(&pipe_);
-    sigaddset(&pipe_, SIGPIPE);
-    sigset_t pending;
-    sigpending(&pending);
-    was_pending_ = sigismember(&pending, SIGPIPE) == 1;
-    pthread_sigmask(SIG_BLOCK, &pipe_, &old_);
-  }
-  ~SigpipeBlock() {
-    sigset_t pending;
-    sigpending(&pending);
-    if (!was_pending_ && sigismember(&pending, SIGPIPE) == 1) {
-      const timespec zero{0, 0};
-      sigtimedwait(&pipe_, nullptr, &zero);
-    }
-    pthread_sigmask(SIG_SETMASK, &old_, nullptr);
-  }
-
- private:
-  sigset_t pipe_{}, old_{};
-  bool was_pending_ = false;
-};
-
 void close_fd(int& fd) {
   if (fd >= 0) ::close(fd);
   fd = -1;
 }
 
 }  // namespace
+
+// SIGPIPE is blocked while any child lives (signalsim runs its steps on one thread): a write to a
+// child that has gone fails with EPIPE instead of ending signalsim, without two mask changes a
+// message. A SIGPIPE raised meanwhile is consumed before the mask is restored.
+SigpipeHold::SigpipeHold() {
+  if (holders_++ > 0) return;
+  sigset_t pipe, pending;
+  sigemptyset(&pipe);
+  sigaddset(&pipe, SIGPIPE);
+  sigpending(&pending);
+  was_pending_ = sigismember(&pending, SIGPIPE) == 1;
+  pthread_sigmask(SIG_BLOCK, &pipe, &old_mask_);
+}
+
+SigpipeHold::~SigpipeHold() {
+  if (--holders_ > 0) return;
+  sigset_t pipe, pending;
+  sigemptyset(&pipe);
+  sigaddset(&pipe, SIGPIPE);
+  sigpending(&pending);
+  if (!was_pending_ && sigismember(&pending, SIGPIPE) == 1) {
+    const timespec zero{0, 0};
+    sigtimedwait(&pipe, nullptr, &zero);
+  }
+  pthread_sigmask(SIG_SETMASK, &old_mask_, nullptr);
+}
 
 std::vector<std::string> split_command(const std::string& command) {
   wordexp_t words{};
@@ -178,16 +179,31 @@ bool SutProcess::fill(int timeout_ms) {
   pollfd p{out_, POLLIN, 0};
   const int ready = ::poll(&p, 1, timeout_ms);
   if (ready < 0 && errno == EINTR) throw SutProcessError("interrupted by a signal while waiting");
-  if (ready <= 0) return true;
+  if (ready > 0) read_available();
+  return !eof_;
+}
+
+bool SutProcess::read_available() {
+  if (eof_) return false;
   char chunk[65536];
   const ssize_t n = ::read(out_, chunk, sizeof chunk);
   if (n > 0) {
     buffer_.append(chunk, static_cast<std::size_t>(n));
     if (buffer_.size() > kMaxLine) throw SutProcessError("wrote a line longer than 64 MiB");
-  } else if (n == 0 || (errno != EAGAIN && errno != EINTR)) {
-    eof_ = true;
+    return true;
   }
-  return !eof_;
+  if (n == 0 || (errno != EAGAIN && errno != EINTR)) eof_ = true;
+  return false;
+}
+
+// A reply usually follows within tens of microseconds: asking for it in a short loop spares signalsim
+// going to sleep and being woken for each step, which costs more than the reply itself on a VM.
+bool SutProcess::await_reply_briefly() {
+  const auto until = Clock::now() + kBriefWait;
+  do {
+    if (read_available() && buffer_.find('\n') != std::string::npos) return true;
+  } while (!eof_ && Clock::now() < until);
+  return false;
 }
 
 // Why the child is gone, and the last line of its stderr (a Python traceback's last line, "can't open
@@ -229,9 +245,11 @@ std::string SutProcess::exit_reason() {
 }
 
 void SutProcess::write(const std::string& line, double timeout) {
-  const SigpipeBlock block;
   const auto deadline = deadline_after(timeout);
   std::size_t done = 0;
+  // A pipe has room for a message the child is waiting for: written at once, no poll first.
+  if (const ssize_t n = ::write(in_, line.data(), line.size()); n > 0) done = static_cast<std::size_t>(n);
+  else if (n < 0 && errno == EPIPE) throw SutProcessError(ended_how(" before reading the message"));
   while (done < line.size()) {
     pollfd p[2] = {{in_, POLLOUT, 0}, {out_, POLLIN, 0}};
     const int ready = ::poll(p, eof_ ? 1 : 2, ms_left(deadline));
@@ -263,12 +281,12 @@ std::string SutProcess::read_line(double timeout) {
     }
     if (eof_) throw SutProcessError(ended_how(" before replying"));
     if (Clock::now() >= deadline) throw SutProcessError("no reply within " + seconds_text(timeout) + " s");
-    fill(ms_left(deadline));
+    if (!await_reply_briefly()) fill(ms_left(deadline));
   }
 }
 
 bool SutProcess::has_unread_output() {
-  if (!eof_) fill(0);
+  if (buffer_.empty()) read_available();
   return !buffer_.empty();
 }
 
