@@ -18,7 +18,8 @@
 //   "in_step_wall": s, "from_wall": s, "close_wall": s
 // On an idle machine their ratio is the share of a step's CPU time that is SUMO's own; the reads add
 // to the step, so tools/bench takes the step's cost from runs without the split.
-// Nothing of signalsim changes: it calls libsumo through the dynamic linker, which finds these first.
+// Nothing of signalsim changes: its libsumo module calls libsumo through the dynamic linker, which finds
+// these first (a preloaded library comes before the module's own libraries).
 #include <dlfcn.h>
 #include <time.h>
 
@@ -62,6 +63,9 @@ double wall() {
 template <class Function>
 Function next_definition(const char* mangled) {
   void* found = dlsym(RTLD_NEXT, mangled);
+  // signalsim loads libsumo with its module (RTLD_LOCAL, src/session/session_factory.hpp): libsumocpp.so is
+  // then loaded, but not among the libraries after this one; ask it by name.
+  if (void* library = found ? nullptr : dlopen("libsumocpp.so", RTLD_NOW | RTLD_NOLOAD)) found = dlsym(library, mangled);
   if (found == nullptr) {
     std::fprintf(stderr, "signalsim step clock: %s not found after this library (is libsumocpp.so loaded?)\n",
                  mangled);

@@ -19,6 +19,15 @@ file(RELATIVE_PATH SIGNALSIM_INSTALL_PLUGINS_FROM_BIN
 set_source_files_properties(src/sut/bundled_plugins.cpp TARGET_DIRECTORY signalsim_sut PROPERTIES
   COMPILE_DEFINITIONS SIGNALSIM_INSTALL_PLUGINS_FROM_BIN="${SIGNALSIM_INSTALL_PLUGINS_FROM_BIN}")
 
+# The libsumo module (src/session/session_factory.hpp): P/lib/signalsim installed, build/lib/signalsim
+# in the build tree (its LIBRARY_OUTPUT_DIRECTORY).
+set(SIGNALSIM_INSTALL_MODULEDIR lib/signalsim)
+file(RELATIVE_PATH SIGNALSIM_INSTALL_MODULES_FROM_BIN
+     /prefix/${SIGNALSIM_INSTALL_BINDIR} /prefix/${SIGNALSIM_INSTALL_MODULEDIR})
+set_source_files_properties(src/session/session_factory.cpp TARGET_DIRECTORY signalsim_session PROPERTIES
+  COMPILE_DEFINITIONS SIGNALSIM_INSTALL_MODULES_FROM_BIN="${SIGNALSIM_INSTALL_MODULES_FROM_BIN}")
+install(TARGETS signalsim_libsumo LIBRARY DESTINATION ${SIGNALSIM_INSTALL_MODULEDIR})
+
 # Build tree: one line naming the source tree, found by walking up from the binary's folder. It is
 # not installed, so an installed binary never reads this tree.
 file(CONFIGURE OUTPUT ${PROJECT_BINARY_DIR}/signalsim-data-dir.txt CONTENT "${PROJECT_SOURCE_DIR}\n")

@@ -9,13 +9,15 @@
 
 #include <algorithm>
 #include <cerrno>
-#include <climits>
 #include <csignal>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <iostream>
 #include <stdexcept>
 #include <utility>
+
+#include "core/program_location.hpp"
 
 namespace signalsim {
 namespace {
@@ -201,10 +203,8 @@ int run_foreground(const std::vector<std::string>& argv) {
 }
 
 std::string self_executable() {
-  char buf[PATH_MAX];
-  const ssize_t n = readlink("/proc/self/exe", buf, sizeof buf - 1);
-  if (n <= 0) return "/proc/self/exe";
-  return std::string(buf, static_cast<std::size_t>(n));
+  const std::filesystem::path exe = running_binary();
+  return exe.empty() ? "/proc/self/exe" : exe.string();
 }
 
 std::string signal_name(int signal) {

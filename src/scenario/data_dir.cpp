@@ -6,6 +6,7 @@
 #include <fstream>
 #include <system_error>
 
+#include "core/program_location.hpp"
 #include "scenario/input_error.hpp"
 
 namespace signalsim {
@@ -19,35 +20,18 @@ bool holds_data(const fs::path& dir) {
   return fs::is_directory(dir / "config" / "countries", ec);
 }
 
-// The running binary, symbolic links resolved (a link in ~/bin to an installed binary still finds
-// the installation's share/signalsim).
-fs::path binary() {
-  std::error_code ec;
-  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-  return ec ? fs::path() : exe;
-}
-
-// The first build-tree marker at or above `dir`, or "" when there is none.
-fs::path find_marker(fs::path dir) {
-  std::error_code ec;
-  for (; !dir.empty(); dir = dir.parent_path()) {
-    if (fs::is_regular_file(dir / kBuildTreeMarker, ec)) return dir / kBuildTreeMarker;
-    if (dir == dir.root_path()) break;
-  }
-  return {};
-}
-
 DataDirLookup search() {
   if (const char* env = std::getenv(kEnvironment); env && *env) {
     if (holds_data(env)) return {env, "", ""};
     return {"", std::string(kEnvironment) + "=" + env, "not a signalsim data directory (no config/countries in it)"};
   }
-  const fs::path exe = binary();
+  const fs::path exe = running_binary();
   const fs::path bin = exe.parent_path();
   if (exe.empty()) return {"", "/proc/self/exe", std::string("cannot be read to find the data directory; set ") + kEnvironment};
   const fs::path installed = (bin / SIGNALSIM_INSTALL_DATA_FROM_BIN).lexically_normal();
   if (holds_data(installed)) return {installed.string(), "", ""};
-  if (const fs::path marker = find_marker(bin); !marker.empty()) {
+  if (const fs::path tree = build_tree_above(bin); !tree.empty()) {
+    const fs::path marker = tree / kBuildTreeMarker;
     std::ifstream in(marker);
     std::string source;
     std::getline(in, source);

@@ -27,7 +27,4 @@ const DataDirLookup& find_data_dir();
 /// find_data_dir().path. Throws InputError(where, reason) when none was found.
 const std::string& data_dir();
 
-/// The marker CMake writes into the top of the build folder (cmake/install.cmake).
-inline constexpr const char* kBuildTreeMarker = "signalsim-data-dir.txt";
-
 }  // namespace signalsim

@@ -1,7 +1,8 @@
 // The embedded back-end: SUMO inside this process through libsumo (one simulation at a time per process,
 // docs/behaviour.md §S1; a batch's persistent worker starts one after another, each closed at the end
-// of its run). SUMO prints its errors to stderr and throws a bare "Process Error", so stderr is captured
-// while the session lives and the message we report is SUMO's own first error line.
+// of its run). Built alone as the module libsignalsim_libsumo.so (session_factory.hpp). SUMO prints its
+// errors to stderr and throws a bare "Process Error", so stderr is captured while the session lives and
+// the message we report is SUMO's own first error line.
 #include <fcntl.h>
 #include <unistd.h>
 
@@ -128,9 +129,7 @@ class EmbeddedSession final : public SessionImpl<LibsumoApi> {
   bool started_ = false;
 };
 
-}  // namespace
-
-std::string embedded_net_load_error(const std::string& net_path) {
+std::string libsumo_net_load_error(const std::string& net_path) {
   StderrCapture capture;  // SUMO's messages stay out of the user's terminal
   try {
     start_libsumo({"sumo", "--net-file", net_path, "--begin", "0", "--end", "0", "--no-step-log", "true",
@@ -143,12 +142,20 @@ std::string embedded_net_load_error(const std::string& net_path) {
   return {};
 }
 
-bool embedded_sumo_reusable() { return !g_libsumo.failed_start; }
+bool libsumo_reusable() { return !g_libsumo.failed_start; }
 
-std::unique_ptr<SumoSession> open_embedded_session(const SessionConfig& config) {
+std::unique_ptr<SumoSession> open_libsumo_session(const SessionConfig& config) {
   auto session = std::make_unique<EmbeddedSession>(config);
   session->insert_ego();
   return session;
 }
 
+}  // namespace
 }  // namespace signalsim::sumo
+
+// The module's entry (session_factory.hpp): the program looks it up by name after dlopen.
+extern "C" const signalsim::sumo::EmbeddedBackend* signalsim_embedded_backend_v1() {
+  using namespace signalsim::sumo;
+  static const EmbeddedBackend backend{&open_libsumo_session, &libsumo_net_load_error, &libsumo_reusable};
+  return &backend;
+}

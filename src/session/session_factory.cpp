@@ -1,10 +1,22 @@
-// open_session: the back-end by SessionConfig::backend; net_load_error: SUMO loads the net alone.
+// open_session: the back-end by SessionConfig::backend; net_load_error: SUMO loads the net alone. The
+// embedded back-end is the libsumo module, loaded on first use (session_factory.hpp).
 #include "session/session_factory.hpp"
+
+#include <dlfcn.h>
 
 #include <cstdlib>
 #include <filesystem>
+#include <system_error>
+
+#include "core/program_location.hpp"
+#include "session/interruption.hpp"
+
+#ifndef SIGNALSIM_INSTALL_MODULES_FROM_BIN
+#define SIGNALSIM_INSTALL_MODULES_FROM_BIN "../lib/signalsim"
+#endif
 
 namespace signalsim::sumo {
+namespace fs = std::filesystem;
 namespace {
 constexpr const char* kDebianSumoHome = "/usr/share/sumo";
 
@@ -15,16 +27,44 @@ void default_sumo_home() {
     setenv("SUMO_HOME", kDebianSumoHome, 0);
 }
 
+// The module beside an installed binary, else in the build tree above the binary.
+fs::path embedded_backend_file() {
+  std::error_code ec;
+  const fs::path bin = running_binary().parent_path();
+  const fs::path installed = (bin / SIGNALSIM_INSTALL_MODULES_FROM_BIN / kEmbeddedBackendFile).lexically_normal();
+  if (fs::is_regular_file(installed, ec)) return installed;
+  if (const fs::path tree = build_tree_above(bin); !tree.empty()) return tree / "lib" / "signalsim" / kEmbeddedBackendFile;
+  return installed;
+}
+
+const EmbeddedBackend* loaded_backend = nullptr;
+
+const EmbeddedBackend& embedded_backend() {
+  if (loaded_backend) return *loaded_backend;
+  throw_if_interrupted();  // nothing of SUMO is loaded for a run that is already over
+  const fs::path file = embedded_backend_file();
+  // Never closed: sessions and SUMO's own state live in it until the process ends.
+  void* module = dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL);
+  if (module == nullptr) throw SumoError(std::string("cannot load signalsim's libsumo module: ") + dlerror());
+  using Entry = const EmbeddedBackend* (*)();
+  const auto entry = reinterpret_cast<Entry>(dlsym(module, kEmbeddedBackendSymbol));
+  if (entry == nullptr) throw SumoError(file.string() + " has no " + kEmbeddedBackendSymbol + " (built by another signalsim?)");
+  loaded_backend = entry();
+  return *loaded_backend;
+}
+
 }  // namespace
 
 std::string net_load_error(const std::string& net_path) {
   default_sumo_home();
-  return embedded_net_load_error(net_path);
+  return embedded_backend().net_load_error(net_path);
 }
+
+bool embedded_sumo_reusable() { return loaded_backend == nullptr || loaded_backend->reusable(); }
 
 std::unique_ptr<SumoSession> open_session(const SessionConfig& config) {
   default_sumo_home();
-  if (config.backend.kind == BackendKind::Embedded) return open_embedded_session(config);
+  if (config.backend.kind == BackendKind::Embedded) return embedded_backend().open(config);
   return open_traci_session(config);
 }
 

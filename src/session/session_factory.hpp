@@ -1,16 +1,34 @@
-// The back-ends' factories, one per translation unit (libsumo and libtraci cannot share one, docs/behaviour.md
+// The back-ends' factories (libsumo and libtraci cannot share a translation unit, docs/behaviour.md
 // §S1); open_session (session_factory.cpp) picks one. Private to src/session.
+//
+// libsumo lives in a module of its own, libsignalsim_libsumo.so, loaded the first time a command needs
+// SUMO in-process: Debian's libsumo pulls in about 220 shared libraries (GDAL, FFmpeg, OpenSceneGraph,
+// ...) whose loading and binding costs about 0.16 s, which every command paid at start before (also
+// `--version`, `schema`, a batch's parent). The module finds signalsim's own functions in the program
+// (linked with -rdynamic), so both share one interruption state.
 #pragma once
 
 #include <memory>
+#include <string>
 
 #include "session/sumo_session.hpp"
 
 namespace signalsim::sumo {
 
-std::unique_ptr<SumoSession> open_embedded_session(const SessionConfig& config);
-/// net_load_error on libsumo.
-std::string embedded_net_load_error(const std::string& net_path);
+/// What the libsumo module offers: the functions behind open_session (embedded), net_load_error and
+/// embedded_sumo_reusable.
+struct EmbeddedBackend {
+  std::unique_ptr<SumoSession> (*open)(const SessionConfig& config);
+  std::string (*net_load_error)(const std::string& net_path);
+  bool (*reusable)();
+};
+
+/// The module's one exported function (extern "C"): its EmbeddedBackend. The version in the name
+/// changes with EmbeddedBackend or the session interface.
+inline constexpr const char* kEmbeddedBackendSymbol = "signalsim_embedded_backend_v1";
+/// The module's file name: bin/../lib/signalsim/ installed, <build>/lib/signalsim/ in a build tree.
+inline constexpr const char* kEmbeddedBackendFile = "libsignalsim_libsumo.so";
+
 /// gui (starts sumo-gui itself) and connect (an existing server).
 std::unique_ptr<SumoSession> open_traci_session(const SessionConfig& config);
 

@@ -170,6 +170,10 @@ StartedRun start_run(PlannedRun planned, const sumo::NetIndex& net, const RunCon
     run.notes.push_back("--connect: the scenario's route files, additional files and sumocfg options are the "
                         "server's business; signalsim did not load them (the server reports its own in "
                         "sumo.server_options)");
+  // An exec: SUT's process starts up (a Python interpreter: tens of ms) while SUMO loads.
+  run.suts = make_systems_under_test(run.scenario);
+  if (run.suts.decider) run.suts.decider->launch(run.out_dir);
+  if (run.suts.light_judge) run.suts.light_judge->launch(run.out_dir);
   run.session = sumo::open_session(config);
   if (definition) {
     const sumo::EgoVehicle& vehicle = run.session->ego_vehicle();
@@ -215,7 +219,7 @@ CoreSetup core_setup(const StartedRun& run, const sumo::NetIndex& net) {
   for (sumo::ApproachLight& a : lights) a.has_arrow = sumo::shows_arrow(session.program_states(a.tls_id), a);
   for (const auto& [tls, offset] : run.scenario.light_offsets) session.shift_light_program(tls, offset);
   return CoreSetup{run.scenario,      run.plan.map,    run.lateral, std::move(lights), run_sumo_info(run),
-                   session.time(),    make_systems_under_test(run.scenario)};
+                   session.time(),    run.suts};
 }
 
 }  // namespace signalsim

@@ -63,11 +63,12 @@ struct StartedRun {
   sumo::SessionConfig config;  ///< what SUMO was started with
   std::vector<std::string> notes;  ///< what of the scenario the back-end did not apply, and why
   std::string out_dir;             ///< the run's output directory (RunContext)
+  SystemsUnderTest suts;           ///< the scenario's SUTs, launched before SUMO started
   std::unique_ptr<sumo::SumoSession> session;
 };
 
-/// Starts SUMO on the context's back-end and inserts the ego, or waits for the vehicle to take over
-/// and fills in what SUMO says it is. Throws InputError (a key that contradicts the vehicle's vType),
+/// Launches the scenario's systems under test, then starts SUMO on the context's back-end and inserts
+/// the ego, or waits for the vehicle to take over and fills in what SUMO says it is. Throws InputError (a key that contradicts the vehicle's vType),
 /// sumo::SumoError.
 StartedRun start_run(PlannedRun planned, const sumo::NetIndex& net, const RunContext& context);
 

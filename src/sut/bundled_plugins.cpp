@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <system_error>
 
-#include "scenario/data_dir.hpp"
+#include "core/program_location.hpp"
 #include "sut/plugin_library.hpp"
 
 #ifndef SIGNALSIM_INSTALL_PLUGINS_FROM_BIN
@@ -18,16 +18,6 @@ namespace {
 
 constexpr const char* kEnvironment = "SIGNALSIM_PLUGIN_DIR";
 
-// The build tree holding the running binary: the first folder at or above it with the marker.
-fs::path build_tree(fs::path dir) {
-  std::error_code ec;
-  for (; !dir.empty(); dir = dir.parent_path()) {
-    if (fs::is_regular_file(dir / kBuildTreeMarker, ec)) return dir;
-    if (dir == dir.root_path()) break;
-  }
-  return {};
-}
-
 }  // namespace
 
 std::string bundled_plugin(const std::string& file_name) {
@@ -37,10 +27,10 @@ std::string bundled_plugin(const std::string& file_name) {
     if (fs::is_regular_file(file, ec)) return file.string();
     throw PluginLoadError(file.string() + " does not exist (" + kEnvironment + "=" + env + ")");
   }
-  const fs::path bin = fs::read_symlink("/proc/self/exe", ec).parent_path();
+  const fs::path bin = running_binary().parent_path();
   const fs::path installed = (bin / SIGNALSIM_INSTALL_PLUGINS_FROM_BIN / file_name).lexically_normal();
   if (fs::is_regular_file(installed, ec)) return installed.string();
-  if (const fs::path tree = build_tree(bin); !tree.empty()) {
+  if (const fs::path tree = build_tree_above(bin); !tree.empty()) {
     const fs::path built = tree / "plugins" / file_name;
     if (fs::is_regular_file(built, ec)) return built.string();
     throw PluginLoadError(built.string() + " is not built (cmake --build build --target " +

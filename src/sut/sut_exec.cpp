@@ -22,17 +22,26 @@ SutError ExecChannel::error(const std::string& when, const std::string& reason) 
 
 std::string ExecChannel::step_when(const SutStep& step) const { return "at t=" + time_text(step.time) + " s"; }
 
-void ExecChannel::start(const SutRun& run) {
-  timeout_ = run.timeout;
-  route_ = run.route;
-  const std::string err = (std::filesystem::path(run.out_dir.empty() ? "." : run.out_dir) / (role_ + ".stderr.txt")).string();
+void ExecChannel::launch(const std::string& out_dir) {
+  const std::string err = (std::filesystem::path(out_dir.empty() ? "." : out_dir) / (role_ + ".stderr.txt")).string();
   try {
     std::filesystem::create_directories(std::filesystem::path(err).parent_path());
     process_ = std::make_unique<SutProcess>(program_, argv_, spec_.base_dir, err);
+  } catch (const SutProcessError& e) {
+    throw error("at start", e.what());
+  } catch (const std::filesystem::filesystem_error& e) {
+    throw error("at start", e.what());
+  }
+}
+
+void ExecChannel::start(const SutRun& run) {
+  timeout_ = run.timeout;
+  route_ = run.route;
+  if (!process_) launch(run.out_dir);
+  try {
     process_->write(sut_hello_message(run, role_), timeout_);
   } catch (const SutProcessError& e) {
-    throw error("at hello", e.what());
-  } catch (const std::filesystem::filesystem_error& e) {
+    process_.reset();  // killed and reaped
     throw error("at hello", e.what());
   }
 }

@@ -1,7 +1,8 @@
 // The exec: adapters (docs/decider.md "JSON lines"): a decider or light judge that is an external
 // process speaking JSON lines. The command is split and its program found when the adapter is made
-// (before the run's first step); the process starts with hello, answers one line per step and ends
-// after bye. Every fault is a SutError naming the SUT and the step.
+// (before the run's first step); the process is launched before SUMO starts, gets hello before the
+// first step, answers one line per step and ends after bye. Every fault is a SutError naming the SUT
+// and the step.
 #pragma once
 
 #include <memory>
@@ -19,7 +20,9 @@ class ExecChannel {
  public:
   /// `role` "decider" or "light_judge"; throws SutProcessError when the command has no program.
   ExecChannel(const SutSpec& spec, std::string role);
-  /// Spawns the process (stderr to <out_dir>/<role>.stderr.txt) and sends hello.
+  /// Spawns the process (stderr to <out_dir>/<role>.stderr.txt).
+  void launch(const std::string& out_dir);
+  /// Sends hello (launching first when launch was not called).
   void start(const SutRun& run);
   /// Sends a step and returns its reply line.
   std::string exchange(const SutStep& step);
@@ -43,6 +46,7 @@ class ExecChannel {
 class ExecDecider final : public BlinkerSut {
  public:
   explicit ExecDecider(const SutSpec& spec) : channel_(spec, "decider") {}
+  void launch(const std::string& out_dir) override { channel_.launch(out_dir); }
   void start(const SutRun& run) override { channel_.start(run); }
   void finish() override { channel_.finish(); }
   Blinker decide(const SutStep& step) override;
@@ -54,6 +58,7 @@ class ExecDecider final : public BlinkerSut {
 class ExecLightJudge final : public LightJudgeSut {
  public:
   explicit ExecLightJudge(const SutSpec& spec) : channel_(spec, "light_judge") {}
+  void launch(const std::string& out_dir) override { channel_.launch(out_dir); }
   void start(const SutRun& run) override { channel_.start(run); }
   void finish() override { channel_.finish(); }
   std::vector<SutLightAnswer> judge(const SutStep& step) override;

@@ -25,7 +25,11 @@ class SutError : public std::runtime_error {
 class BlinkerSut {
  public:
   virtual ~BlinkerSut() = default;
-  /// Before the first step (the C ABI's create, JSON lines' hello). Throws SutError.
+  /// Before SUMO starts, with the run's output folder: an exec: process starts here, so that its own
+  /// start-up overlaps SUMO's. Throws SutError.
+  virtual void launch(const std::string& out_dir) { (void)out_dir; }
+  /// Before the first step (the C ABI's create, JSON lines' hello; launches first if not launched).
+  /// Throws SutError.
   virtual void start(const SutRun& run) = 0;
   /// After the last step (JSON lines' bye). Throws SutError.
   virtual void finish() {}
@@ -38,6 +42,7 @@ class BlinkerSut {
 class LightJudgeSut {
  public:
   virtual ~LightJudgeSut() = default;
+  virtual void launch(const std::string& out_dir) { (void)out_dir; }  ///< as BlinkerSut::launch
   virtual void start(const SutRun& run) = 0;
   virtual void finish() {}
   /// One answer per light of step.lights, in that order. Throws SutError.

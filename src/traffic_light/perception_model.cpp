@@ -1,6 +1,7 @@
 #include "traffic_light/perception_model.hpp"
 
 #include "traffic_light/seeded_stream.hpp"
+#include "traffic_light/time_ns.hpp"
 
 #include <algorithm>
 #include <array>
@@ -13,7 +14,6 @@ namespace signalsim {
 namespace {
 
 using seeded::stream_seed;
-using seeded::to_ns;
 using seeded::uniform01;
 
 constexpr std::array<SignalColor, 4> kConfusableColors = {SignalColor::Unknown, SignalColor::Red, SignalColor::Amber,

@@ -23,7 +23,4 @@ inline std::uint64_t stream_seed(std::uint64_t seed, std::uint64_t stream) { ret
 /// Uniform in [0, 1) from the top 53 bits of one raw draw: exact and portable.
 inline double uniform01(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
 
-/// Seconds to integer nanoseconds (times are compared so, like rclcpp::Time).
-inline std::int64_t to_ns(double seconds) { return static_cast<std::int64_t>(std::llround(seconds * 1e9)); }
-
 }  // namespace signalsim::seeded

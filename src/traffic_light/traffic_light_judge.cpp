@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "traffic_light/judge_line.hpp"
+#include "traffic_light/time_ns.hpp"
 
 namespace signalsim {
 
@@ -15,15 +16,6 @@ namespace {
 
 // docs/behaviour.md §L1.6 isVehicleStopped(0.0).
 constexpr double kStopVelocityEps = 1e-3;
-
-// Times are compared in integer nanoseconds, like rclcpp::Time (docs/behaviour.md §L1.5 choice). Saturated
-// at +-4e18 ns (about 127 years): llround of a larger finite time is unspecified, and the
-// difference of two saturated times (now - stamp, now - timer start) stays within int64 (fuzzing
-// found `now - stamp` overflowing for a stamp of 1e300 s).
-constexpr double kMaxNs = 4e18;
-std::int64_t to_ns(double seconds) {
-  return static_cast<std::int64_t>(std::llround(std::clamp(seconds * 1e9, -kMaxNs, kMaxNs)));
-}
 
 void require_finite(double value, const char* name) {
   if (!std::isfinite(value)) {

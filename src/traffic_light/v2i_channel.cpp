@@ -6,6 +6,7 @@
 #include <string>
 
 #include "traffic_light/seeded_stream.hpp"
+#include "traffic_light/time_ns.hpp"
 
 namespace signalsim {
 
@@ -27,21 +28,21 @@ void validate(const V2iChannelParameters& p) {
 
 V2iChannel::V2iChannel(const V2iChannelParameters& params) : params_(params) {
   validate(params_);
-  latency_ns_ = seeded::to_ns(params_.latency);
-  max_age_ns_ = seeded::to_ns(params_.max_age);
+  latency_ns_ = to_ns(params_.latency);
+  max_age_ns_ = to_ns(params_.max_age);
   dropout_rng_.seed(seeded::stream_seed(params_.seed, kDropoutStream));
 }
 
 std::vector<SignalPrediction> V2iChannel::step(const std::vector<SignalPrediction>& predictions, double now) {
   if (!std::isfinite(now)) throw std::invalid_argument("V2iChannel::step: now is not finite");
-  const std::int64_t now_ns = seeded::to_ns(now);
+  const std::int64_t now_ns = to_ns(now);
   if (last_now_ns_ && now_ns < *last_now_ns_) throw std::invalid_argument("V2iChannel::step: time went backwards");
   last_now_ns_ = now_ns;
 
   // Send.
   const double u_drop = seeded::uniform01(dropout_rng_);
   const bool blacked_out = std::any_of(params_.blackouts.begin(), params_.blackouts.end(), [&](const auto& b) {
-    return seeded::to_ns(b.start) <= now_ns && now_ns <= seeded::to_ns(b.end);
+    return to_ns(b.start) <= now_ns && now_ns <= to_ns(b.end);
   });
   if (!blacked_out && !(u_drop < params_.dropout_probability))
     queue_.push_back({now_ns + latency_ns_, now_ns, now, predictions});

@@ -7,6 +7,7 @@
 
 #include "turn_signal/first_active.hpp"
 #include "turn_signal/required_end.hpp"
+#include "turn_signal/signal_sections.hpp"
 
 namespace signalsim {
 namespace {
@@ -20,12 +21,6 @@ std::optional<TurnDirection> expected_direction(TurnIndicator behavior_command) 
 }
 
 bool is_turn(TurnDirection d) { return d == TurnDirection::Left || d == TurnDirection::Right; }
-
-TurnIndicator command_of(TurnDirection d) {
-  if (d == TurnDirection::Left) return TurnIndicator::EnableLeft;
-  if (d == TurnDirection::Right) return TurnIndicator::EnableRight;
-  return TurnIndicator::Disable;  // docs/behaviour.md §T1.3: straight / none -> DISABLE
-}
 
 // docs/behaviour.md §T4.1 "near": the next lanelet ahead with a map successor turning the expected way
 // starts within turn_signal_minimum_search_distance.

@@ -15,13 +15,13 @@ bool in_roundabout(const Lanelet& l, const std::string& roundabout_id) {
   return l.roundabout_role != RoundaboutRole::None && l.roundabout_id == roundabout_id;
 }
 
-TurnIndicator command_of(TurnDirection d) {
-  return d == TurnDirection::Left ? TurnIndicator::EnableLeft
-         : d == TurnDirection::Right ? TurnIndicator::EnableRight
-                                     : TurnIndicator::Disable;
-}
-
 }  // namespace
+
+TurnIndicator command_of(TurnDirection d) {
+  if (d == TurnDirection::Left) return TurnIndicator::EnableLeft;
+  if (d == TurnDirection::Right) return TurnIndicator::EnableRight;
+  return TurnIndicator::Disable;
+}
 
 TurnIndicator roundabout_command(std::string_view setting) {
   if (setting == "Left") return TurnIndicator::EnableLeft;

@@ -76,6 +76,10 @@ std::optional<std::size_t> exit_signal_chain_start(const RouteMap& route, std::s
 /// "None" included) -> DISABLE.
 TurnIndicator roundabout_command(std::string_view setting);
 
+/// docs/behaviour.md §T1.3: a lanelet's turn direction as a command: left -> ENABLE_LEFT, right ->
+/// ENABLE_RIGHT, straight and none -> DISABLE.
+TurnIndicator command_of(TurnDirection d);
+
 enum class SignalSectionKind { Turn, RoundaboutEntry, RoundaboutExit };
 const char* to_string(SignalSectionKind kind);  ///< "turn", "roundabout_entry", "roundabout_exit"
 

@@ -2,7 +2,8 @@
 # cmake --install into a temporary prefix, then the installed binary alone, from another working
 # directory: it lists the presets of P/share/signalsim (or of $SIGNALSIM_DATA_DIR), runs a bundled
 # scenario with the same timeline and events as the build tree's binary, plots with the installed
-# python/signalsim-plot (when matplotlib is there), and a missing data dir is one line and exit 2.
+# python/signalsim-plot (when matplotlib is there), and a missing data dir or libsumo module is one
+# line and exit 2.
 # usage: install_test.sh CMAKE_COMMAND BUILD_DIR SOURCE_DIR BUILD_TREE_SIGNALSIM
 set -u
 cmake=$1
@@ -23,6 +24,7 @@ for f in config/autoware_defaults.yaml config/countries/jp.yaml python/signalsim
          scenarios/intersection_left.yaml sumo_nets/cross/cross.net.xml; do
   [ -f "$data/$f" ] || fail "not installed: share/signalsim/$f"
 done
+[ -f "$prefix/lib/signalsim/libsignalsim_libsumo.so" ] || fail "not installed: lib/signalsim/libsignalsim_libsumo.so"
 [ -x "$data/python/signalsim-plot" ] || fail "share/signalsim/python/signalsim-plot is not executable"
 [ -z "$(find "$prefix" -name __pycache__ -o -name 'signalsim-data-dir.txt')" ] || fail "stray files installed"
 # No path of the source or build tree's data is compiled into the binary.
@@ -93,6 +95,9 @@ if [ -z "$marker_above" ]; then
     "signalsim: $work/lone/bin/signalsim: no data directory: $work/lone/share/signalsim has no config/countries" \
     "$work/lone/bin/signalsim" run "$data/scenarios/intersection_left.yaml" --out lone_run
   [ ! -e lone_run ] || fail "lone binary: output folder written"
+  expect_no_data "binary without its libsumo module" \
+    "cannot load signalsim's libsumo module: $work/lone/lib/signalsim/libsignalsim_libsumo.so: cannot open shared object file" \
+    env SIGNALSIM_DATA_DIR="$data" "$work/lone/bin/signalsim" run "$data/scenarios/intersection_left.yaml" --out lone_module
   mkdir -p "$work/moved/build/bin" && cp "$bin" "$work/moved/build/bin/"
   echo "$work/moved/src" > "$work/moved/build/signalsim-data-dir.txt"
   expect_no_data "build tree marker naming a moved source tree" \

@@ -55,9 +55,10 @@ cp "$work/example/libsignalsim_cpp_decider.so" "$work/prefix/lib/signalsim/plugi
 [ "$(agreement "$work/installed/timeline.csv")" = 0 ] ||
   { echo "FAIL installed autoware_core: no decider under test in the timeline"; failures=$((failures + 1)); }
 # A build tree: plugins/ beside the marker; without the plugin there, one line naming where it looked.
-mkdir -p "$work/tree/src/app" "$work/tree/plugins"
+mkdir -p "$work/tree/src/app" "$work/tree/plugins" "$work/tree/lib/signalsim"
 cp "$build/signalsim-data-dir.txt" "$work/tree/"
 cp "$bin" "$work/tree/src/app/signalsim"
+cp "$build/lib/signalsim/libsignalsim_libsumo.so" "$work/tree/lib/signalsim/"
 "$work/tree/src/app/signalsim" run intersection_left.yaml --out "$work/tree_missing" --quiet --set decider=autoware_core 2>"$work/tree.err"
 [ $? -eq 2 ] && grep -qF "$work/tree/plugins/libsignalsim_autoware_core.so is not built" "$work/tree.err" ||
   { echo "FAIL build tree without the plugin: $(cat "$work/tree.err")"; failures=$((failures + 1)); }
