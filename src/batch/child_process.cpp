@@ -24,11 +24,6 @@ namespace {
 
 constexpr std::size_t kMaxStderr = 64 * 1024;
 
-void close_fd(int& fd) {
-  if (fd >= 0) close(fd);
-  fd = -1;
-}
-
 // Child, after fork: only async-signal-safe calls until exec (the parent may hold locks another of
 // its threads took). It leads a process group of its own and dies with the batch; a parent that
 // is already gone (`parent` is the pid before fork) ends it at once.
@@ -200,6 +195,11 @@ int run_foreground(const std::vector<std::string>& argv) {
   if (WIFEXITED(status)) return WEXITSTATUS(status);
   if (WIFSIGNALED(status)) return 128 + WTERMSIG(status);
   return 127;
+}
+
+void close_fd(int& fd) {
+  if (fd >= 0) close(fd);
+  fd = -1;
 }
 
 std::string self_executable() {

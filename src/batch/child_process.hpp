@@ -76,6 +76,9 @@ int run_foreground(const std::vector<std::string>& argv);
 /// This program's own executable (/proc/self/exe).
 std::string self_executable();
 
+/// Closes `fd` when it is open and sets it to -1.
+void close_fd(int& fd);
+
 /// "SIGKILL", "SIGSEGV", ... or "signal N".
 std::string signal_name(int signal);
 

@@ -28,14 +28,12 @@ const std::vector<std::string>& trailing_columns() {
   return columns;
 }
 
-bool contains(const std::vector<std::string>& list, const std::string& item) {
-  return std::find(list.begin(), list.end(), item) != list.end();
-}
-
 }  // namespace
 
 bool is_fixed_result_column(const std::string& name) {
-  return contains(leading_columns(), name) || contains(outcome_columns(), name) || contains(trailing_columns(), name);
+  for (const auto* columns : {&leading_columns(), &outcome_columns(), &trailing_columns()})
+    if (std::find(columns->begin(), columns->end(), name) != columns->end()) return true;
+  return false;
 }
 
 std::vector<std::string> result_columns(const std::vector<std::string>& swept, const ResultRows& rows) {

@@ -24,11 +24,6 @@ bool single_threaded() {
   return false;
 }
 
-void close_fd(int& fd) {
-  if (fd >= 0) close(fd);
-  fd = -1;
-}
-
 // Reads everything `fd` holds now into `out` (at most `limit` bytes kept; the rest is read and
 // dropped). Closes `fd` (sets it to -1) at its end.
 void read_now(int& fd, std::string& out, std::size_t limit) {

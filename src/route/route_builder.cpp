@@ -17,8 +17,6 @@ namespace {
 // An internal lane chain longer than this is a malformed net (netconvert makes at most two).
 constexpr int kMaxInternalChain = 16;
 
-std::string quoted(const std::string& id) { return "'" + id + "'"; }
-
 
 /// Turn directions of the connections leaving `lane_id` that have an internal lane (docs/behaviour.md §S3),
 /// in file order, without repeats. For an internal lane, that is the next internal lane of its chain.
@@ -61,8 +59,8 @@ LaneParams lane_params(const NetEdge& edge, const NetLane& lane) {
   if (auto it = out.params.find("turn_signal_distance"); it != out.params.end()) {
     out.turn_signal_distance = parse_double(it->second);
     if (!out.turn_signal_distance) {
-      throw RouteError("lane " + quoted(lane.id) + ": param 'turn_signal_distance' is not a number: " +
-                       quoted(it->second));
+      throw RouteError("lane " + quoted_id(lane.id) + ": param 'turn_signal_distance' is not a number: " +
+                       quoted_id(it->second));
     }
   }
   return out;
@@ -139,13 +137,13 @@ std::vector<const NetEdge*> route_edges(const NetIndex& net, const std::vector<s
   route.reserve(edges.size());
   for (const std::string& id : edges) {
     const NetEdge* edge = net.edge(id);
-    if (edge == nullptr) throw RouteError("route edge " + quoted(id) + " is not in the net " + quoted(net.path()));
+    if (edge == nullptr) throw RouteError("route edge " + quoted_id(id) + " is not in the net " + quoted_id(net.path()));
     // SUMO reserves ids starting with ':' for junction edges (internal, crossing, walkingarea).
     if (edge->is_internal || id.front() == ':') {
-      throw RouteError("route edge " + quoted(id) + " is an internal (junction) edge; a route lists normal edges");
+      throw RouteError("route edge " + quoted_id(id) + " is an internal (junction) edge; a route lists normal edges");
     }
     refuse_defective(net, NetElement::Edge, id, "a route edge");
-    if (edge->lanes.empty()) throw RouteError("route edge " + quoted(id) + " has no lanes");
+    if (edge->lanes.empty()) throw RouteError("route edge " + quoted_id(id) + " has no lanes");
     if (const std::string why = sumo_cannot_drive(net, *edge); !why.empty()) throw RouteError("route " + why);
     route.push_back(edge);
   }
@@ -162,7 +160,7 @@ Lanelet edge_lanelet(const NetIndex& net, const std::vector<std::string>& edges,
   // The lanes the ego drives here: entered on, left on, and crossed between them.
   for (int k = std::min(plan.lanes[i], plan.exit_lanes[i]); k <= std::max(plan.lanes[i], plan.exit_lanes[i]); ++k) {
     refuse_defective(net, NetElement::Lane, edge.lanes[static_cast<std::size_t>(k)].id,
-                     "a lane the route drives on edge " + quoted(edge.id));
+                     "a lane the route drives on edge " + quoted_id(edge.id));
   }
 
   Lanelet normal = lanelet_of(edge, lane);
@@ -178,7 +176,7 @@ Lanelet edge_lanelet(const NetIndex& net, const std::vector<std::string>& edges,
   }
   if (link != nullptr && !link->tl.empty()) {
     refuse_defective(net, NetElement::TlLogic, link->tl,
-                     "the light of the route's connection " + quoted(edge.id) + " -> " + quoted(edges[i + 1]));
+                     "the light of the route's connection " + quoted_id(edge.id) + " -> " + quoted_id(edges[i + 1]));
   }
   // The stop line is this lane's end: the light of the connection taken leaves it.
   if (link != nullptr && !link->tl.empty()) normal.traffic_light = TrafficLightLink{link->tl, link->link_index};
@@ -192,7 +190,7 @@ Lanelet edge_lanelet(const NetIndex& net, const std::vector<std::string>& edges,
 void push_connection_lanelets(const NetIndex& net, const NetEdge& edge, const std::string& next_edge,
                               const NetConnection& link, int next_lane, LaneletChain& chain) {
   if (link.via.empty()) {
-    throw RouteError("route edges " + quoted(edge.id) + " -> " + quoted(next_edge) +
+    throw RouteError("route edges " + quoted_id(edge.id) + " -> " + quoted_id(next_edge) +
                      ": the connection has no internal lane; the net has no internal lanes "
                      "(built with netconvert --no-internal-links)");
   }
@@ -204,16 +202,16 @@ void push_connection_lanelets(const NetIndex& net, const NetEdge& edge, const st
   std::string via = link.via;
   for (int chained = 0; !via.empty(); ++chained) {
     if (chained >= kMaxInternalChain) {
-      throw RouteError("route edges " + quoted(edge.id) + " -> " + quoted(next_edge) +
+      throw RouteError("route edges " + quoted_id(edge.id) + " -> " + quoted_id(next_edge) +
                        ": the internal lanes of the connection do not end");
     }
     const NetLane* internal = net.lane(via);
     const NetEdge* internal_edge = net.edge_of_lane(via);
     if (internal == nullptr || internal_edge == nullptr) {
-      throw RouteError("route edges " + quoted(edge.id) + " -> " + quoted(next_edge) + ": internal lane " +
-                       quoted(via) + " is not in the net");
+      throw RouteError("route edges " + quoted_id(edge.id) + " -> " + quoted_id(next_edge) + ": internal lane " +
+                       quoted_id(via) + " is not in the net");
     }
-    const std::string use = "an internal lane of the route's connection " + quoted(edge.id) + " -> " + quoted(next_edge);
+    const std::string use = "an internal lane of the route's connection " + quoted_id(edge.id) + " -> " + quoted_id(next_edge);
     refuse_defective(net, NetElement::Edge, internal_edge->id, use);
     refuse_defective(net, NetElement::Lane, via, use);
     Lanelet l = lanelet_of(*internal_edge, *internal);
@@ -221,7 +219,7 @@ void push_connection_lanelets(const NetIndex& net, const NetEdge& edge, const st
     l.junction_id = junction_of_internal_lane(via);
     if (net.junction(l.junction_id) == nullptr) l.junction_id = edge.to_junction;
     refuse_defective(net, NetElement::Junction, l.junction_id,
-                     "the junction of the route's connection " + quoted(edge.id) + " -> " + quoted(next_edge));
+                     "the junction of the route's connection " + quoted_id(edge.id) + " -> " + quoted_id(next_edge));
     const NetConnection* via_of = net.connection_via(via);
     l.turn_direction = turn_direction_of(via_of != nullptr ? via_of->dir : link.dir, net.lefthand());
     l.successor_turn_directions = successor_directions(net, via);
@@ -245,6 +243,8 @@ void push_connection_lanelets(const NetIndex& net, const NetEdge& edge, const st
 }
 
 }  // namespace
+
+std::string quoted_id(const std::string& id) { return "'" + id + "'"; }
 
 RoutePlan build_route(const NetIndex& net, const std::vector<std::string>& edges,
                       const std::vector<int>& required_exit, const LaneChangeEgo& ego) {

@@ -11,6 +11,9 @@
 
 namespace signalsim::sumo {
 
+/// An id as route messages quote it: 'in_X'.
+std::string quoted_id(const std::string& id);
+
 /// Thrown when the route cannot be built. what() names the edge(s) and the reason, e.g.
 /// "route edge 'in_X' is not in the net" or "route edges 'a' -> 'b' are not connected".
 class RouteError : public std::runtime_error {

@@ -8,8 +8,6 @@
 namespace signalsim::sumo {
 namespace {
 
-std::string quoted(const std::string& id) { return "'" + id + "'"; }
-
 EdgeRoom room_of(const NetEdge& edge, bool first, const LaneChangeEgo& ego) {
   EdgeRoom r;
   const double length = edge.lanes.front().length;  // netconvert gives every lane its edge's length
@@ -25,7 +23,7 @@ EdgeRoom room_of(const NetEdge& edge, bool first, const LaneChangeEgo& ego) {
 
 // "a passenger car" (signalsim's own ego), else "vClass 'bus'".
 std::string vehicle_class(const std::string& vclass) {
-  return vclass == "passenger" ? "a passenger car" : "vClass " + quoted(vclass);
+  return vclass == "passenger" ? "a passenger car" : "vClass " + quoted_id(vclass);
 }
 
 /// A route no plan can drive without crossing a lane the ego may not use: the first such crossing
@@ -37,8 +35,8 @@ std::string vehicle_class(const std::string& vclass) {
     for (int k = std::min(a, b) + 1; k < std::max(a, b); ++k) {
       const NetLane& lane = route[i]->lanes[static_cast<std::size_t>(k)];
       if (lane_permits(lane, vclass)) continue;
-      throw RouteError("the lane change the route needs on edge " + quoted(route[i]->id) + " (lane " +
-                       std::to_string(a) + " -> " + std::to_string(b) + ") crosses lane " + quoted(lane.id) +
+      throw RouteError("the lane change the route needs on edge " + quoted_id(route[i]->id) + " (lane " +
+                       std::to_string(a) + " -> " + std::to_string(b) + ") crosses lane " + quoted_id(lane.id) +
                        ", which " + vehicle_class(vclass) + " may not use; no other lane sequence connects the route edges");
     }
   }
@@ -64,7 +62,7 @@ RouteLanes plan_route_lanes(const NetIndex& net, const std::vector<const NetEdge
       }
     }
     if (links[i].empty()) {
-      throw RouteError("route edges " + quoted(route[i]->id) + " -> " + quoted(route[i + 1]->id) + " are not connected");
+      throw RouteError("route edges " + quoted_id(route[i]->id) + " -> " + quoted_id(route[i + 1]->id) + " are not connected");
     }
   }
 
@@ -90,7 +88,7 @@ RouteLanes plan_route_lanes(const NetIndex& net, const std::vector<const NetEdge
   if (out.plan.lanes.size() != route.size()) {
     const LanePlan crossing = plan_lanes(usable, links, required_exit, out.rooms, ego, true);
     if (crossing.lanes.size() == route.size()) refuse_crossing(route, crossing, ego.vclass);
-    throw RouteError("route " + quoted(route.front()->id) + " ... " + quoted(route.back()->id) +
+    throw RouteError("route " + quoted_id(route.front()->id) + " ... " + quoted_id(route.back()->id) +
                      ": no lane sequence connects the route edges");
   }
   for (std::size_t i = 0; i < route.size(); ++i) {
