@@ -27,10 +27,12 @@ done
 [ -f "$prefix/lib/signalsim/libsignalsim_libsumo.so" ] || fail "not installed: lib/signalsim/libsignalsim_libsumo.so"
 [ -x "$data/python/signalsim-plot" ] || fail "share/signalsim/python/signalsim-plot is not executable"
 [ -z "$(find "$prefix" -name __pycache__ -o -name 'signalsim-data-dir.txt')" ] || fail "stray files installed"
-# No path of the source or build tree's data is compiled into the binary.
+# No path of the source or build tree's data, plugins or libsumo module is compiled into the binary
+# (a sanitized build names its own source files, unity files of the build tree among them: harmless).
 if command -v readelf > /dev/null; then
-  ! readelf -p .rodata "$bin" | grep -qF -e "$src/config" -e "$src/python" -e "$src/tools" -e "$build/" \
-    || fail "a source or build tree path is compiled in: $(readelf -p .rodata "$bin" | grep -F -e "$src/" -e "$build/")"
+  tree_paths=(-e "$src/config" -e "$src/python" -e "$src/tools" -e "$build/plugins" -e "$build/lib" -e "$build/signalsim-data-dir")
+  ! readelf -p .rodata "$bin" | grep -qF "${tree_paths[@]}" \
+    || fail "a source or build tree path is compiled in: $(readelf -p .rodata "$bin" | grep -F "${tree_paths[@]}")"
 fi
 echo "ok   installed: bin/signalsim and share/signalsim/{config,python/signalsim-plot,python/signalsim_plot,scenarios,sumo_nets}"
 
