@@ -113,12 +113,21 @@ int serve() {
   return signal ? 128 + signal : 0;
 }
 
+// Before the first worker is forked: libsumo's module, which the forked workers then share. A module
+// that cannot be loaded is each run's error (its worker tries again and says why), not the batch's.
+void load_sumo_for_workers() {
+  try {
+    sumo::load_embedded_backend();
+  } catch (const sumo::SumoError&) {
+  }
+}
+
 }  // namespace
 
 Command add_worker_command(CLI::App& app) {
   CLI::App* sub = app.add_subcommand("worker", "A persistent worker of batch, sweep, check and compare (internal)");
   sub->group("");  // hidden from --help: the batch commands start it
-  set_worker_entry(&serve);  // the batch commands fork into it (batch/worker_process.hpp)
+  set_worker_entry(&serve, &load_sumo_for_workers);  // the batch commands fork into it (batch/worker_process.hpp)
   return {sub, [] { return serve(); }};
 }
 

@@ -10,11 +10,13 @@
 #include <cstring>
 #include <fstream>
 #include <stdexcept>
+#include <utility>
 
 namespace signalsim {
 namespace {
 
 int (*worker_entry)() = nullptr;
+void (*worker_before_first_fork)() = nullptr;
 
 // A fork may run more than async-signal-safe code only when no other thread could have held a lock.
 bool single_threaded() {
@@ -42,7 +44,10 @@ void read_now(int& fd, std::string& out, std::size_t limit) {
 
 }  // namespace
 
-void set_worker_entry(int (*entry)()) { worker_entry = entry; }
+void set_worker_entry(int (*entry)(), void (*before_first_fork)()) {
+  worker_entry = entry;
+  worker_before_first_fork = before_first_fork;
+}
 
 WorkerProcess::WorkerProcess(const std::string& program) {
   int requests[2] = {-1, -1}, replies[2] = {-1, -1};
@@ -57,6 +62,7 @@ WorkerProcess::WorkerProcess(const std::string& program) {
   ChildStart how;
   how.argv = {program, "worker"};
   how.fds = {{0, requests[0]}, {kWorkerReplyFd, replies[1]}};
+  if (worker_entry && worker_before_first_fork) std::exchange(worker_before_first_fork, nullptr)();
   how.entry = worker_entry && single_threaded() ? worker_entry : nullptr;
   try {
     process_ = ChildProcess::start(how);

@@ -14,7 +14,6 @@
 #include "step/route_planning.hpp"
 
 namespace signalsim::generate {
-using namespace law;  // the rules: sections, speeds, expectations (src/law)
 namespace {
 
 constexpr double kInsertionRoom = 5.0;   // [m] SUMO inserts the ego only if it can stop this short of the edge end

@@ -18,7 +18,7 @@ namespace {
 using law::GeneratedExpectation;
 using law::Section;
 
-std::string at(const TimelineRow& row) {
+std::string place_of(const TimelineRow& row) {
   return "t=" + rounded_fixed(row.time, 2) + " s, s_front=" + rounded_fixed(row.s_front, 2) + " m";
 }
 
@@ -50,7 +50,7 @@ std::optional<LawVerdict> shows(const RunRecord& record, Blinker wanted, double 
   for (std::size_t i : in)
     if (record.rows[i].blinker != wanted) {
       v.passed = false;
-      v.detail = std::string("blinker ") + name(record.rows[i].blinker) + " at " + at(record.rows[i]) +
+      v.detail = std::string("blinker ") + name(record.rows[i].blinker) + " at " + place_of(record.rows[i]) +
                  " (" + name(wanted) + " wanted with the front in [" + m(from) + ", " + m(to) + "])";
       return v;
     }
@@ -68,7 +68,7 @@ std::optional<LawVerdict> not_wrong_side(const RunRecord& record, Blinker wanted
     const Blinker b = record.rows[i].blinker;
     if (b != Blinker::None && b != wanted) {
       v.passed = false;
-      v.detail = std::string("blinker ") + name(b) + " at " + at(record.rows[i]) + " (" + name(wanted) +
+      v.detail = std::string("blinker ") + name(b) + " at " + place_of(record.rows[i]) + " (" + name(wanted) +
                  " wanted)";
       return v;
     }
@@ -94,7 +94,7 @@ std::optional<LawVerdict> no_flicker(const RunRecord& record, Blinker wanted, do
     }
     const TimelineRow& a = record.rows[in[k - 1]];
     if (a.blinker == b.blinker) continue;
-    if (changes++ == 0) first = name(a.blinker) + " -> " + name(b.blinker) + " at " + at(b);
+    if (changes++ == 0) first = name(a.blinker) + " -> " + name(b.blinker) + " at " + place_of(b);
   }
   v.passed = changes == 0;
   v.detail = v.passed ? "no change after it came on in [" + m(from) + ", " + m(to) + "]"
@@ -233,7 +233,7 @@ void judge_route_wide(const Judged& j, const std::vector<Section>& sections, con
                                     [&](const TimelineRow& r) { return r.blinker == b; });
       v.passed = hit == j.record.rows.end();
       v.detail = v.passed ? std::to_string(j.record.rows.size()) + " steps checked: " + e.why
-                          : std::string("blinker ") + name(b) + " at " + at(*hit) + ": " + e.why;
+                          : std::string("blinker ") + name(b) + " at " + place_of(*hit) + ": " + e.why;
       j.out.push_back(std::move(v));
     }
   }
@@ -278,15 +278,15 @@ void judge_lights(const Judged& j, const RouteMap& route, const TrafficLightJudg
     // The steps before the crossing since the judge's input last said anything but red or amber.
     std::size_t from = c;
     while (from > 0 && rows[from - 1].tl_id == id && stop_colour(rows[from - 1].tl_observed)) --from;
-    LawVerdict v{"light", id, "stop", true, "crossed the stop line at " + at(*cross) + ", the judge's input not red or amber"};
+    LawVerdict v{"light", id, "stop", true, "crossed the stop line at " + place_of(*cross) + ", the judge's input not red or amber"};
     for (std::size_t k = from; k < c; ++k) {
       if (!stop_required_at(j.record, k, id, line - p.stop_margin, p, step)) continue;
       v.passed = false;
-      v.detail = "crossed the stop line at " + at(*cross) + " with the judge given " + rows[c - 1].tl_observed +
-                 " since " + at(rows[from]) + "; the rules say stop from " + at(rows[k]) + " (docs/behaviour.md §L2.3)";
+      v.detail = "crossed the stop line at " + place_of(*cross) + " with the judge given " + rows[c - 1].tl_observed +
+                 " since " + place_of(rows[from]) + "; the rules say stop from " + place_of(rows[k]) + " (docs/behaviour.md §L2.3)";
       break;
     }
-    if (v.passed && from < c) v.detail = "crossed the stop line at " + at(*cross) + " on " + rows[c - 1].tl_observed +
+    if (v.passed && from < c) v.detail = "crossed the stop line at " + place_of(*cross) + " on " + rows[c - 1].tl_observed +
                                          " where it could not stop (docs/behaviour.md §L2.6)";
     j.out.push_back(std::move(v));
   }

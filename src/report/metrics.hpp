@@ -20,6 +20,7 @@
 // (a section never reached, no lead when no blinker served the section) is null.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -32,6 +33,12 @@
 #include "scenario/scenario.hpp"
 
 namespace signalsim {
+
+/// A value of summary.json that may be absent: the value, or null.
+template <typename T>
+nlohmann::ordered_json optional_json(const std::optional<T>& v) {
+  return v ? nlohmann::ordered_json(*v) : nlohmann::ordered_json(nullptr);
+}
 
 struct RunMetrics {
   double max_decel = 0.0;          ///< [m/s^2] largest deceleration (>= 0)

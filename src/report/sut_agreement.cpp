@@ -18,11 +18,6 @@ nlohmann::ordered_json fraction(std::size_t agreeing, std::size_t compared) {
   return rounded(static_cast<double>(agreeing) / static_cast<double>(compared), 4);
 }
 
-template <typename T>
-nlohmann::ordered_json optional_json(const std::optional<T>& v) {
-  return v ? nlohmann::ordered_json(*v) : nlohmann::ordered_json(nullptr);
-}
-
 // One implementation's service of a section.
 nlohmann::ordered_json service_json(const SectionMetrics& m) {
   nlohmann::ordered_json j;

@@ -156,6 +156,7 @@ std::unique_ptr<SumoSession> open_libsumo_session(const SessionConfig& config) {
 // The module's entry (session_factory.hpp): the program looks it up by name after dlopen.
 extern "C" const signalsim::sumo::EmbeddedBackend* signalsim_embedded_backend_v1() {
   using namespace signalsim::sumo;
-  static const EmbeddedBackend backend{&open_libsumo_session, &libsumo_net_load_error, &libsumo_reusable};
+  static const EmbeddedBackend backend{kEmbeddedBackendBuild, &open_libsumo_session, &libsumo_net_load_error,
+                                        &libsumo_reusable};
   return &backend;
 }

@@ -6,6 +6,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <string>
 #include <system_error>
 
 #include "core/program_location.hpp"
@@ -30,7 +31,9 @@ void default_sumo_home() {
 // The module beside an installed binary, else in the build tree above the binary.
 fs::path embedded_backend_file() {
   std::error_code ec;
-  const fs::path bin = running_binary().parent_path();
+  const fs::path exe = running_binary();
+  if (exe.empty()) throw SumoError("cannot load signalsim's libsumo module: /proc/self/exe cannot be read to find it");
+  const fs::path bin = exe.parent_path();
   const fs::path installed = (bin / SIGNALSIM_INSTALL_MODULES_FROM_BIN / kEmbeddedBackendFile).lexically_normal();
   if (fs::is_regular_file(installed, ec)) return installed;
   if (const fs::path tree = build_tree_above(bin); !tree.empty()) return tree / "lib" / "signalsim" / kEmbeddedBackendFile;
@@ -49,7 +52,11 @@ const EmbeddedBackend& embedded_backend() {
   using Entry = const EmbeddedBackend* (*)();
   const auto entry = reinterpret_cast<Entry>(dlsym(module, kEmbeddedBackendSymbol));
   if (entry == nullptr) throw SumoError(file.string() + " has no " + kEmbeddedBackendSymbol + " (built by another signalsim?)");
-  loaded_backend = entry();
+  const EmbeddedBackend* backend = entry();
+  if (std::string(backend->build) != kEmbeddedBackendBuild)
+    throw SumoError(file.string() + " was built with another signalsim (build " + backend->build + ", this program " +
+                    kEmbeddedBackendBuild + "): install both from one build");
+  loaded_backend = backend;
   return *loaded_backend;
 }
 
@@ -59,6 +66,8 @@ std::string net_load_error(const std::string& net_path) {
   default_sumo_home();
   return embedded_backend().net_load_error(net_path);
 }
+
+void load_embedded_backend() { embedded_backend(); }
 
 bool embedded_sumo_reusable() { return loaded_backend == nullptr || loaded_backend->reusable(); }
 

@@ -266,13 +266,19 @@ class SumoSession {
 
 /// Starts SUMO on the configured back-end and inserts (or waits for and takes over) the ego; returns
 /// once the ego has departed. Throws SumoError with SUMO's message, a refused connection, a missing
-/// display, a step length that differs from a connected server's, ...
+/// display, a step length that differs from a connected server's, the libsumo module not loadable
+/// (session_factory.hpp), ...
 std::unique_ptr<SumoSession> open_session(const SessionConfig& config);
 
 /// Whether SUMO itself (embedded, this process) loads the net alone: empty when it does, else SUMO's
 /// first error line (e.g. "Error: Unknown vehicle class 'cable_car'." of a net newer than SUMO 1.15).
-/// Starts and closes one simulation of no steps; costs about SUMO's load time of the net.
+/// Starts and closes one simulation of no steps; costs about SUMO's load time of the net. Throws
+/// SumoError when the libsumo module cannot be loaded, Interrupted after SIGINT/SIGTERM.
 std::string net_load_error(const std::string& net_path);
+
+/// Loads libsumo's module now if it is not loaded (session_factory.hpp): a batch does it before it forks
+/// its workers, which then share it. Throws SumoError when it cannot be loaded.
+void load_embedded_backend();
 
 /// Whether the next embedded simulation of this process starts as it would in a fresh process. libsumo
 /// runs one simulation at a time and may start again once it is closed (a batch's persistent worker

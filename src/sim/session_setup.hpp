@@ -68,8 +68,10 @@ struct StartedRun {
 };
 
 /// Launches the scenario's systems under test, then starts SUMO on the context's back-end and inserts
-/// the ego, or waits for the vehicle to take over and fills in what SUMO says it is. Throws InputError (a key that contradicts the vehicle's vType),
-/// sumo::SumoError.
+/// the ego, or waits for the vehicle to take over and fills in what SUMO says it is. Throws InputError
+/// (a key that contradicts the vehicle's vType; a SUT's library or command that cannot be used),
+/// SutError (an exec: process that could not be started), sumo::SumoError (SUMO's; the libsumo module
+/// not loadable); an exec: process already launched is killed and reaped as the run unwinds.
 StartedRun start_run(PlannedRun planned, const sumo::NetIndex& net, const RunContext& context);
 
 /// The record's `sumo` fields of a started run (summary.json `sumo`, `ego`): the back-end, its

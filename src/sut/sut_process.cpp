@@ -56,7 +56,11 @@ void close_fd(int& fd) {
 
 // SIGPIPE is blocked while any child lives (signalsim runs its steps on one thread): a write to a
 // child that has gone fails with EPIPE instead of ending signalsim, without two mask changes a
-// message. A SIGPIPE raised meanwhile is consumed before the mask is restored.
+// message. A SIGPIPE raised meanwhile is consumed before the mask is restored. The hold spans the
+// run (the child is launched before SUMO starts): any other write to a closed pipe in that time,
+// signalsim's own output included, fails with EPIPE instead, and a process started meanwhile
+// (sumo-gui) starts with SIGPIPE blocked, which SUMO's TraCI server ignores anyway; the SUT's own
+// process gets the default mask (the posix_spawn attributes).
 SigpipeHold::SigpipeHold() {
   if (holders_++ > 0) return;
   sigset_t pipe, pending;
@@ -269,19 +273,26 @@ void SutProcess::write(const std::string& line, double timeout) {
   }
 }
 
+// The short loop runs only while replies come within it: a SUT that takes longer (or a machine whose
+// cores are all busy, `batch --jobs` with exec SUTs) gets its reply waited for on poll alone, and the
+// loop comes back once a reply is quick again.
 std::string SutProcess::read_line(double timeout) {
+  const auto asked = Clock::now();
   const auto deadline = deadline_after(timeout);
+  bool spin = quick_replies_;
   for (;;) {
     const std::size_t nl = buffer_.find('\n');
     if (nl != std::string::npos) {
       std::string line = buffer_.substr(0, nl);
       buffer_.erase(0, nl + 1);
       if (!line.empty() && line.back() == '\r') line.pop_back();
+      quick_replies_ = Clock::now() - asked <= kBriefWait;
       return line;
     }
     if (eof_) throw SutProcessError(ended_how(" before replying"));
     if (Clock::now() >= deadline) throw SutProcessError("no reply within " + seconds_text(timeout) + " s");
-    if (!await_reply_briefly()) fill(ms_left(deadline));
+    if (!(spin && await_reply_briefly())) fill(ms_left(deadline));
+    spin = false;  // once a step
   }
 }
 

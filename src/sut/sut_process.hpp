@@ -68,6 +68,7 @@ class SutProcess {
   bool fill(int timeout_ms);  // waits up to timeout_ms for output and reads it into buffer_; false on EOF
   bool read_available();     // reads what has arrived, without waiting; false when nothing had
   bool await_reply_briefly();  // read_available in a short busy loop: true once a line is complete
+  bool quick_replies_ = true;  // the last reply came within the short loop's time (read_line)
   std::string exit_reason();  // why the child is gone ("exited with status 3", "killed by signal 11")
   std::string ended_how(const char* when);  // the same, `when`, and the last line the child wrote to its stderr file
   std::string stderr_path_;

@@ -12,10 +12,6 @@ namespace {
 constexpr double kLargeDeviation = 1.0;          // docs/behaviour.md §T8.2 / §T10: avoidance large-deviation guard [m]
 constexpr double kFirstPathEndDistance = 1.0;    // [SP]/[GP] distance_threshold [m]
 
-bool is_enable(TurnIndicator command) {
-  return command == TurnIndicator::EnableLeft || command == TurnIndicator::EnableRight;
-}
-
 TurnIndicator centerline_start_command(const std::string& value) {
   if (value == "LEFT" || value == "Left" || value == "left") return TurnIndicator::EnableLeft;
   return TurnIndicator::EnableRight;

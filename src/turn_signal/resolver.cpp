@@ -8,10 +8,6 @@
 namespace signalsim {
 namespace {
 
-bool is_enable(TurnIndicator command) {
-  return command == TurnIndicator::EnableLeft || command == TurnIndicator::EnableRight;
-}
-
 // Front-referenced distance to a start point (docs/behaviour.md §T2: DIST(target) - base_link2front).
 double from_front(double s_target, const EgoOnRoute& ego) { return s_target - ego.s_front; }
 // Base_link-referenced distance to an end point (docs/behaviour.md §T2: plain DIST(target)).

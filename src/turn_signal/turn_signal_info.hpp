@@ -26,6 +26,11 @@ enum class RequestSource : std::uint8_t {
   Sut,   ///< not a request: a decider under test decided (docs/decider.md)
 };
 
+/// ENABLE_LEFT or ENABLE_RIGHT (not NO_COMMAND, not DISABLE).
+inline bool is_enable(TurnIndicator command) {
+  return command == TurnIndicator::EnableLeft || command == TurnIndicator::EnableRight;
+}
+
 std::string_view to_string(RequestSource source);
 std::string_view to_string(TurnIndicator command);
 

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # exec: systems under test that misbehave, on the real libsumo (docs/decider.md "JSON lines",
 # "Faults"): a command that cannot be found, a reply that is not JSON, lacks 'blinker' or has another
-# value, two lines for one step, an early exit, a crash (SIGSEGV), no answer within sut_timeout. Each
+# value, two lines for one step, an early exit, a crash (SIGSEGV), no answer within sut_timeout, SUMO
+# failing to load once the SUT has been started. Each
 # ends the run with exit 2, summary.json status "error" and one line naming the SUT and the step;
 # the SUT's stderr is kept in the run directory; in a batch the other runs still pass.
 # usage: sut_exec_faults.sh SIGNALSIM_BINARY SOURCE_DIR
@@ -54,6 +55,19 @@ run_fault judge_lacks_lights "light_judge exec:sh $data/judge_reply.sh at t=0.10
 # Whatever went wrong, the SUT's stderr is kept (the crash wrote none) and no process is left.
 [ -f "$work/crashes/decider.stderr.txt" ] || fail "crashes: no decider.stderr.txt in the run directory"
 if pgrep -f "$data/reply.sh" >/dev/null; then fail "a SUT process is still running"; fi
+
+# The SUT is started before SUMO: when SUMO cannot load the simulation, the one line is SUMO's error
+# and the SUT's process is gone.
+"$bin" run "$src/tests/batch/data/sumo_load_error.yaml" --out "$work/sumo_fails" --quiet \
+  --set "decider=exec:sh $data/reply.sh none" >/dev/null 2>"$work/sumo_fails.stderr"
+rc=$?
+if [ $rc -eq 2 ] && [ "$(wc -l <"$work/sumo_fails.stderr")" -eq 1 ] &&
+   grep -q "SUMO could not load the simulation: The lane nowhere_0" "$work/sumo_fails.stderr"; then
+  echo "ok   SUMO fails with a SUT launched: $(cat "$work/sumo_fails.stderr")"
+else
+  fail "SUMO failing with a SUT launched: exit $rc: $(cat "$work/sumo_fails.stderr")"
+fi
+if pgrep -f "$data/reply.sh none" >/dev/null; then fail "SUMO failed: the SUT process is still running"; fi
 
 # A SUT writing to stderr: the run passes, its stderr is in the run directory, not on signalsim's.
 "$bin" run "$data/good.yaml" --out "$work/stderr" --quiet >"$work/stderr.stdout" 2>"$work/stderr.stderr"

@@ -46,7 +46,7 @@ struct IntersectionLeft {
 
   StepCore core() const {
     return StepCore(CoreSetup{scenario, plan.map, lateral,
-                              with_recorded_arrows(sumo::approach_lights(net, plan.map), steps), {}, steps.start_time});
+                              with_recorded_arrows(sumo::approach_lights(net, plan.map), steps), {}, steps.start_time, {}});
   }
 };
 

@@ -119,8 +119,11 @@ TEST(StepUnderTest, ALightJudgesStopIsExecutedAndTheReferencesDecisionKept) {
   EXPECT_EQ(*judged->ref_tl_decision, JudgeDecision::Pass);
   EXPECT_EQ(judged->tl_reason, "test;  stops  here");  // a comma as ';', a quote or line break as a space
   // Never a stop point behind the front: a light whose line is passed is not asked about.
-  for (const TimelineRow& row : replayed.record.rows)
-    if (row.stop_s && row.ref_tl_decision) EXPECT_GE(*row.stop_s, row.s_front - 1e-9) << row.time;
+  for (const TimelineRow& row : replayed.record.rows) {
+    if (row.stop_s && row.ref_tl_decision) {
+      EXPECT_GE(*row.stop_s, row.s_front - 1e-9) << row.time;
+    }
+  }
   // The stop point is the reference's: the stop line less stop_margin.
   const std::vector<sumo::ApproachLight> lights = sumo::approach_lights(run.net, run.plan.map);
   ASSERT_EQ(lights.size(), 1u);
