@@ -50,6 +50,10 @@ void set_worker_entry(int (*entry)(), void (*before_first_fork)()) {
 }
 
 WorkerProcess::WorkerProcess(const std::string& program) {
+  // Only where the workers will be forks: a library that started a thread while loading turns the
+  // forks into exec'd workers (single_threaded below), which then pay the load themselves.
+  if (worker_entry && worker_before_first_fork && single_threaded())
+    std::exchange(worker_before_first_fork, nullptr)();
   int requests[2] = {-1, -1}, replies[2] = {-1, -1};
   if (pipe2(requests, O_CLOEXEC) != 0 || pipe2(replies, O_CLOEXEC) != 0) {
     const std::string reason = std::strerror(errno);
@@ -62,7 +66,6 @@ WorkerProcess::WorkerProcess(const std::string& program) {
   ChildStart how;
   how.argv = {program, "worker"};
   how.fds = {{0, requests[0]}, {kWorkerReplyFd, replies[1]}};
-  if (worker_entry && worker_before_first_fork) std::exchange(worker_before_first_fork, nullptr)();
   how.entry = worker_entry && single_threaded() ? worker_entry : nullptr;
   try {
     process_ = ChildProcess::start(how);

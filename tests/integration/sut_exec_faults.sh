@@ -57,17 +57,22 @@ run_fault judge_lacks_lights "light_judge exec:sh $data/judge_reply.sh at t=0.10
 if pgrep -f "$data/reply.sh" >/dev/null; then fail "a SUT process is still running"; fi
 
 # The SUT is started before SUMO: when SUMO cannot load the simulation, the one line is SUMO's error
-# and the SUT's process is gone.
+# and the SUT's process (one that writes its pid and would sleep a minute, whatever its stdin) is gone.
 "$bin" run "$src/tests/batch/data/sumo_load_error.yaml" --out "$work/sumo_fails" --quiet \
-  --set "decider=exec:sh $data/reply.sh none" >/dev/null 2>"$work/sumo_fails.stderr"
+  --set "decider=exec:sh -c 'echo \$\$ > $work/sut.pid; exec sleep 60'" >/dev/null 2>"$work/sumo_fails.stderr"
 rc=$?
+if [ ! -s "$work/sut.pid" ]; then
+  fail "SUMO failing with a SUT launched: the SUT was not started before SUMO"
+elif kill -0 "$(cat "$work/sut.pid")" 2>/dev/null; then
+  fail "SUMO failed: the SUT process $(cat "$work/sut.pid") is still running"
+  kill "$(cat "$work/sut.pid")"
+fi
 if [ $rc -eq 2 ] && [ "$(wc -l <"$work/sumo_fails.stderr")" -eq 1 ] &&
    grep -q "SUMO could not load the simulation: The lane nowhere_0" "$work/sumo_fails.stderr"; then
   echo "ok   SUMO fails with a SUT launched: $(cat "$work/sumo_fails.stderr")"
 else
   fail "SUMO failing with a SUT launched: exit $rc: $(cat "$work/sumo_fails.stderr")"
 fi
-if pgrep -f "$data/reply.sh none" >/dev/null; then fail "SUMO failed: the SUT process is still running"; fi
 
 # A SUT writing to stderr: the run passes, its stderr is in the run directory, not on signalsim's.
 "$bin" run "$data/good.yaml" --out "$work/stderr" --quiet >"$work/stderr.stdout" 2>"$work/stderr.stderr"

@@ -5,6 +5,7 @@ namespace {
 using Clock = long;
 bool is_on(int command) { return command > 1; }
 int scaled(int x) { return 2 * x; }
+[[noreturn]] void stop(const char* why) { throw why; }
 
 }  // namespace
 }  // namespace fixture
