@@ -61,23 +61,34 @@ void close_fd(int& fd) {
 // signalsim's own output included, fails with EPIPE instead, and a process started meanwhile
 // (sumo-gui) starts with SIGPIPE blocked, which SUMO's TraCI server ignores anyway; the SUT's own
 // process gets the default mask (the posix_spawn attributes).
-SigpipeHold::SigpipeHold() {
-  if (holders_++ > 0) return;
-  sigset_t pipe, pending;
+namespace {
+
+sigset_t sigpipe_alone() {
+  sigset_t pipe;
   sigemptyset(&pipe);
   sigaddset(&pipe, SIGPIPE);
+  return pipe;
+}
+
+bool sigpipe_pending() {
+  sigset_t pending;
   sigpending(&pending);
-  was_pending_ = sigismember(&pending, SIGPIPE) == 1;
+  return sigismember(&pending, SIGPIPE) == 1;
+}
+
+}  // namespace
+
+SigpipeHold::SigpipeHold() {
+  if (holders_++ > 0) return;
+  const sigset_t pipe = sigpipe_alone();
+  was_pending_ = sigpipe_pending();
   pthread_sigmask(SIG_BLOCK, &pipe, &old_mask_);
 }
 
 SigpipeHold::~SigpipeHold() {
   if (--holders_ > 0) return;
-  sigset_t pipe, pending;
-  sigemptyset(&pipe);
-  sigaddset(&pipe, SIGPIPE);
-  sigpending(&pending);
-  if (!was_pending_ && sigismember(&pending, SIGPIPE) == 1) {
+  if (!was_pending_ && sigpipe_pending()) {
+    const sigset_t pipe = sigpipe_alone();
     const timespec zero{0, 0};
     sigtimedwait(&pipe, nullptr, &zero);
   }
