@@ -18,6 +18,9 @@ work=$(mktemp -d)
 pid=
 trap '[ -n "$pid" ] && kill $pid 2>/dev/null; rm -rf "$work"' EXIT
 fail() { echo "FAIL: $*"; exit 1; }
+# The --timeout of the cases that time run 1 out: long enough for any other run of the sweep under
+# the sanitizers with --isolate on a loaded machine (3 s was not, at load 8).
+limit=8
 ulimit -c 0  # the SIGSEGV of (1) leaves no core file
 sweep=$src/tests/batch/data/sweep_crash.yaml
 
@@ -85,7 +88,7 @@ kill -0 "$w" 2>/dev/null && fail "the crashed worker $w still runs"
 echo "ok   a worker killed by SIGSEGV: its run is an error row, a new worker runs the rest"
 
 # (2) Run 1 past --timeout.
-"$bin" sweep "$sweep" --out "$work/slow" --jobs 1 --timeout 3 > "$work/slow.log" 2>&1 &
+"$bin" sweep "$sweep" --out "$work/slow" --jobs 1 --timeout $limit > "$work/slow.log" 2>&1 &
 pid=$!
 watch_workers "$work/slow.pids" &
 watcher=$!
@@ -95,7 +98,7 @@ wait "$pid"
 code=$?
 [ $code -eq 4 ] || fail "timeout: exit code $code, not 4 ($(tail -3 "$work/slow.log"))"
 rows "$work/slow/results.csv" > "$work/slow.rows"
-grep -qx "1 error timed out: still running after the 3 s limit (worker killed)" "$work/slow.rows" ||
+grep -qx "1 error timed out: still running after the $limit s limit (worker killed)" "$work/slow.rows" ||
   fail "run 1: $(sed -n 2p "$work/slow.rows")"
 [ "$(grep -c " passed $" "$work/slow.rows")" -eq 5 ] || fail "the other runs: $(cat "$work/slow.rows")"
 wait "$watcher"
@@ -161,11 +164,11 @@ for mode in workers isolate; do
     [ "$(cat "$out.rows")" = "0 passed " ] || fail "$mode, SIGTERM to $target: rows: $(cat "$out.rows")"
     files_of_run0 "$out" | cmp -s - "$out.run0" || fail "$mode, SIGTERM to $target: run 0's files changed"
     [ $target = both ] || continue
-    "$bin" sweep "$sweep" --out "$out" --jobs 1 $flag --resume --timeout 3 > "$out.resume.log" 2>&1
+    "$bin" sweep "$sweep" --out "$out" --jobs 1 $flag --resume --timeout $limit > "$out.resume.log" 2>&1
     rows "$out/results.csv" > "$out.rows"
     grep -q "^resuming: 1 of 6 runs already done, 5 to run" "$out.resume.log" ||
       fail "$mode, $target: --resume: $(head -1 "$out.resume.log")"
-    grep -qx "1 error timed out: still running after the 3 s limit (worker killed)" "$out.rows" ||
+    grep -qx "1 error timed out: still running after the $limit s limit (worker killed)" "$out.rows" ||
       fail "$mode, $target: --resume did not run run 1 again: $(sed -n 2p "$out.rows")"
     [ "$(grep -c " passed $" "$out.rows")" -eq 5 ] || fail "$mode, $target: --resume: $(cat "$out.rows")"
   done
