@@ -5,6 +5,7 @@
 
 #include <functional>
 
+#include "route_lanelets.hpp"
 #include "batch/comparison.hpp"
 #include "batch/csv.hpp"
 #include "report/metrics.hpp"
@@ -12,23 +13,10 @@
 namespace signalsim {
 namespace {
 
-Lanelet lanelet(const std::string& lane, double s_start, double length, TurnDirection turn = TurnDirection::None,
-                const std::string& junction = "", RoundaboutRole role = RoundaboutRole::None) {
-  Lanelet l;
-  l.lane_id = lane;
-  l.edge_id = lane.substr(0, lane.rfind('_'));
-  l.junction_id = junction;
-  l.is_internal = !junction.empty();
-  l.s_start = s_start;
-  l.length = length;
-  l.turn_direction = turn;
-  l.roundabout_role = role;
-  if (role != RoundaboutRole::None) l.roundabout_id = "0";
-  return l;
-}
+using test::lanelet;
 
 // a_0 with light T at its end | left turn J | b_0 | roundabout entry R, ring, exit R | d_0
-RouteMap route() {
+RouteMap comparison_route() {
   std::vector<Lanelet> ls = {
       lanelet("a_0", 0, 100),
       lanelet(":J_0_0", 100, 15, TurnDirection::Left, "J"),
@@ -43,7 +31,7 @@ RouteMap route() {
 }
 
 // 1 m per 0.1 s step from s = 0 to 399, the blinker as `blinker_at(s)` says, light T green.
-RunRecord record(const std::function<Blinker(double)>& blinker_at) {
+RunRecord comparison_record(const std::function<Blinker(double)>& blinker_at) {
   RunRecord r;
   r.base_link_to_front = 3.7;
   for (int i = 0; i < 400; ++i) {
@@ -71,7 +59,7 @@ DriverRun finished(const std::string& driver, const RunRecord& rec, const std::s
   run.run_dir = "runs/0000-x-" + driver;
   run.summary["status"] = status;
   run.summary["counts"] = {{"off_route_steps", rec.off_route_steps}};
-  run.summary["metrics"] = metrics_json(scenario, route(), rec);
+  run.summary["metrics"] = metrics_json(scenario, comparison_route(), rec);
   run.summary["expectations"] = nlohmann::ordered_json::array({{{"passed", true}}, {{"passed", false}}});
   nlohmann::ordered_json off_plan = nlohmann::ordered_json::array();
   for (const OffPlanStretch& o : rec.off_plan)
@@ -87,11 +75,11 @@ ScenarioComparison both() {
   ScenarioComparison sc;
   sc.scenario = "synthetic";
   sc.base_link_to_front = 3.7;
-  sc.items = compared_items(route(), TurnSignalParameters());
-  sc.runs.push_back(finished("signalsim", record([](double s) {
+  sc.items = compared_items(comparison_route(), TurnSignalParameters());
+  sc.runs.push_back(finished("signalsim", comparison_record([](double s) {
     return (s >= 40 && s <= 118) || (s >= 280 && s <= 295) ? Blinker::Left : Blinker::None;
   })));
-  RunRecord sumo = record([](double s) {
+  RunRecord sumo = comparison_record([](double s) {
     if (s >= 3 && s < 115) return Blinker::Left;
     if ((s >= 240 && s < 265) || (s >= 270 && s < 292)) return Blinker::Right;
     return Blinker::None;
@@ -108,7 +96,7 @@ std::map<std::string, std::string> cells(const std::vector<std::string>& row) {
 }
 
 TEST(Comparison, ItemsInRouteOrderTheStopLineBeforeTheTurnAtTheSameS) {
-  const auto items = compared_items(route(), TurnSignalParameters());
+  const auto items = compared_items(comparison_route(), TurnSignalParameters());
   ASSERT_EQ(items.size(), 4u);
   EXPECT_EQ(items[0].name, "light1");
   EXPECT_EQ(items[0].id, "T");

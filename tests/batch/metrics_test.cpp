@@ -3,30 +3,18 @@
 
 #include <functional>
 
+#include "route_lanelets.hpp"
 #include "report/metric_columns.hpp"
 #include "report/metrics.hpp"
 
 namespace signalsim {
 namespace {
 
-Lanelet lanelet(const std::string& lane, double s_start, double length, TurnDirection turn = TurnDirection::None,
-                const std::string& junction = "", RoundaboutRole role = RoundaboutRole::None) {
-  Lanelet l;
-  l.lane_id = lane;
-  l.edge_id = lane.substr(0, lane.rfind('_'));
-  l.junction_id = junction;
-  l.is_internal = !junction.empty();
-  l.s_start = s_start;
-  l.length = length;
-  l.turn_direction = turn;
-  l.roundabout_role = role;
-  if (role != RoundaboutRole::None) l.roundabout_id = "0";
-  return l;
-}
+using test::lanelet;
 
 // a_0 | left turn J (two internal lanes) | b_0 with light T (stopOffset 1) | straight K | c_0 |
 // roundabout entry, ring, exit | d_0
-RouteMap route() {
+RouteMap metrics_route() {
   std::vector<Lanelet> ls = {
       lanelet("a_0", 0, 100),
       lanelet(":J_0_0", 100, 5, TurnDirection::Left, "J"),
@@ -45,7 +33,7 @@ RouteMap route() {
 }
 
 // 1 m per 0.1 s step from s = 0 to 399; the blinker as `blinker_at(s)` says.
-RunRecord record(const std::function<Blinker(double)>& blinker_at) {
+RunRecord metrics_record(const std::function<Blinker(double)>& blinker_at) {
   RunRecord r;
   r.base_link_to_front = 3.7;
   for (int i = 0; i < 400; ++i) {
@@ -75,7 +63,7 @@ Blinker good_driver(double s) {
 }
 
 TEST(Metrics, SectionsComeFromTurnGroupsAndRoundaboutRoles) {
-  const auto sections = signal_sections(route(), TurnSignalParameters());
+  const auto sections = signal_sections(metrics_route(), TurnSignalParameters());
   ASSERT_EQ(sections.size(), 3u);
   EXPECT_EQ(sections[0].kind, "turn");
   EXPECT_EQ(sections[0].id, "J");
@@ -93,7 +81,7 @@ TEST(Metrics, SectionsComeFromTurnGroupsAndRoundaboutRoles) {
 // §T5.2): by a lane of the exit connection or by the normal edge the exit leads onto.
 TEST(Metrics, EntryExpectsTheBlinkerItsExitTagGivesTheExitTaken) {
   const auto entry_blinker = [](const std::string& key, const std::string& value) {
-    const RouteMap base = route();
+    const RouteMap base = metrics_route();
     std::vector<Lanelet> ls(base.lanelets().begin(), base.lanelets().end());
     ls[6].params[key] = value;  // the entry :R_0_0; the route leaves by :R_1_0 onto d
     const auto sections = signal_sections(RouteMap(std::move(ls)), TurnSignalParameters());
@@ -107,7 +95,7 @@ TEST(Metrics, EntryExpectsTheBlinkerItsExitTagGivesTheExitTaken) {
 
 TEST(Metrics, LeadTimeOnFlickersAndTheRide) {
   Scenario scenario;
-  const RunMetrics m = compute_metrics(scenario, route(), record(good_driver));
+  const RunMetrics m = compute_metrics(scenario, metrics_route(), metrics_record(good_driver));
   EXPECT_DOUBLE_EQ(m.max_decel, 2.0);
   EXPECT_DOUBLE_EQ(m.max_jerk, 20.0);
   EXPECT_EQ(m.blinker_events, 2);
@@ -133,7 +121,7 @@ TEST(Metrics, LeadTimeOnFlickersAndTheRide) {
 
 TEST(Metrics, LateAndMissingBlinkers) {
   Scenario scenario;
-  const RunMetrics late = compute_metrics(scenario, route(), record([](double s) {
+  const RunMetrics late = compute_metrics(scenario, metrics_route(), metrics_record([](double s) {
                                             return s >= 105 && s <= 118 ? Blinker::Left : Blinker::None;
                                           }));
   EXPECT_EQ(late.sections[0].missed, true);
@@ -142,22 +130,22 @@ TEST(Metrics, LateAndMissingBlinkers) {
   EXPECT_DOUBLE_EQ(*late.sections[0].time_on, 1.4);
   EXPECT_EQ(late.missed_signals, 2);  // the turn and the exit
 
-  const RunMetrics none = compute_metrics(scenario, route(), record([](double) { return Blinker::None; }));
+  const RunMetrics none = compute_metrics(scenario, metrics_route(), metrics_record([](double) { return Blinker::None; }));
   EXPECT_EQ(none.sections[0].missed, true);
   EXPECT_FALSE(none.sections[0].lead_distance.has_value());
   EXPECT_DOUBLE_EQ(*none.sections[0].time_on, 0.0);
   EXPECT_EQ(none.flickers, 0);
 
-  RunRecord short_run = record(good_driver);
+  RunRecord short_run = metrics_record(good_driver);
   short_run.rows.resize(200);  // the run ends before the roundabout
-  const RunMetrics cut = compute_metrics(scenario, route(), short_run);
+  const RunMetrics cut = compute_metrics(scenario, metrics_route(), short_run);
   EXPECT_FALSE(cut.sections[2].reached);
   EXPECT_FALSE(cut.sections[2].missed.has_value());
 }
 
 TEST(Metrics, LightsStopLineStateAndRedLightViolation) {
   Scenario scenario;
-  const RunMetrics m = compute_metrics(scenario, route(), record(good_driver));
+  const RunMetrics m = compute_metrics(scenario, metrics_route(), metrics_record(good_driver));
   ASSERT_EQ(m.lights.size(), 1u);
   EXPECT_EQ(m.lights[0].id, "T");
   EXPECT_DOUBLE_EQ(m.lights[0].stop_line_s, 199.0);
@@ -168,7 +156,7 @@ TEST(Metrics, LightsStopLineStateAndRedLightViolation) {
   EXPECT_EQ(m.red_light_violations, 1);
 
   // A stop 2 m before the stop point (an emergency stop in the dilemma zone), then green.
-  RunRecord stop = record(good_driver);
+  RunRecord stop = metrics_record(good_driver);
   for (auto& row : stop.rows) {
     if (row.s_front >= 190 && row.s_front < 199) row.tl_state = row.s_front < 198 ? 'r' : 'G';
     if (row.s_front >= 150 && row.s_front < 199) {
@@ -188,7 +176,7 @@ TEST(Metrics, LightsStopLineStateAndRedLightViolation) {
   light_stop.decision = JudgeDecision::EmergencyStop;
   light_stop.worst_level = StopLevel::Emergency;
   stop.stops.push_back(light_stop);
-  const RunMetrics s = compute_metrics(scenario, route(), stop);
+  const RunMetrics s = compute_metrics(scenario, metrics_route(), stop);
   EXPECT_DOUBLE_EQ(*s.lights[0].stop_position_error, -2.0);
   EXPECT_EQ(s.lights[0].red_light_violation, false);
   EXPECT_EQ(s.lights[0].decision, "emergency_stop");
@@ -199,7 +187,7 @@ TEST(Metrics, LightsStopLineStateAndRedLightViolation) {
 
 TEST(Metrics, JsonHasNullsForWhatDoesNotApply) {
   Scenario scenario;
-  const auto j = metrics_json(scenario, route(), record(good_driver));
+  const auto j = metrics_json(scenario, metrics_route(), metrics_record(good_driver));
   EXPECT_EQ(j["sections"][1]["lead_distance"], nullptr);
   EXPECT_EQ(j["sections"][0]["lead_distance"], 60.0);
   EXPECT_EQ(j["lights"][0]["decision"], nullptr);

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <functional>
 
+#include "route_lanelets.hpp"
 #include "batch/comparison.hpp"
 #include "batch/golden_suts.hpp"
 #include "batch/run_list.hpp"
@@ -24,21 +25,10 @@ namespace {
 namespace fs = std::filesystem;
 using test::TempDir;
 
-Lanelet lanelet(const std::string& lane, double s_start, double length, TurnDirection turn = TurnDirection::None,
-                const std::string& junction = "") {
-  Lanelet l;
-  l.lane_id = lane;
-  l.edge_id = lane.substr(0, lane.rfind('_'));
-  l.junction_id = junction;
-  l.is_internal = !junction.empty();
-  l.s_start = s_start;
-  l.length = length;
-  l.turn_direction = turn;
-  return l;
-}
+using test::lanelet;
 
 // a_0 | a left turn in J from s 100 to 115 | b_0 to s 260.
-RouteMap route() {
+RouteMap sut_route() {
   return RouteMap({lanelet("a_0", 0, 100), lanelet(":J_0_0", 100, 15, TurnDirection::Left, "J"), lanelet("b_0", 115, 145)});
 }
 
@@ -71,7 +61,7 @@ TEST(SutAgreement, DeciderAgreementAndEachSidesOnAndOffPerSection) {
   // The SUT blinks left from s 40, the reference from 70; both until the front is at 118.
   const RunRecord r = record([](double s) { return s >= 40 && s <= 118 ? Blinker::Left : Blinker::None; },
                              [](double s) { return s >= 70 && s <= 118 ? Blinker::Left : Blinker::None; });
-  const auto j = decider_agreement_json(scenario(), route(), r);
+  const auto j = decider_agreement_json(scenario(), sut_route(), r);
   EXPECT_EQ(j["name"], "lib:my_decider.so");
   EXPECT_EQ(j["steps"], 250);
   EXPECT_EQ(j["agreeing_steps"], 220);  // s 40..69 differ
@@ -89,13 +79,13 @@ TEST(SutAgreement, DeciderAgreementAndEachSidesOnAndOffPerSection) {
   EXPECT_DOUBLE_EQ(turn["reference"]["lead_distance"].get<double>(), 30.0);
   EXPECT_EQ(turn["sut"]["missed"], false);
   // The summary's metrics are the SUT's own (the rows' blinker).
-  EXPECT_DOUBLE_EQ(compute_metrics(scenario(), route(), r).sections[0].lead_distance.value(), 60.0);
+  EXPECT_DOUBLE_EQ(compute_metrics(scenario(), sut_route(), r).sections[0].lead_distance.value(), 60.0);
 }
 
 TEST(SutAgreement, ASectionTheSutMissesHasNoOnOrOff) {
   const RunRecord r = record([](double) { return Blinker::None; },
                              [](double s) { return s >= 70 && s <= 118 ? Blinker::Left : Blinker::None; });
-  const auto turn = decider_agreement_json(scenario(), route(), r)["sections"][0];
+  const auto turn = decider_agreement_json(scenario(), sut_route(), r)["sections"][0];
   EXPECT_TRUE(turn["sut"]["on_s"].is_null());
   EXPECT_TRUE(turn["sut"]["off_s"].is_null());
   EXPECT_EQ(turn["sut"]["missed"], true);
@@ -105,11 +95,11 @@ TEST(SutAgreement, ASectionTheSutMissesHasNoOnOrOff) {
 TEST(SutAgreement, AgreementRoundedToFourDecimalsAndAbsentWithoutASut) {
   RunRecord r = record([](double) { return Blinker::None; }, [](double s) { return s < 1 ? Blinker::None : Blinker::Left; });
   r.rows.resize(3);  // 1 of 3 agree
-  EXPECT_DOUBLE_EQ(decider_agreement_json(scenario(), route(), r)["agreement"].get<double>(), 0.3333);
+  EXPECT_DOUBLE_EQ(decider_agreement_json(scenario(), sut_route(), r)["agreement"].get<double>(), 0.3333);
   r.rows.resize(0);
-  EXPECT_TRUE(decider_agreement_json(scenario(), route(), r)["agreement"].is_null());
+  EXPECT_TRUE(decider_agreement_json(scenario(), sut_route(), r)["agreement"].is_null());
   r.decider_sut.clear();
-  EXPECT_TRUE(decider_agreement_json(scenario(), route(), r).is_null());
+  EXPECT_TRUE(decider_agreement_json(scenario(), sut_route(), r).is_null());
   EXPECT_TRUE(light_judge_agreement_json(r).is_null());
 }
 
@@ -261,7 +251,7 @@ TEST(SutOutputs, CompareScreenHasOneColumnPerDriverInRunOrder) {
   ScenarioComparison sc;
   sc.scenario = "synthetic";
   sc.base_link_to_front = 3.7;
-  sc.items = compared_items(route(), TurnSignalParameters());
+  sc.items = compared_items(sut_route(), TurnSignalParameters());
   for (const char* driver : {"sut", "signalsim", "sumo"}) {
     const double from = std::string(driver) == "sut" ? 40 : std::string(driver) == "signalsim" ? 70 : 90;
     RunRecord r = record([from](double s) { return s >= from && s <= 118 ? Blinker::Left : Blinker::None; },
@@ -271,7 +261,7 @@ TEST(SutOutputs, CompareScreenHasOneColumnPerDriverInRunOrder) {
     run.status = "passed";
     run.run_dir = std::string("runs/0000-x-") + driver;
     run.summary["status"] = "passed";
-    run.summary["metrics"] = metrics_json(scenario(), route(), r);
+    run.summary["metrics"] = metrics_json(scenario(), sut_route(), r);
     run.summary["expectations"] = nlohmann::ordered_json::array();
     run.timeline = r.rows;
     sc.runs.push_back(std::move(run));

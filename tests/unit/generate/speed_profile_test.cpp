@@ -12,7 +12,7 @@ namespace signalsim::generate {
 using namespace law;  // the rules: sections, speeds, expectations (src/law)
 namespace {
 
-const SpeedLimits kEgo{13.89, 1.0, 1.0};
+const SpeedLimits kEgoLimits{13.89, 1.0, 1.0};
 
 // 200 m at 13.89 m/s, a 15 m internal lane at 8 m/s, 300 m at 13.89 m/s.
 RouteMap slow_junction() {
@@ -25,7 +25,7 @@ RouteMap slow_junction() {
 
 TEST(SpeedProfile, PlannedFollowsTheLaneLimitsWithTheComfortableDeceleration) {
   const RouteMap route = slow_junction();
-  const SpeedProfile p(route, 0.0, 13.8, kEgo, 0.1, {});
+  const SpeedProfile p(route, 0.0, 13.8, kEgoLimits, 0.1, {});
   EXPECT_NEAR(p.planned(50.0), 13.89, 1e-9);   // accelerated to the top speed within a step
   EXPECT_NEAR(p.planned(130.0), 13.89, 1e-9);  // braking for 8 m/s begins at 200 - (13.89^2 - 8^2) / 2 = 135.5
   // On the braking envelope v = sqrt(8^2 + 2 * 1.0 * (200 - s)), within one step's decel.
@@ -41,7 +41,7 @@ TEST(SpeedProfile, PlannedFollowsTheLaneLimitsWithTheComfortableDeceleration) {
 
 TEST(SpeedProfile, LowerIsZeroWhereTheEgoMayBeBrakingAndARestartAfter) {
   const RouteMap route = slow_junction();
-  const SpeedProfile p(route, 0.0, 13.8, kEgo, 0.1, {{300.0, 100.0, "light X"}});
+  const SpeedProfile p(route, 0.0, 13.8, kEgoLimits, 0.1, {{300.0, 100.0, "light X"}});
   EXPECT_EQ(p.lower(250.0), 0.0);
   EXPECT_EQ(p.lower(300.0), 0.0);
   EXPECT_NEAR(p.lower(350.0), std::sqrt(2.0 * kRestartShare * 1.0 * 50.0), 1e-9);  // restarting from rest

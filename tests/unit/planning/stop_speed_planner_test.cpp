@@ -14,7 +14,7 @@
 namespace signalsim {
 namespace {
 
-constexpr double kDt = 0.1;
+constexpr double kStepLength = 0.1;
 constexpr double kLimit = 13.89;  // lane limit [m/s]
 
 struct Trace {
@@ -36,9 +36,9 @@ Trace drive(double v0, double stop_at, double after_time = 0.0,
   double x = 0.0, v = v0, a = 0.0, prev_a = 0.0;
   bool moved = v0 > 0.0;
   for (int k = 0; k < 3000; ++k) {
-    const double t = k * kDt;
-    const double limits = std::clamp(kLimit, std::max(0.0, v - kDt), v + kDt);
-    planner.begin_step(v, a, limits, kDt);
+    const double t = k * kStepLength;
+    const double limits = std::clamp(kLimit, std::max(0.0, v - kStepLength), v + kStepLength);
+    planner.begin_step(v, a, limits, kStepLength);
     const std::optional<StopLevel> level = planner.add_stop(stop_at - x);
     double v1 = planner.speed();
     planner.end_step(v1);
@@ -46,14 +46,14 @@ Trace drive(double v0, double stop_at, double after_time = 0.0,
       if (const auto c = cap(t)) v1 = std::min(v1, *c);
     }
     prev_a = a;
-    a = (v1 - v) / kDt;
-    x += v1 * kDt;
+    a = (v1 - v) / kStepLength;
+    x += v1 * kStepLength;
     v = v1;
     if (level) {
       r.only_normal = r.only_normal && *level == StopLevel::Normal;
       // The braking ramp: decelerating before and after, above walking speed (the last steps of a
       // stop and the step into a held speed are not part of it).
-      if (a < 0.0 && prev_a < 0.0 && v > 1.0) r.max_brake_jerk = std::max(r.max_brake_jerk, std::abs(a - prev_a) / kDt);
+      if (a < 0.0 && prev_a < 0.0 && v > 1.0) r.max_brake_jerk = std::max(r.max_brake_jerk, std::abs(a - prev_a) / kStepLength);
     }
     r.min_accel = std::min(r.min_accel, a);
     r.peak_speed = std::max(r.peak_speed, v);
@@ -62,7 +62,7 @@ Trace drive(double v0, double stop_at, double after_time = 0.0,
     if (moved && v < 0.01) {
       r.rested_early = stop_at - x > 0.5;
       r.rest_position = x;
-      r.rest_time = t + kDt;
+      r.rest_time = t + kStepLength;
       return r;
     }
   }
@@ -87,7 +87,7 @@ TEST(StopSpeedPlanner, AfterAnArtificialSlowDownItSpeedsUpAgainWhileAFarStopIsPe
   // before the stop. Afterwards the lane limits and the stop plan take over again.
   const auto slow_down = [](double t) -> std::optional<double> {
     if (t < 2.0 || t >= 6.0) return std::nullopt;
-    return std::max(1.0, kLimit - 4.5 * (t - 2.0 + kDt));
+    return std::max(1.0, kLimit - 4.5 * (t - 2.0 + kStepLength));
   };
   const Trace r = drive(kLimit, 350.0, 6.0, slow_down);
   EXPECT_FALSE(r.rested_early) << "came to rest far before the stop point (the issue's stop in a junction)";
@@ -120,11 +120,11 @@ TEST(StopSpeedPlanner, AtSpeedTheStopBrakesAsLateAsTheNormalLevelAllows) {
 
 TEST(StopSpeedPlanner, WithoutStopsTheLaneLimitsSpeedIsCommanded) {
   StopSpeedPlanner planner(StopPlannerParameters{}, 9.0);
-  planner.begin_step(5.0, 1.0, 5.1, kDt);
+  planner.begin_step(5.0, 1.0, 5.1, kStepLength);
   EXPECT_DOUBLE_EQ(planner.speed(), 5.1);
   EXPECT_DOUBLE_EQ(planner.start_acceleration(), 1.0) << "first step: the measured acceleration";
   planner.end_step(5.1);
-  planner.begin_step(5.3, 0.0, 5.4, kDt);  // SUMO did not follow: measured again
+  planner.begin_step(5.3, 0.0, 5.4, kStepLength);  // SUMO did not follow: measured again
   EXPECT_DOUBLE_EQ(planner.start_acceleration(), 0.0);
   EXPECT_THROW(StopSpeedPlanner(StopPlannerParameters{}, 0.0), std::invalid_argument);
 }

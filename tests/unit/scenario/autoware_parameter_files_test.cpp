@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
 
+#include "autoware_fixture.hpp"
 #include "scenario/input_error.hpp"
 #include "scenario/notes.hpp"
 #include "scenario/parameters.hpp"
@@ -17,7 +18,7 @@
 namespace signalsim {
 namespace {
 
-std::string fixture(const std::string& name) { return std::string(SIGNALSIM_SOURCE_DIR) + "/tests/data/autoware/" + name; }
+using test::fixture;
 
 using test::error_of;
 

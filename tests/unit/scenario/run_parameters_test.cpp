@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
 
+#include "autoware_fixture.hpp"
 #include "scenario/input_error.hpp"
 #include "scenario/parameters.hpp"
 #include "scenario/scenario.hpp"
@@ -17,7 +18,7 @@ namespace {
 
 using test::error_of;
 
-std::string fixture(const std::string& name) { return std::string(SIGNALSIM_SOURCE_DIR) + "/tests/data/autoware/" + name; }
+using test::fixture;
 
 const std::string kBase = "name: s\nnet: x.net.xml\nego: {route: [a], length: 5.0, base_link_to_front: 4.0}\n";
 

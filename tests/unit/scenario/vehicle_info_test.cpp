@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "autoware_fixture.hpp"
 #include "scenario/input_error.hpp"
 #include "scenario/scenario.hpp"
 #include "scenario/vehicle_info.hpp"
@@ -12,7 +13,7 @@
 namespace signalsim {
 namespace {
 
-std::string fixture(const std::string& name) { return std::string(SIGNALSIM_SOURCE_DIR) + "/tests/data/autoware/" + name; }
+using test::fixture;
 
 std::string error_of_file(const std::string& text) {
   TempDir dir("vehicle");

@@ -46,7 +46,7 @@ struct StopAtEveryLight : LightJudgeSut {
   }
 };
 
-struct IntersectionLeft {
+struct IntersectionLeftWithSuts {
   Scenario scenario = load_scenario(source_path("scenarios/intersection_left.yaml"));
   sumo::NetIndex net = sumo::NetIndex::load(scenario.net);
   sumo::RoutePlan plan = plan_route(scenario, net);
@@ -63,7 +63,7 @@ struct IntersectionLeft {
 };
 
 TEST(StepUnderTest, ADecidersBlinkerIsCommandedAndTheReferencesRecordedBesideIt) {
-  const IntersectionLeft run;
+  const IntersectionLeftWithSuts run;
   StepCore alone(run.setup());
   const Replay reference = replay(alone, run.steps);
   auto sut = std::make_shared<AlwaysLeft>();
@@ -103,7 +103,7 @@ TEST(StepUnderTest, ADecidersBlinkerIsCommandedAndTheReferencesRecordedBesideIt)
 }
 
 TEST(StepUnderTest, ALightJudgesStopIsExecutedAndTheReferencesDecisionKept) {
-  const IntersectionLeft run;
+  const IntersectionLeftWithSuts run;
   SystemsUnderTest suts;
   suts.light_judge = std::make_shared<StopAtEveryLight>();
   suts.light_judge_name = "always-stop";

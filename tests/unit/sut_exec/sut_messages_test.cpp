@@ -32,7 +32,7 @@ RouteMap two_lanelets() {
   return RouteMap({a, b});
 }
 
-std::string error_of(const std::function<void()>& f) {
+std::string reply_error_of(const std::function<void()>& f) {
   try {
     f();
   } catch (const SutReplyError& e) {
@@ -93,10 +93,10 @@ TEST(SutMessages, StepCarriesTheEgoWindowRequestAndLights) {
 TEST(SutMessages, DeciderReplies) {
   EXPECT_EQ(parse_decider_reply(R"({"blinker": "left"})"), Blinker::Left);
   EXPECT_EQ(parse_decider_reply(R"({"blinker":"hazard","why":1})"), Blinker::Hazard);
-  EXPECT_EQ(error_of([] { parse_decider_reply("left"); }), "reply is not JSON: left");
-  EXPECT_EQ(error_of([] { parse_decider_reply("[1]"); }), "reply is not a JSON object: [1]");
-  EXPECT_EQ(error_of([] { parse_decider_reply("{}"); }), "reply lacks 'blinker': {}");
-  EXPECT_EQ(error_of([] { parse_decider_reply(R"({"blinker": 2})"); }),
+  EXPECT_EQ(reply_error_of([] { parse_decider_reply("left"); }), "reply is not JSON: left");
+  EXPECT_EQ(reply_error_of([] { parse_decider_reply("[1]"); }), "reply is not a JSON object: [1]");
+  EXPECT_EQ(reply_error_of([] { parse_decider_reply("{}"); }), "reply lacks 'blinker': {}");
+  EXPECT_EQ(reply_error_of([] { parse_decider_reply(R"({"blinker": 2})"); }),
             "reply's 'blinker' is 2, not \"none\", \"left\", \"right\" or \"hazard\"");
 }
 
@@ -111,14 +111,14 @@ TEST(SutMessages, LightJudgeRepliesOnePerLightInOrder) {
   EXPECT_TRUE(answers[0].stop);
   EXPECT_EQ(answers[0].reason, "red");
   EXPECT_FALSE(answers[1].stop);
-  EXPECT_NE(error_of([&] { parse_light_judge_reply(R"({"lights": [{"tls_id": "A", "decision": "go"}]})", step); })
+  EXPECT_NE(reply_error_of([&] { parse_light_judge_reply(R"({"lights": [{"tls_id": "A", "decision": "go"}]})", step); })
                 .find("not an array of 2 answer(s)"),
             std::string::npos);
-  EXPECT_NE(error_of([&] {
+  EXPECT_NE(reply_error_of([&] {
               parse_light_judge_reply(R"({"lights": [{"tls_id": "B", "decision": "go"}, {"tls_id": "A", "decision": "go"}]})", step);
             }).find("lights[0] lacks 'tls_id' \"A\""),
             std::string::npos);
-  EXPECT_NE(error_of([&] {
+  EXPECT_NE(reply_error_of([&] {
               parse_light_judge_reply(R"({"lights": [{"tls_id": "A", "decision": "red"}, {"tls_id": "B", "decision": "go"}]})", step);
             }).find("lacks 'decision' \"stop\" or \"go\""),
             std::string::npos);

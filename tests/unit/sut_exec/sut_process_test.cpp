@@ -13,7 +13,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string error_of(const std::function<void()>& f) {
+std::string process_error_of(const std::function<void()>& f) {
   try {
     f();
   } catch (const SutProcessError& e) {
@@ -37,9 +37,9 @@ TEST(SplitCommand, QuotesAndVariablesLikeAShell) {
   ::setenv("SUT_EXEC_TEST_VAR", "v a", 1);
   EXPECT_EQ(split_command("python3 'my dir/d.py' \"$SUT_EXEC_TEST_VAR\" a\\ b"),
             (std::vector<std::string>{"python3", "my dir/d.py", "v a", "a b"}));
-  EXPECT_NE(error_of([] { split_command("python3 $(rm -rf x)"); }).find("command substitution"), std::string::npos);
-  EXPECT_NE(error_of([] { split_command("a | b"); }).find("sh -c"), std::string::npos);
-  EXPECT_EQ(error_of([] { split_command("'unbalanced"); }), "unbalanced quotes");
+  EXPECT_NE(process_error_of([] { split_command("python3 $(rm -rf x)"); }).find("command substitution"), std::string::npos);
+  EXPECT_NE(process_error_of([] { split_command("a | b"); }).find("sh -c"), std::string::npos);
+  EXPECT_EQ(process_error_of([] { split_command("'unbalanced"); }), "unbalanced quotes");
 }
 
 TEST(FindProgram, OnPathOrRelativeToTheWorkingDirectory) {
@@ -69,27 +69,27 @@ TEST(SutProcess, FaultsSayWhy) {
   {
     SutProcess p = sh(dir, "read line; exit 3");
     p.write("x\n", 5.0);
-    EXPECT_EQ(error_of([&] { p.read_line(5.0); }), "exited with status 3 before replying");
+    EXPECT_EQ(process_error_of([&] { p.read_line(5.0); }), "exited with status 3 before replying");
   }
   {
     SutProcess p = sh(dir, "read line; kill -SEGV $$");
     p.write("x\n", 5.0);
-    EXPECT_EQ(error_of([&] { p.read_line(5.0); }), "killed by signal 11 (SIGSEGV) before replying");
+    EXPECT_EQ(process_error_of([&] { p.read_line(5.0); }), "killed by signal 11 (SIGSEGV) before replying");
   }
   {
     SutProcess p = sh(dir, "read line; sleep 30");
     p.write("x\n", 5.0);
-    EXPECT_EQ(error_of([&] { p.read_line(0.2); }), "no reply within 0.2 s");
+    EXPECT_EQ(process_error_of([&] { p.read_line(0.2); }), "no reply within 0.2 s");
   }  // killed and reaped here, the sleep with it (its process group)
   {
     SutProcess p = sh(dir, "exit 4");
     const std::string big(1 << 20, 'x');  // more than a pipe holds: the write meets the closed end
-    EXPECT_EQ(error_of([&] { p.write(big + "\n", 5.0); }), "exited with status 4 before reading the message");
+    EXPECT_EQ(process_error_of([&] { p.write(big + "\n", 5.0); }), "exited with status 4 before reading the message");
   }
   {
     SutProcess p = sh(dir, "sleep 30");
     const std::string big(1 << 20, 'x');
-    EXPECT_EQ(error_of([&] { p.write(big + "\n", 0.2); }), "did not read its input within 0.2 s");
+    EXPECT_EQ(process_error_of([&] { p.write(big + "\n", 0.2); }), "did not read its input within 0.2 s");
   }
   {
     SutProcess p = sh(dir, "echo one; echo two; read line");
@@ -98,7 +98,7 @@ TEST(SutProcess, FaultsSayWhy) {
   }
   {
     SutProcess p = sh(dir, "read line; exit 1");
-    EXPECT_EQ(error_of([&] { p.write("bye\n", 5.0), p.close(5.0); }), "exited with status 1 after bye");
+    EXPECT_EQ(process_error_of([&] { p.write("bye\n", 5.0), p.close(5.0); }), "exited with status 1 after bye");
   }
 }
 

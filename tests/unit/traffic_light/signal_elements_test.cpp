@@ -4,15 +4,13 @@
 #include <cmath>
 #include <limits>
 
+#include "signal_element.hpp"
 #include "traffic_light/signal_elements.hpp"
 
 namespace signalsim {
 namespace {
 
-SignalElement el(SignalColor c, SignalShape s = SignalShape::Circle, double conf = 1.0,
-                 SignalStatus st = SignalStatus::SolidOn) {
-  return SignalElement{c, s, st, conf};
-}
+using test::el;
 
 using C = SignalColor;
 using S = SignalShape;

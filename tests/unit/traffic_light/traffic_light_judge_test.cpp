@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "signal_element.hpp"
 #include "traffic_light/judge_line.hpp"
 #include "traffic_light/traffic_light_judge.hpp"
 #include "traffic_light/traffic_light_judge_explain.hpp"
@@ -19,7 +20,7 @@ namespace {
 using C = SignalColor;
 using S = SignalShape;
 
-SignalElement el(C c, S s = S::Circle, double conf = 1.0) { return SignalElement{c, s, SignalStatus::SolidOn, conf}; }
+using test::el;
 
 SignalObservation obs(std::vector<SignalElement> e, double stamp) { return SignalObservation{std::move(e), stamp}; }
 

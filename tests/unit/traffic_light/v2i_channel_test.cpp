@@ -9,7 +9,7 @@
 namespace signalsim {
 namespace {
 
-std::vector<SignalPrediction> red_at(double stamp) {
+std::vector<SignalPrediction> red_predictions_at(double stamp) {
   return {{stamp, {SignalElement{SignalColor::Red, SignalShape::Circle, SignalStatus::SolidOn, 1.0}}}};
 }
 
@@ -19,7 +19,7 @@ std::vector<double> run(V2iChannel& channel, double until) {
   std::vector<double> out;
   for (int i = 0; i * 0.1 <= until + 1e-9; ++i) {
     const double now = i * 0.1;
-    const auto p = channel.step(red_at(100.0 + now), now);
+    const auto p = channel.step(red_predictions_at(100.0 + now), now);
     out.push_back(p.empty() ? std::nan("") : p.front().stamp);
   }
   return out;

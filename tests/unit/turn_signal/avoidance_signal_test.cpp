@@ -12,7 +12,7 @@ using test::ego_front;
 using test::request;
 using test::same_info;
 
-const BehaviorSignalParameters kParams{};
+using test::kParams;
 
 AvoidanceShiftLine line(std::uint64_t id, double s0, double s1, double a, double b) {
   return AvoidanceShiftLine{.id = id, .s_start = s0, .s_end = s1, .shift_start = a, .shift_end = b};

@@ -14,7 +14,7 @@ using test::is_empty;
 using test::is_none;
 using test::shift_input;
 
-const BehaviorSignalParameters kParams{};
+using test::kParams;
 
 // ---- the signalling result ---------------------------------------------------------------------
 

@@ -7,7 +7,7 @@
 
 namespace signalsim::test {
 
-constexpr double kB2F = 3.7;  // BehaviorSignalParameters::base_link_to_front default
+inline const BehaviorSignalParameters kParams{};  // the defaults
 
 /// Ego with its front bumper at s_front.
 inline EgoOnRoute ego_front(double s_front, double speed = 5.0, double b2f = kB2F) {

@@ -12,7 +12,7 @@ class Drive {
  public:
   Drive(const RouteMap& route, TurnSignalParameters params, double s_front = 0.0, double speed = 0.0)
       : route_(route), decider_(std::move(params)), s_front_(s_front), speed_(speed) {
-    last_ = decider_.decide(route_, ego_front(s_front_, speed_));
+    last_ = decider_.decide(route_, sketch_ego_front(s_front_, speed_));
   }
 
   /// Steps the front forward to `s_front` (at most `step` metres per cycle) and returns the decision
@@ -20,7 +20,7 @@ class Drive {
   const TurnSignalDecision& to_front(double s_front, double step = 0.5) {
     while (s_front_ < s_front) {
       s_front_ = std::min(s_front, s_front_ + step);
-      last_ = decider_.decide(route_, ego_front(s_front_, speed_));
+      last_ = decider_.decide(route_, sketch_ego_front(s_front_, speed_));
     }
     return last_;
   }

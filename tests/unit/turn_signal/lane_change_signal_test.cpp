@@ -13,7 +13,7 @@ using test::request;
 using test::same_info;
 using Phase = LaneChangeSignal::Phase;
 
-const BehaviorSignalParameters kParams{};
+using test::kParams;
 
 LaneChangeSignal::Input lc_input(Phase phase = Phase::Running) {
   LaneChangeSignal::Input in;

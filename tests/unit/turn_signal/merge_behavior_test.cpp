@@ -11,7 +11,7 @@ namespace {
 using test::ego_front;
 using test::is_empty;
 
-const BehaviorSignalParameters kParams{};
+using test::kParams;
 
 AvoidanceSignal::Input avoid(double s0, double s1, double a, double b) {
   AvoidanceSignal::Input in;

@@ -9,8 +9,8 @@ namespace {
 
 using test::ego_at_base;
 using test::request;
-constexpr auto kLeft = TurnIndicator::EnableLeft;
-constexpr auto kRight = TurnIndicator::EnableRight;
+using test::kLeft;
+using test::kRight;
 
 bool same(const TurnSignalInfo& a, const TurnSignalInfo& b) { return test::same_info(a, b); }
 
@@ -42,7 +42,7 @@ TEST(OverwriteTurnSignal, NewOneWinsWhenItStartsAtOrBeforeTheOriginalEnd) {
 
 // ---- USE_PRIOR_INFO --------------------------------------------------------------------------------
 
-const TurnSignalInfo kEmpty{};
+using test::kEmpty;
 
 TEST(UsePriorTurnSignal, EmptyWhenNeitherDesiredStartIsReached) {
   const auto original = request(kLeft, 20.0, 50.0, 30.0, 40.0);

@@ -12,7 +12,7 @@ using test::ego_front;
 using test::request;
 using test::same_info;
 
-const BehaviorSignalParameters kParams{};
+using test::kParams;
 
 PullOutSignal::Input pull_out_input(double current = -2.5, std::size_t lanelet = 3) {
   PullOutSignal::Input in;

@@ -15,9 +15,9 @@ namespace {
 
 using test::ego_at_base;
 using test::request;
-constexpr auto kLeft = TurnIndicator::EnableLeft;
-constexpr auto kRight = TurnIndicator::EnableRight;
-constexpr auto kDisable = TurnIndicator::Disable;
+using test::kLeft;
+using test::kRight;
+using test::kDisable;
 
 struct Run {
   TurnIndicator command;

@@ -10,9 +10,9 @@ namespace {
 
 using test::ego_at_base;
 using test::request;
-constexpr auto kLeft = TurnIndicator::EnableLeft;
-constexpr auto kRight = TurnIndicator::EnableRight;
-const TurnSignalInfo kEmpty{};
+using test::kLeft;
+using test::kRight;
+using test::kEmpty;
 
 TEST(SectionDistances, StartsFromTheFrontEndsFromBaseLink) {
   const EgoOnRoute ego{.s_front = 14.5, .s_base = 10.0, .speed = 0.0};

@@ -13,9 +13,9 @@
 namespace signalsim {
 namespace {
 
-constexpr auto kLeft = TurnIndicator::EnableLeft;
-constexpr auto kRight = TurnIndicator::EnableRight;
-constexpr auto kDisable = TurnIndicator::Disable;
+using test::kLeft;
+using test::kRight;
+using test::kDisable;
 
 struct UpstreamVector {
   std::string condition;

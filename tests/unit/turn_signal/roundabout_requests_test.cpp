@@ -12,13 +12,13 @@ namespace signalsim {
 namespace {
 
 using test::add_roundabout;
-using test::ego_base;
-using test::ego_front;
+using test::sketch_ego_base;
+using test::sketch_ego_front;
 using test::roundabout_params;
 using test::roundabout_route;
 using ::testing::ElementsAre;
-constexpr auto kLeft = TurnIndicator::EnableLeft;
-constexpr auto kRight = TurnIndicator::EnableRight;
+using test::kLeft;
+using test::kRight;
 
 RouteMap::Window everything(const RouteMap& route) { return {0, route.size()}; }
 
@@ -137,7 +137,7 @@ TEST(RoundaboutConnections, AConnectionSplitIntoTwoInternalLanesIsOneEntry) {
   EXPECT_EQ(all[0].back_index, 2u);
 
   RoundaboutRequests requests;
-  const auto info = requests.update(route, everything(route), ego_front(80.0), roundabout_params("Left", "None"));
+  const auto info = requests.update(route, everything(route), sketch_ego_front(80.0), roundabout_params("Left", "None"));
   EXPECT_EQ(info.turn, kLeft);
   EXPECT_DOUBLE_EQ(info.required_start, route.at(1).s_start);
   EXPECT_DOUBLE_EQ(info.desired_end, route.at(2).s_end());
@@ -167,7 +167,7 @@ TEST(RoundaboutEntry, OnEntryNoneGivesNoRequestAndStoresNothing) {
   RoundaboutRequests requests;
   const double e = route.at(r.ix.entry).s_start;
   for (double front = e - 29.0; front < route.at(r.ix.exit).s_start; front += 1.0) {
-    const auto info = requests.update(route, everything(route), ego_front(front), roundabout_params("None", "None"));
+    const auto info = requests.update(route, everything(route), sketch_ego_front(front), roundabout_params("None", "None"));
     EXPECT_EQ(info.turn, TurnIndicator::NoCommand) << front;
     EXPECT_TRUE(requests.desired_starts().empty()) << front;
   }
@@ -181,9 +181,9 @@ TEST(RoundaboutEntry, LeftOrRightFromTheStoredStartToTheEntryEnd) {
     RoundaboutRequests requests;
     const auto params = roundabout_params(setting, "None");
     // Strictly within the search distance (30 m at v = 0) of the front.
-    EXPECT_EQ(requests.update(route, everything(route), ego_front(entry.s_start - 30.0), params).turn,
+    EXPECT_EQ(requests.update(route, everything(route), sketch_ego_front(entry.s_start - 30.0), params).turn,
               TurnIndicator::NoCommand);
-    const auto info = requests.update(route, everything(route), ego_front(entry.s_start - 29.99), params);
+    const auto info = requests.update(route, everything(route), sketch_ego_front(entry.s_start - 29.99), params);
     EXPECT_EQ(info.turn, command);
     EXPECT_EQ(info.source, RequestSource::RoundaboutEntry);
     EXPECT_DOUBLE_EQ(info.desired_start, entry.s_start - 29.99 - test::kB2F);  // the ego pose (s_base) then
@@ -201,13 +201,13 @@ TEST(RoundaboutEntry, SearchDistanceGrowsWithSpeedAndTheStartIsRemembered) {
   RoundaboutRequests requests;
   const auto params = roundabout_params("Left", "None");
   // 3 s * 10 m/s + 30 m = 60 m.
-  EXPECT_EQ(requests.update(route, everything(route), ego_front(e - 60.0, 10.0), params).turn, TurnIndicator::NoCommand);
-  const double stored = requests.update(route, everything(route), ego_front(e - 59.9, 10.0), params).desired_start;
+  EXPECT_EQ(requests.update(route, everything(route), sketch_ego_front(e - 60.0, 10.0), params).turn, TurnIndicator::NoCommand);
+  const double stored = requests.update(route, everything(route), sketch_ego_front(e - 59.9, 10.0), params).desired_start;
   EXPECT_DOUBLE_EQ(stored, e - 59.9 - test::kB2F);
   // Braking shrinks the search distance: the start stays where it was.
-  EXPECT_DOUBLE_EQ(requests.update(route, everything(route), ego_front(e - 45.0, 1.0), params).desired_start, stored);
+  EXPECT_DOUBLE_EQ(requests.update(route, everything(route), sketch_ego_front(e - 45.0, 1.0), params).desired_start, stored);
   // Once registered, the entry is never filtered by distance again (even from far behind).
-  const auto far = requests.update(route, everything(route), ego_front(1.0, 0.0), params);
+  const auto far = requests.update(route, everything(route), sketch_ego_front(1.0, 0.0), params);
   EXPECT_EQ(far.turn, kLeft);
   EXPECT_DOUBLE_EQ(far.desired_start, stored);
 }
@@ -219,8 +219,8 @@ TEST(RoundaboutEntry, TurnSignalDistanceOverridesTheSearch) {
   const double e = route.at(r.ix.entry).s_start;
   RoundaboutRequests requests;
   const auto params = roundabout_params("Right", "None");
-  EXPECT_EQ(requests.update(route, everything(route), ego_front(e - 10.0, 10.0), params).turn, TurnIndicator::NoCommand);
-  EXPECT_EQ(requests.update(route, everything(route), ego_front(e - 9.9, 10.0), params).turn, kRight);
+  EXPECT_EQ(requests.update(route, everything(route), sketch_ego_front(e - 10.0, 10.0), params).turn, TurnIndicator::NoCommand);
+  EXPECT_EQ(requests.update(route, everything(route), sketch_ego_front(e - 9.9, 10.0), params).turn, kRight);
 }
 
 TEST(RoundaboutEntry, ExitTagByLaneIdOverridesOnEntryNone) {
@@ -228,14 +228,14 @@ TEST(RoundaboutEntry, ExitTagByLaneIdOverridesOnEntryNone) {
   auto second = roundabout_route(2, tags);
   const RouteMap route = second.sketch.build();
   RoundaboutRequests requests;
-  const auto info = requests.update(route, everything(route), ego_front(95.0), roundabout_params("None", "None"));
+  const auto info = requests.update(route, everything(route), sketch_ego_front(95.0), roundabout_params("None", "None"));
   EXPECT_EQ(info.turn, kLeft);
   EXPECT_EQ(info.source, RequestSource::RoundaboutEntry);
   // The same tags with the first exit: not listed, on_entry None -> no request, start forgotten.
   auto first = roundabout_route(1, tags);
   const RouteMap other = first.sketch.build();
   RoundaboutRequests none;
-  EXPECT_EQ(none.update(other, everything(other), ego_front(95.0), roundabout_params("None", "None")).turn,
+  EXPECT_EQ(none.update(other, everything(other), sketch_ego_front(95.0), roundabout_params("None", "None")).turn,
             TurnIndicator::NoCommand);
   EXPECT_TRUE(none.desired_starts().empty());
 }
@@ -245,12 +245,12 @@ TEST(RoundaboutEntry, ExitTagByEdgeIdAndLeftBeforeRight) {
   const RouteMap route = third.sketch.build();
   RoundaboutRequests requests;
   // The tag overrides on_entry whatever it is.
-  EXPECT_EQ(requests.update(route, everything(route), ego_front(95.0), roundabout_params("Left", "None")).turn, kRight);
+  EXPECT_EQ(requests.update(route, everything(route), sketch_ego_front(95.0), roundabout_params("Left", "None")).turn, kRight);
 
   auto both = roundabout_route(3, {{"exit_turn_signal_right", "out3"}, {"exit_turn_signal_left", ":N3_1_0"}});
   const RouteMap route2 = both.sketch.build();
   RoundaboutRequests requests2;
-  EXPECT_EQ(requests2.update(route2, everything(route2), ego_front(95.0), roundabout_params("Right", "None")).turn,
+  EXPECT_EQ(requests2.update(route2, everything(route2), sketch_ego_front(95.0), roundabout_params("Right", "None")).turn,
             kLeft);
 }
 
@@ -261,20 +261,20 @@ TEST(RoundaboutEntry, PersistenceKeepsTheEntryToTheEndOfTheExitLanelet) {
   const double on_ring = route.at(r.ix.ring[2]).s_start + 5.0;  // base_link on r12
 
   RoundaboutRequests off;
-  off.update(route, everything(route), ego_front(95.0), roundabout_params("Left", "Right", false));
-  EXPECT_EQ(off.update(route, everything(route), ego_base(on_ring), roundabout_params("Left", "Right", false)).turn,
+  off.update(route, everything(route), sketch_ego_front(95.0), roundabout_params("Left", "Right", false));
+  EXPECT_EQ(off.update(route, everything(route), sketch_ego_base(on_ring), roundabout_params("Left", "Right", false)).turn,
             TurnIndicator::NoCommand);
   EXPECT_TRUE(off.desired_starts().empty());  // desired end passed: erased
 
   RoundaboutRequests on;
   const auto params = roundabout_params("Left", "Right", true);
-  on.update(route, everything(route), ego_front(95.0), params);
-  const auto info = on.update(route, everything(route), ego_base(on_ring), params);
+  on.update(route, everything(route), sketch_ego_front(95.0), params);
+  const auto info = on.update(route, everything(route), sketch_ego_base(on_ring), params);
   EXPECT_EQ(info.turn, kLeft);
   EXPECT_EQ(info.source, RequestSource::RoundaboutEntry);
   EXPECT_DOUBLE_EQ(info.desired_end, exit.s_end());
   // The only queued item is returned although its required end (in the entry) is passed (§T12.1.6).
-  EXPECT_LT(info.required_end, ego_base(on_ring).s_base);
+  EXPECT_LT(info.required_end, sketch_ego_base(on_ring).s_base);
 }
 
 TEST(RoundaboutEntry, PersistentEntryIsPoppedOnceTheExitRequestIsQueued) {
@@ -283,17 +283,17 @@ TEST(RoundaboutEntry, PersistentEntryIsPoppedOnceTheExitRequestIsQueued) {
   const Lanelet& exit = route.at(r.ix.exit);
   RoundaboutRequests requests;
   const auto params = roundabout_params("Left", "Right", true);
-  requests.update(route, everything(route), ego_front(95.0), params);
+  requests.update(route, everything(route), sketch_ego_front(95.0), params);
   // The front exactly on the exit start: the exit is not queued yet (DIST - b2f >= 0).
-  auto info = requests.update(route, everything(route), ego_front(exit.s_start), params);
+  auto info = requests.update(route, everything(route), sketch_ego_front(exit.s_start), params);
   EXPECT_EQ(info.source, RequestSource::RoundaboutEntry);
   EXPECT_EQ(info.turn, kLeft);
   // Just past it: [entry, exit]; the entry's required end is passed -> popped.
-  info = requests.update(route, everything(route), ego_front(exit.s_start + 0.01), params);
+  info = requests.update(route, everything(route), sketch_ego_front(exit.s_start + 0.01), params);
   EXPECT_EQ(info.source, RequestSource::RoundaboutExit);
   EXPECT_EQ(info.turn, kRight);
   // Base_link past the exit end: both erased.
-  info = requests.update(route, everything(route), ego_base(exit.s_end() + 0.01), params);
+  info = requests.update(route, everything(route), sketch_ego_base(exit.s_end() + 0.01), params);
   EXPECT_EQ(info.turn, TurnIndicator::NoCommand);
   EXPECT_TRUE(requests.desired_starts().empty());
 }
@@ -305,9 +305,9 @@ TEST(RoundaboutEntry, PersistentEntryGivesWayToADisableExit) {
   const Lanelet& exit = route.at(r.ix.exit);
   RoundaboutRequests requests;
   const auto params = roundabout_params("Right", "None", true);
-  requests.update(route, everything(route), ego_front(95.0), params);
-  EXPECT_EQ(requests.update(route, everything(route), ego_front(exit.s_start - 1.0), params).turn, kRight);
-  const auto info = requests.update(route, everything(route), ego_front(exit.s_start + 0.5), params);
+  requests.update(route, everything(route), sketch_ego_front(95.0), params);
+  EXPECT_EQ(requests.update(route, everything(route), sketch_ego_front(exit.s_start - 1.0), params).turn, kRight);
+  const auto info = requests.update(route, everything(route), sketch_ego_front(exit.s_start + 0.5), params);
   EXPECT_EQ(info.turn, TurnIndicator::Disable);
   EXPECT_EQ(info.source, RequestSource::RoundaboutExit);
 }
@@ -318,9 +318,9 @@ TEST(RoundaboutEntry, WithoutPersistenceTheEntryLastsToItsOwnEnd) {
   const Lanelet& entry = route.at(r.ix.entry);
   RoundaboutRequests requests;
   const auto params = roundabout_params("Left", "None", false);
-  requests.update(route, everything(route), ego_front(95.0), params);
-  EXPECT_EQ(requests.update(route, everything(route), ego_base(entry.s_end()), params).turn, kLeft);  // de == 0
-  EXPECT_EQ(requests.update(route, everything(route), ego_base(entry.s_end() + 0.01), params).turn,
+  requests.update(route, everything(route), sketch_ego_front(95.0), params);
+  EXPECT_EQ(requests.update(route, everything(route), sketch_ego_base(entry.s_end()), params).turn, kLeft);  // de == 0
+  EXPECT_EQ(requests.update(route, everything(route), sketch_ego_base(entry.s_end() + 0.01), params).turn,
             TurnIndicator::NoCommand);
   EXPECT_TRUE(requests.desired_starts().empty());
 }
@@ -330,8 +330,8 @@ TEST(RoundaboutEntry, OnlyEntriesInTheWindowAreCollected) {
   const RouteMap route = r.sketch.build();
   RoundaboutRequests requests;
   const auto params = roundabout_params("Left", "None", true);
-  requests.update(route, everything(route), ego_front(95.0), params);
-  const auto on_ring = ego_base(route.at(r.ix.ring[1]).s_start + 1.0);
+  requests.update(route, everything(route), sketch_ego_front(95.0), params);
+  const auto on_ring = sketch_ego_base(route.at(r.ix.ring[1]).s_start + 1.0);
   EXPECT_EQ(requests.update(route, everything(route), on_ring, params).turn, kLeft);
   EXPECT_EQ(requests.update(route, {r.ix.ring[0], route.size()}, on_ring, params).turn, TurnIndicator::NoCommand);
 }
@@ -345,10 +345,10 @@ TEST(RoundaboutExit, StartsExactlyWhenTheFrontPassesTheExitStart) {
   RoundaboutRequests requests;
   const auto params = roundabout_params("None", "Left");
   // No search distance: nothing until the front is past the exit start, however slow or fast.
-  EXPECT_EQ(requests.update(route, everything(route), ego_front(exit.s_start - 0.01, 15.0), params).turn,
+  EXPECT_EQ(requests.update(route, everything(route), sketch_ego_front(exit.s_start - 0.01, 15.0), params).turn,
             TurnIndicator::NoCommand);
-  EXPECT_EQ(requests.update(route, everything(route), ego_front(exit.s_start), params).turn, TurnIndicator::NoCommand);
-  const auto info = requests.update(route, everything(route), ego_front(exit.s_start + 0.01), params);
+  EXPECT_EQ(requests.update(route, everything(route), sketch_ego_front(exit.s_start), params).turn, TurnIndicator::NoCommand);
+  const auto info = requests.update(route, everything(route), sketch_ego_front(exit.s_start + 0.01), params);
   EXPECT_EQ(info.turn, kLeft);
   EXPECT_EQ(info.source, RequestSource::RoundaboutExit);
   EXPECT_DOUBLE_EQ(info.desired_start, exit.s_start);  // the position, not the ego pose
@@ -365,7 +365,7 @@ TEST(RoundaboutExit, RequiredEndUsesTheRoundaboutAngleThreshold) {
   params.turn_signal_roundabout_angle_threshold_deg = 40.0;
   params.turn_signal_intersection_angle_threshold_deg = 5.0;  // not used here
   RoundaboutRequests requests;
-  const auto info = requests.update(route, everything(route), ego_front(exit.s_start + 1.0), params);
+  const auto info = requests.update(route, everything(route), sketch_ego_front(exit.s_start + 1.0), params);
   EXPECT_DOUBLE_EQ(info.required_end, exit.s_start + required_end_arc_length(exit.shape, 40.0));
   EXPECT_LT(info.required_end, exit.s_start + required_end_arc_length(exit.shape, 15.0));
 }
@@ -379,8 +379,8 @@ TEST(RoundaboutExit, EnableExitTurnSignalChainMovesTheDesiredStartBack) {
   const Lanelet& exit = route.at(r.ix.exit);
   RoundaboutRequests requests;
   const auto params = roundabout_params("None", "Left");
-  EXPECT_EQ(requests.update(route, everything(route), ego_front(chain), params).turn, TurnIndicator::NoCommand);
-  const auto info = requests.update(route, everything(route), ego_front(chain + 0.01), params);
+  EXPECT_EQ(requests.update(route, everything(route), sketch_ego_front(chain), params).turn, TurnIndicator::NoCommand);
+  const auto info = requests.update(route, everything(route), sketch_ego_front(chain + 0.01), params);
   EXPECT_EQ(info.turn, kLeft);
   EXPECT_DOUBLE_EQ(info.desired_start, chain);        // the chain's start, stored as that position
   EXPECT_DOUBLE_EQ(info.required_start, exit.s_start);  // the required section is still the exit's
@@ -393,7 +393,7 @@ TEST(RoundaboutExit, OnExitNoneIsADisableRequest) {
   const RouteMap route = r.sketch.build();
   RoundaboutRequests requests;
   const auto info =
-      requests.update(route, everything(route), ego_front(route.at(r.ix.exit).s_start + 1.0), roundabout_params("None", "None"));
+      requests.update(route, everything(route), sketch_ego_front(route.at(r.ix.exit).s_start + 1.0), roundabout_params("None", "None"));
   EXPECT_EQ(info.turn, TurnIndicator::Disable);
   EXPECT_EQ(info.source, RequestSource::RoundaboutExit);
 }
@@ -404,10 +404,10 @@ TEST(RoundaboutExit, ErasedOnceBaseLinkPassesTheExitEnd) {
   const Lanelet& exit = route.at(r.ix.exit);
   RoundaboutRequests requests;
   const auto params = roundabout_params("None", "Right");
-  requests.update(route, everything(route), ego_front(exit.s_start + 1.0), params);
+  requests.update(route, everything(route), sketch_ego_front(exit.s_start + 1.0), params);
   EXPECT_TRUE(requests.desired_starts().contains(r.ix.exit));
-  EXPECT_EQ(requests.update(route, everything(route), ego_base(exit.s_end()), params).turn, kRight);  // still (>= 0)
-  EXPECT_EQ(requests.update(route, everything(route), ego_base(exit.s_end() + 0.01), params).turn,
+  EXPECT_EQ(requests.update(route, everything(route), sketch_ego_base(exit.s_end()), params).turn, kRight);  // still (>= 0)
+  EXPECT_EQ(requests.update(route, everything(route), sketch_ego_base(exit.s_end() + 0.01), params).turn,
             TurnIndicator::NoCommand);
   EXPECT_TRUE(requests.desired_starts().empty());
 }
@@ -426,15 +426,15 @@ TEST(RoundaboutQueue, AllEntriesBeforeAllExits) {
   ASSERT_LT(route.at(second.entry).s_start - (exit1.s_start + 1.0), 30.0);
   RoundaboutRequests requests;
   const auto params = roundabout_params("Right", "Left");
-  requests.update(route, everything(route), ego_front(exit1.s_start - 1.0), params);
-  const auto info = requests.update(route, everything(route), ego_front(exit1.s_start + 1.0), params);
+  requests.update(route, everything(route), sketch_ego_front(exit1.s_start - 1.0), params);
+  const auto info = requests.update(route, everything(route), sketch_ego_front(exit1.s_start + 1.0), params);
   EXPECT_EQ(info.source, RequestSource::RoundaboutEntry);
   EXPECT_EQ(info.turn, kRight);
   EXPECT_DOUBLE_EQ(info.required_start, route.at(second.entry).s_start);
   // With on_entry None the second entry gives no request: the exit is what remains.
   RoundaboutRequests japan;
   const auto jp = roundabout_params("None", "Left");
-  const auto exit_info = japan.update(route, everything(route), ego_front(exit1.s_start + 1.0), jp);
+  const auto exit_info = japan.update(route, everything(route), sketch_ego_front(exit1.s_start + 1.0), jp);
   EXPECT_EQ(exit_info.source, RequestSource::RoundaboutExit);
   EXPECT_EQ(exit_info.turn, kLeft);
 }

@@ -11,8 +11,8 @@ namespace {
 
 using test::add_roundabout;
 using test::roundabout_params;
-constexpr auto kLeft = TurnIndicator::EnableLeft;
-constexpr auto kRight = TurnIndicator::EnableRight;
+using test::kLeft;
+using test::kRight;
 constexpr auto kOff = TurnIndicator::Disable;
 
 // A right turn lanelet (an internal lane with dir "r") and the road after it.

@@ -12,6 +12,7 @@
 #include "map/route_map.hpp"
 #include "turn_signal/turn_signal_info.hpp"
 #include "turn_signal/turn_signal_parameters.hpp"
+#include "test_helpers.hpp"  // kB2F
 
 namespace signalsim::test {
 
@@ -156,12 +157,10 @@ inline TurnSignalParameters roundabout_params(const std::string& on_entry, const
   return p;
 }
 
-constexpr double kB2F = 3.7;
-
-inline EgoOnRoute ego_front(double s_front, double speed = 0.0) {
+inline EgoOnRoute sketch_ego_front(double s_front, double speed = 0.0) {
   return EgoOnRoute{.s_front = s_front, .s_base = s_front - kB2F, .speed = speed};
 }
-inline EgoOnRoute ego_base(double s_base, double speed = 0.0) {
+inline EgoOnRoute sketch_ego_base(double s_base, double speed = 0.0) {
   return EgoOnRoute{.s_front = s_base + kB2F, .s_base = s_base, .speed = speed};
 }
 

@@ -5,6 +5,13 @@
 
 namespace signalsim::test {
 
+constexpr auto kLeft = TurnIndicator::EnableLeft;
+constexpr auto kRight = TurnIndicator::EnableRight;
+constexpr auto kDisable = TurnIndicator::Disable;
+inline const TurnSignalInfo kEmpty{};
+// BehaviorSignalParameters::base_link_to_front default (the behaviour modules' and the route sketches' ego)
+constexpr double kB2F = 3.7;
+
 constexpr double kBaseLinkToFront = 1.0;  // docs/behaviour.md §T9 setParameters(1.0, ...)
 
 inline EgoOnRoute ego_at_base(double s_base, double base_link_to_front = kBaseLinkToFront) {
