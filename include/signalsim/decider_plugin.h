@@ -128,7 +128,7 @@ typedef struct {
   size_t lanelet_index;            /* the approach lanelet (index into ss_run.lanelets) */
   double stop_line_s;              /* [m] route s of the stop line */
   double distance;                 /* [m] front bumper to the stop line (> 0 ahead) */
-  int delivered;                   /* 1: perception delivered a message this step; 0: none (keep the last) */
+  int delivered;                   /* 1: a message arrived this step (one without this light has no elements); 0: none (keep the last) */
   const ss_signal_element* elements; /* the delivered elements (none: nothing recognised) */
   size_t element_count;
   double time_to_red;              /* [s] V2I's predicted time to red of the ego's link; NaN without V2I */

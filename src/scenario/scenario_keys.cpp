@@ -92,7 +92,8 @@ const KeyTable& perception_keys() {
   static const PerceptionModelParameters d;  // the defaults
   static const KeyTable table{
       "perception",
-      "The traffic-light perception model (docs/behaviour.md §L): range, dropouts, latency, noise and blackouts.",
+      "The traffic-light perception model (docs/behaviour.md §L): range, dropouts, latency, noise, blackouts and "
+      "omissions.",
       {
           with_default_note(number_key("detection_range", d.detection_range, 0.0, 1e9, "m",
                                        "Lights farther away are not seen."),
@@ -106,6 +107,10 @@ const KeyTable& perception_keys() {
           number_key("misclassification_probability", d.misclassification_probability, 0.0, 1.0, "",
                      "Probability that a detection reports another colour."),
           shape_key("blackouts", KeyType::Intervals, "[start, end] pairs of simulated seconds without captures."),
+          number_key("omission_probability", d.omission_probability, 0.0, 1.0, "",
+                     "Probability that a captured message is delivered without the light (a stop signal once seen)."),
+          shape_key("omissions", KeyType::Intervals,
+                    "[start, end] pairs of simulated seconds in which messages are delivered without the light."),
           as_nullable(table_key("v2i", KeyType::Mapping, v2i_channel_keys(),
                                 "The V2I channel's faults (docs/behaviour.md §L1.7; with v2i.use_remaining_time); by "
                                 "default the camera's dropout, latency and blackouts.")),

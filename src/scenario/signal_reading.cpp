@@ -9,12 +9,14 @@
 namespace signalsim {
 namespace {
 
-std::vector<PerceptionModelParameters::Blackout> parse_blackouts(YamlFields& f, const YAML::Node& blackouts,
+// The intervals of key `name` of `f` (`blackouts`, `omissions`); `key` is its full path for messages.
+std::vector<PerceptionModelParameters::Blackout> parse_intervals(YamlFields& f, const std::string& name,
                                                                  const std::string& file, const std::string& key) {
   std::vector<PerceptionModelParameters::Blackout> out;
-  if (!blackouts || blackouts.IsNull()) return out;
-  if (!blackouts.IsSequence()) f.fail("blackouts", "expected a list of [start, end] pairs");
-  for (const auto& pair : blackouts) {
+  const YAML::Node intervals = f.node(name);
+  if (!intervals || intervals.IsNull()) return out;
+  if (!intervals.IsSequence()) f.fail(name, "expected a list of [start, end] pairs");
+  for (const auto& pair : intervals) {
     double a = 0.0, b = 0.0;
     if (!pair.IsSequence() || pair.size() != 2 || !YAML::convert<double>::decode(pair[0], a) ||
         !YAML::convert<double>::decode(pair[1], b) || !std::isfinite(a) || !std::isfinite(b) || !(a <= b))
@@ -30,8 +32,7 @@ V2iChannelParameters parse_v2i_channel(const YAML::Node& node, const std::string
   YamlFields f(node, file, "perception.v2i", v2i_channel_keys());
   p.dropout_probability = f.number("dropout_probability", p.dropout_probability);
   p.latency = f.number("latency", p.latency);
-  if (const YAML::Node blackouts = f.node("blackouts"))
-    p.blackouts = parse_blackouts(f, blackouts, file, "perception.v2i.blackouts");
+  if (f.node("blackouts")) p.blackouts = parse_intervals(f, "blackouts", file, "perception.v2i.blackouts");
   f.finish();
   return p;
 }
@@ -45,7 +46,9 @@ PerceptionModelParameters parse_perception(const YAML::Node& node, const std::st
   p.detections_per_light = f.integer("detections_per_light");
   p.confidence_noise = f.number("confidence_noise");
   p.misclassification_probability = f.number("misclassification_probability");
-  p.blackouts = parse_blackouts(f, f.node("blackouts"), file, "perception.blackouts");
+  p.blackouts = parse_intervals(f, "blackouts", file, "perception.blackouts");
+  p.omission_probability = f.number("omission_probability");
+  p.omissions = parse_intervals(f, "omissions", file, "perception.omissions");
   v2i.dropout_probability = p.dropout_probability;
   v2i.latency = p.latency;
   v2i.blackouts = p.blackouts;

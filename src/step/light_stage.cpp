@@ -112,11 +112,13 @@ std::vector<LightStep> TrafficLightStage::step(double now, double s_front, doubl
                          : '?';
     // docs/behaviour.md §S3: an 'o'/'O' link is not regulating: no judge, SUMO's right of way applies.
     if (const auto& truth = t.truth_of(state)) {
-      auto observation = t.perception.observe(*truth, front_to_line, now);
-      if (observation) step.observed = t.describe(observation->elements);
-      if (observation && keep_delivered_) {
+      SignalDelivery delivery = t.perception.observe(*truth, front_to_line, now);
+      if (delivery.observation) step.observed = t.describe(delivery.observation->elements);
+      if (delivery.missing_from_message) step.observed = kMissingFromMessage;
+      // A light judge under test gets a message without its light as one with nothing recognised.
+      if (delivery.delivered() && keep_delivered_) {
         step.delivered = true;
-        step.elements = observation->elements;
+        if (delivery.observation) step.elements = delivery.observation->elements;
       }
       if (!t.judge) t.judge.emplace(judge_params_);
       TrafficLightJudgeInput in;
@@ -124,7 +126,8 @@ std::vector<LightStep> TrafficLightStage::step(double now, double s_front, doubl
       in.distance_to_stop_point = distance_to_stop_point(front_to_line, judge_params_.stop_margin);
       in.velocity = speed;
       in.acceleration = accel;
-      in.observation = std::move(observation);  // not used again
+      in.observation = std::move(delivery.observation);  // not used again
+      in.missing_from_message = delivery.missing_from_message;
       in.is_vehicle_stopped = is_vehicle_stopped(speed);
       in.turn_direction = sumo::judge_turn_direction(t.light.direction);
       in.is_turn_lane = t.light.direction == TurnDirection::Left || t.light.direction == TurnDirection::Right;

@@ -22,12 +22,17 @@
 
 namespace signalsim {
 
+/// LightStep::observed (the timeline's tl_observed) of a message delivered without the light
+/// (docs/behaviour.md §L1.3).
+inline constexpr const char* kMissingFromMessage = "missing";
+
 /// One light in one step.
 struct LightStep {
   const sumo::ApproachLight* light = nullptr;
   char own_state = 0;                 ///< true state of the ego's link
   bool judged = false;                ///< the judge ran (the light regulates the ego's link)
-  std::string observed;               ///< what perception delivered this step ("" = nothing)
+  /// What perception delivered this step: "" nothing, kMissingFromMessage a message without this light.
+  std::string observed;
   double front_to_stop_line = 0.0;    ///< [m]
   TrafficLightJudgeResult result;     ///< with a light judge under test: its decision and stop point
   /// What perception delivered this step, kept for a light judge under test (keep_delivered).

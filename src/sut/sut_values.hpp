@@ -56,7 +56,7 @@ struct SutLight {
   std::size_t route_index = 0;    ///< the approach lanelet
   double stop_line_s = 0.0;       ///< [m]
   double distance = 0.0;          ///< [m] front bumper to the stop line
-  bool delivered = false;         ///< a perception message arrived this step
+  bool delivered = false;         ///< a perception message arrived this step (without this light: no elements)
   std::vector<SignalElement> elements;
   std::optional<double> time_to_red;  ///< [s] V2I's prediction, when V2I is on
 };

@@ -17,6 +17,14 @@ inline std::uint64_t splitmix64(std::uint64_t x) {
   return x ^ (x >> 31);
 }
 
+/// The streams of the fault models. A light's camera and V2I channel share one seed (step/light_stage),
+/// so every stream has its own index here.
+inline constexpr std::uint64_t kCameraDropoutStream = 1;
+inline constexpr std::uint64_t kMisclassificationStream = 2;
+inline constexpr std::uint64_t kConfidenceStream = 3;
+inline constexpr std::uint64_t kV2iDropoutStream = 4;
+inline constexpr std::uint64_t kOmissionStream = 5;
+
 /// The seed of stream `stream` of a model seeded with `seed`.
 inline std::uint64_t stream_seed(std::uint64_t seed, std::uint64_t stream) { return splitmix64(splitmix64(seed) ^ stream); }
 

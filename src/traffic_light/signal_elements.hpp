@@ -99,8 +99,8 @@ bool is_traffic_signal_stop(LaneTurnDirection turn_direction, const std::vector<
 
 /// docs/behaviour.md §L1.4 `isTrafficSignalRedStop` (the V2I helper of §L1.7): a RED CIRCLE is present and,
 /// for a lane with a turn direction (an intersection lanelet), no GREEN arrow of that direction is
-/// (the Decision of is_traffic_signal_stop: arrows count only when green). A lane of direction
-/// `Else` ignores arrows: a red circle is a red stop. Never throws.
+/// (arrows count only when green, as in the reference's newest version, docs/behaviour.md §L1.4). A
+/// lane of direction `Else` ignores arrows: a red circle is a red stop. Never throws.
 bool is_traffic_signal_red_stop(LaneTurnDirection turn_direction, const std::vector<SignalElement>& elements);
 
 /// docs/behaviour.md §L1.4 step 1 / §L1.8: some element is a GREEN CIRCLE.

@@ -29,6 +29,9 @@ void require_finite_input(const TrafficLightJudgeInput& in) {
   require_finite(in.acceleration, "acceleration");
   if (in.distance_to_stop_point) require_finite(*in.distance_to_stop_point, "distance_to_stop_point");
   if (in.observation) require_finite(in.observation->stamp, "observation stamp");
+  if (in.observation && in.missing_from_message) {
+    throw std::invalid_argument("TrafficLightJudge: an observation cannot be missing from its message");
+  }
 }
 
 }  // namespace
@@ -99,6 +102,7 @@ bool TrafficLightJudge::is_stop_signal(const TrafficLightJudgeInput& in, std::in
   std::swap(previous_looking_, looking_);
   const std::vector<SignalElement>& previous = previous_looking_;
   // updateTrafficSignal: the module looks up the node's latest observation (docs/behaviour.md §L1.3).
+  // Left out of the latest message (or never received), nothing is looked at and the stamp stays.
   if (received_) {
     stamp_ns_ = to_ns(received_->stamp);
     highest_confidence_per_shape(received_->elements, looking_);  // Decision: highest reliability
@@ -139,7 +143,12 @@ bool TrafficLightJudge::is_stop_signal(const TrafficLightJudgeInput& in, std::in
 TrafficLightJudgeResult TrafficLightJudge::step(const TrafficLightJudgeInput& in) {
   require_finite_input(in);  // before touching any state
   const std::int64_t now_ns = to_ns(in.now);
-  if (in.observation) received_ = *in.observation;
+  // docs/behaviour.md §L1.3: the node's map holds only the groups of the latest message.
+  if (in.observation) {
+    received_ = *in.observation;
+  } else if (in.missing_from_message) {
+    received_.reset();
+  }
 
   TrafficLightJudgeResult r;
   r.previous_state = state_;
@@ -187,6 +196,7 @@ void TrafficLightJudge::enter_go_out() {
 void TrafficLightJudge::approach(const TrafficLightJudgeInput& in, std::int64_t now_ns, TrafficLightJudgeResult& r) {
   r.is_stop_signal = is_stop_signal(in, now_ns, r.verdict);  // 3.3
   r.looked_at = looking_;
+  r.missing_from_message = stamp_ns_ && !received_;
   if (stamp_ns_) r.signal_age = static_cast<double>(now_ns - *stamp_ns_) * 1e-9;
   const std::int64_t elapsed_ns = run_stop_signal_timer(r.is_stop_signal, now_ns);  // 3.4
   r.stop_signal_elapsed = static_cast<double>(elapsed_ns) * 1e-9;

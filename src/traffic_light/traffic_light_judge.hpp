@@ -12,6 +12,8 @@
 // ---------------------------------------------------------------------------------------------
 //   if in.observation:                      // a result was delivered this step (docs/behaviour.md §L1.3)
 //       received := in.observation          // like the node's signal map: kept until replaced
+//   else if in.missing_from_message:        // a message was delivered without this light
+//       received := none                    // the map is rebuilt from each message; stamp kept
 //   if d is empty:                          // STEP 1: the path does not cross the stop line
 //       return None                         //   no state change
 //   judge_dist := calc_judge_line_dist_with_jerk_limit(v, a0, max_accel, max_jerk,
@@ -51,6 +53,7 @@
 //   IS_STOP_SIGNAL():                                                       (docs/behaviour.md §L1.3, §L1.8)
 //       previous := looking
 //       if received: stamp := received.stamp; looking := highest_confidence_per_shape(received)
+//       else: looking := []                 // left out of the latest message (stamp untouched)
 //       if stamp unset:               return not is_simulation     // row 1: never received
 //       if now - stamp > tl_state_timeout:  return true            // row 2: timed out
 //       if enable_arrow_aware_yellow_passing:                      // row 3 (docs/behaviour.md §L1.8)
@@ -70,6 +73,9 @@
 // - Observations. An absent observation means "nothing new was delivered": the last one stays in
 //   force and ages towards the timeout (the node keeps the last message). An observation with no
 //   elements means "delivered, nothing recognised" and is a stop signal (docs/behaviour.md §L1.3 notes).
+//   A message delivered without this light (missing_from_message) clears what was received but not
+//   its stamp: a stop signal while the stamp is fresh, timed out later, never received if there was
+//   none (docs/behaviour.md §L1.3, the reference's updateTrafficSignal).
 // - Stop vs EmergencyStop is fixed when a stop is first inserted and held while the latch holds, so
 //   the last metres of a normal stop (where the judge line, with its 0.5 s dead time, exceeds d)
 //   are not relabelled as an emergency. A stop inserted while not stoppable is an EmergencyStop also
@@ -203,8 +209,12 @@ struct TrafficLightJudgeInput {
   double velocity = 0.0;      ///< [m/s] v, signed, not clamped (docs/behaviour.md §L2.1)
   double acceleration = 0.0;  ///< [m/s^2] a0, positive = speeding up (docs/behaviour.md §L2.1)
   /// The perception result delivered this step, if any. Absent: nothing new (the previous one stays
-  /// in force and ages). Present with no elements: delivered but nothing recognised (stop).
+  /// in force and ages), unless missing_from_message. Present with no elements: delivered but
+  /// nothing recognised (stop).
   std::optional<SignalObservation> observation;
+  /// A message was delivered this step without this light (docs/behaviour.md §L1.3): what was received
+  /// is dropped, its stamp kept. Only with no observation.
+  bool missing_from_message = false;
   bool is_vehicle_stopped = false;  ///< see is_vehicle_stopped(v) (docs/behaviour.md §L1.6)
   LaneTurnDirection turn_direction = LaneTurnDirection::Else;  ///< of the lane owning the light
   bool is_turn_lane = false;      ///< lane turn_direction is left/right (docs/behaviour.md §L1.8 map fact)
@@ -251,6 +261,9 @@ struct TrafficLightJudgeResult {
   /// age of their observation, now - stamp [s] (0 when never received). For explain().
   std::vector<SignalElement> looked_at;
   double signal_age = 0.0;
+  /// When IS_STOP_SIGNAL ran: the light was left out of the latest delivered message, so nothing was
+  /// looked at (docs/behaviour.md §L1.3).
+  bool missing_from_message = false;
 };
 
 class TrafficLightJudge {
@@ -261,7 +274,8 @@ class TrafficLightJudge {
   /// Runs one planning cycle (algorithm at the top of this file) and returns its result. It formats
   /// no text: explain() (traffic_light_judge_explain.hpp) tells why, from the result.
   /// Throws std::invalid_argument if now, velocity, acceleration or a present distance is not
-  /// finite; the judge's state is then unchanged.
+  /// finite, or if an observation comes with missing_from_message; the judge's state is then
+  /// unchanged.
   TrafficLightJudgeResult step(const TrafficLightJudgeInput& in);
 
   /// Back to the state of a freshly constructed judge (APPROACH, nothing received).
@@ -295,7 +309,8 @@ class TrafficLightJudge {
   std::int64_t release_confirmation_ns_ = 0;
   std::optional<std::int64_t> release_start_ns_;  ///< when the go evidence of a latched stop began
 
-  std::optional<SignalObservation> received_;   ///< last delivered observation (node-level map)
+  std::optional<SignalObservation> received_;   ///< last delivered observation (node-level map); none
+                                                ///< also after a message without this light
   std::optional<std::int64_t> stamp_ns_;        ///< stamp of the observation last looked at
   std::vector<SignalElement> looking_;          ///< reduced elements last looked at
   std::vector<SignalElement> previous_looking_;  ///< those of the step before (is_stop_signal's buffer)

@@ -57,6 +57,7 @@ std::string explain_signal(const TrafficLightJudgeResult& r, const TrafficLightJ
       return "go signal " + describe_elements(r.looked_at) + " for a " + std::string(to_string(in.turn_direction)) +
              " lane";
     case SignalVerdict::Stop:
+      if (r.missing_from_message) return "stop signal: the light was left out of the latest message";
       return "stop signal " + describe_elements(r.looked_at) + " for a " + std::string(to_string(in.turn_direction)) +
              " lane";
     case SignalVerdict::NotEvaluated:

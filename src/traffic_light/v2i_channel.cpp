@@ -10,10 +10,6 @@
 
 namespace signalsim {
 
-namespace {
-constexpr std::uint64_t kDropoutStream = 4;  // the camera uses streams 1-3 (perception_model.cpp)
-}  // namespace
-
 void validate(const V2iChannelParameters& p) {
   const auto fail = [](const std::string& what) { throw std::invalid_argument("v2i channel parameter " + what); };
   if (!(p.dropout_probability >= 0.0 && p.dropout_probability <= 1.0)) fail("dropout_probability must be in [0, 1]");
@@ -30,7 +26,7 @@ V2iChannel::V2iChannel(const V2iChannelParameters& params) : params_(params) {
   validate(params_);
   latency_ns_ = to_ns(params_.latency);
   max_age_ns_ = to_ns(params_.max_age);
-  dropout_rng_.seed(seeded::stream_seed(params_.seed, kDropoutStream));
+  dropout_rng_.seed(seeded::stream_seed(params_.seed, seeded::kV2iDropoutStream));
 }
 
 std::vector<SignalPrediction> V2iChannel::step(const std::vector<SignalPrediction>& predictions, double now) {

@@ -153,6 +153,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       o.elements = elements(in);
       o.stamp = in.ConsumeBool() ? now : any_double(in, now - 3.0, now + 0.5);
       x.observation = o;
+    } else {
+      x.missing_from_message = in.ConsumeBool();  // a message without the light (docs/behaviour.md §L1.3)
     }
     x.is_vehicle_stopped = in.ConsumeBool() ? is_vehicle_stopped(v) : in.ConsumeBool();
     x.turn_direction = static_cast<LaneTurnDirection>(in.ConsumeIntegralInRange<int>(0, 3));

@@ -50,6 +50,9 @@ check no_subcommand -- "signalsim"
 check duplicate_key run "$bad/duplicate_key.yaml" -- "duplicate_key.yaml:7" "duplicate key 'ego.max_speed'"
 check depart_beyond_edge run "$bad/depart_beyond_edge.yaml" -- "depart_beyond_edge.yaml" "ego.depart_pos" "beyond"
 check bidi_two_lane_route run "$bad/bidi_two_lane_route.yaml" -- "bidi_two_lane_route.yaml" "edge 'ab' (2 lanes) is bidirectional with 'ba'" "SUMO 1.15 aborts"
+check omission_key_misspelt run "$bad/omission_key_misspelt.yaml" -- "omission_key_misspelt.yaml:6" "unknown key 'perception.omision_probability'"
+check omission_out_of_range run "$bad/omission_out_of_range.yaml" -- "omission_out_of_range.yaml:6" "key 'perception.omission_probability'" "out of range"
+check omission_interval_reversed run "$bad/omission_interval_reversed.yaml" -- "omission_interval_reversed.yaml:6" "key 'perception.omissions'" "start <= end"
 check unknown_light_offset run "$bad/unknown_light_offset.yaml" -- "unknown_light_offset.yaml" "light_offsets" "'ZZ'"
 # A SUMO error mid-run, into a directory that holds a finished run: the old files must not survive.
 "$bin" run "$src/scenarios/intersection_left.yaml" --out "$work/mid_run_sumo_error" --quiet >/dev/null

@@ -133,6 +133,42 @@ TEST(TrafficLightScenarios, BlackoutTimesOutIntoAStop) {
   EXPECT_TRUE(r.arrived) << "green is seen again after the blackout and the ego goes";
 }
 
+// docs/behaviour.md §L1.3: from 10 s to 40 s every message is delivered without light C. Unlike a
+// blackout (no message, the green in force until the 1 s timeout) the judge stops at once: stop
+// signals at 10.0, 10.1, 10.2 s, and the third is strictly past the 0.1 s hysteresis.
+TEST(TrafficLightScenarios, LightLeftOutOfTheMessagesStopsAtOnce) {
+  const RunRecord r = run(bundled("tl_light_missing_from_message"));
+  const TimelineRow* stop = first_stop(r);
+  ASSERT_NE(stop, nullptr);
+  EXPECT_NEAR(stop->time, 10.2, 1e-9) << "a blackout over the same time stops at 11.3 s";
+  EXPECT_EQ(stop->tl_decision, JudgeDecision::Stop);
+  for (const TimelineRow& row : r.rows)
+    if (row.time >= 10.0 && row.time <= 40.0) {
+      EXPECT_EQ(row.tl_observed, "missing") << "t=" << row.time;
+    }
+  ASSERT_EQ(r.stops.size(), 1u);
+  EXPECT_EQ(r.stops[0].tl_id, "C");
+  EXPECT_NEAR(r.stops[0].stop_s, 389.6, 1e-6) << "the stop point of light C (stop_margin 0)";
+  EXPECT_LE(std::abs(r.stops[0].error), 0.3) << "at rest at the stop point";
+  EXPECT_LT(r.stops[0].time, 40.0) << "at rest while the light is left out";
+  EXPECT_TRUE(r.red_violations.empty());
+  EXPECT_TRUE(r.arrived) << "green is in the messages again after 40 s and the ego goes";
+}
+
+// A short gap of 0.5 s: with no message the last green stays in force; with messages that leave
+// the light out the judge decides a stop, released when the green is back.
+TEST(TrafficLightScenarios, AShortGapStopsOnlyWhenTheMessagesLeaveTheLightOut) {
+  const RunRecord left_out =
+      run(bundled("tl_light_missing_from_message"), {{"perception.omissions=[[10, 10.5]]"}});
+  const TimelineRow* stop = first_stop(left_out);
+  ASSERT_NE(stop, nullptr);
+  EXPECT_NEAR(stop->time, 10.2, 1e-9);
+  EXPECT_TRUE(left_out.stops.empty()) << "released at 10.6 s, long before the line";
+  const RunRecord silent = run(bundled("tl_light_missing_from_message"),
+                               {{"perception.omissions=[]", "perception.blackouts=[[10, 10.5]]"}});
+  EXPECT_EQ(first_stop(silent), nullptr) << "the green of 9.9 s is 0.7 s old at most: in force";
+}
+
 TEST(TrafficLightScenarios, LightNeverDetectedIsPassed) {
   const RunRecord r = run(bundled("tl_light_out_of_range"));
   EXPECT_EQ(first_stop(r), nullptr) << "never received -> pass with is_simulation (docs/behaviour.md §L1.3 row 1)";

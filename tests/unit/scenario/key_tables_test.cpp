@@ -139,6 +139,9 @@ TEST(KeyTables, TheLoaderReadsEveryKey) {
   EXPECT_EQ(s.ego.depart_lane, 0);
   EXPECT_EQ(std::filesystem::path(s.ego.vehicle_info).filename(), "vehicle_info.param.yaml");
   EXPECT_EQ(s.perception.detections_per_light, 2);
+  EXPECT_DOUBLE_EQ(s.perception.omission_probability, 0.05);
+  ASSERT_EQ(s.perception.omissions.size(), 1u);
+  EXPECT_DOUBLE_EQ(s.perception.omissions[0].end, 15.0);
   EXPECT_DOUBLE_EQ(s.v2i_channel.latency, 0.5);
   EXPECT_EQ(s.v2i_channel.blackouts.size(), 1u);
   EXPECT_DOUBLE_EQ(s.light_offsets.at("C"), 2.5);

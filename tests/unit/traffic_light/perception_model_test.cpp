@@ -27,7 +27,7 @@ std::vector<std::optional<SignalObservation>> run(PerceptionModel& model, int st
   std::vector<std::optional<SignalObservation>> out;
   double t = 0.0;
   for (int k = 0; k < steps; ++k) {
-    out.push_back(model.observe(kTruth, distance, t));
+    out.push_back(model.observe(kTruth, distance, t).observation);
     t += 0.1;
   }
   return out;
@@ -57,7 +57,7 @@ TEST(PerceptionModel, AllFaultsOffPassesTheTruthThrough) {
   PerceptionModel model;
   double t = 0.0;
   for (int k = 0; k < 100; ++k) {
-    const auto o = model.observe(kTruth, 1e6 * (k % 3) - 50.0, t);
+    const auto o = model.observe(kTruth, 1e6 * (k % 3) - 50.0, t).observation;
     ASSERT_TRUE(o.has_value());
     EXPECT_EQ(o->elements, kTruth);
     EXPECT_EQ(o->stamp, t);
@@ -97,11 +97,11 @@ TEST(PerceptionModel, DetectionRange) {
   PerceptionModelParameters p;
   p.detection_range = 100.0;
   PerceptionModel model(p);
-  EXPECT_TRUE(model.observe(kTruth, 100.0, 0.0).has_value());   // inclusive
-  EXPECT_FALSE(model.observe(kTruth, std::nextafter(100.0, 200.0), 0.1).has_value());
-  EXPECT_TRUE(model.observe(kTruth, -5.0, 0.2).has_value());    // |distance|
-  EXPECT_FALSE(model.observe(kTruth, -150.0, 0.3).has_value());
-  EXPECT_FALSE(model.observe(kTruth, std::numeric_limits<double>::infinity(), 0.4).has_value());
+  EXPECT_TRUE(model.observe(kTruth, 100.0, 0.0).observation.has_value());   // inclusive
+  EXPECT_FALSE(model.observe(kTruth, std::nextafter(100.0, 200.0), 0.1).observation.has_value());
+  EXPECT_TRUE(model.observe(kTruth, -5.0, 0.2).observation.has_value());    // |distance|
+  EXPECT_FALSE(model.observe(kTruth, -150.0, 0.3).observation.has_value());
+  EXPECT_FALSE(model.observe(kTruth, std::numeric_limits<double>::infinity(), 0.4).observation.has_value());
 }
 
 TEST(PerceptionModel, DropoutProbability) {
@@ -128,7 +128,7 @@ TEST(PerceptionModel, LatencyDeliversLateWithTheCaptureStamp) {
   double t = 0.0;
   std::vector<double> captures;
   for (int k = 0; k < 20; ++k) {
-    const auto o = model.observe(kTruth, 10.0, t);
+    const auto o = model.observe(kTruth, 10.0, t).observation;
     captures.push_back(t);
     if (k < 3) {
       EXPECT_FALSE(o.has_value()) << k;
@@ -147,10 +147,10 @@ TEST(PerceptionModel, LatencyNewestDueCaptureWins) {
   PerceptionModelParameters p;
   p.latency = 0.5;
   PerceptionModel model(p);
-  EXPECT_FALSE(model.observe(kTruth, 10.0, 0.0));
-  EXPECT_FALSE(model.observe(kTruth, 10.0, 0.1));
-  EXPECT_FALSE(model.observe(kTruth, 10.0, 0.2));
-  const auto o = model.observe(kTruth, 10.0, 0.7);  // captures at 0.0, 0.1, 0.2 are due
+  EXPECT_FALSE(model.observe(kTruth, 10.0, 0.0).observation);
+  EXPECT_FALSE(model.observe(kTruth, 10.0, 0.1).observation);
+  EXPECT_FALSE(model.observe(kTruth, 10.0, 0.2).observation);
+  const auto o = model.observe(kTruth, 10.0, 0.7).observation;  // captures at 0.0, 0.1, 0.2 are due
   ASSERT_TRUE(o.has_value());
   EXPECT_EQ(o->stamp, 0.2);
   EXPECT_EQ(model.pending(), 1u);  // the capture at 0.7
@@ -218,7 +218,7 @@ TEST(PerceptionModel, ScheduledBlackoutsAreInclusiveAndApplyToTheCapture) {
   PerceptionModel model(p);
   double t = 0.0;
   for (int k = 0; k <= 40; ++k) {
-    const auto o = model.observe(kTruth, 10.0, t);
+    const auto o = model.observe(kTruth, 10.0, t).observation;
     const bool dark = (k >= 10 && k <= 20) || k == 30;
     EXPECT_EQ(o.has_value(), !dark) << "t = " << t;
     t += 0.1;
@@ -229,7 +229,7 @@ TEST(PerceptionModel, ScheduledBlackoutsAreInclusiveAndApplyToTheCapture) {
   std::optional<SignalObservation> at_1_2;
   t = 0.0;
   for (int k = 0; k <= 12; ++k) {
-    const auto o = late.observe(kTruth, 10.0, t);
+    const auto o = late.observe(kTruth, 10.0, t).observation;
     if (k == 12) at_1_2 = o;
     t += 0.1;
   }
@@ -353,7 +353,7 @@ TEST(PerceptionModel, InvalidParametersAndInputsThrow) {
   EXPECT_THROW(model.observe(kTruth, 10.0, 0.9), std::invalid_argument);
   EXPECT_THROW(model.observe(kTruth, std::numeric_limits<double>::quiet_NaN(), 1.1), std::invalid_argument);
   EXPECT_THROW(model.observe(kTruth, 10.0, std::numeric_limits<double>::infinity()), std::invalid_argument);
-  EXPECT_TRUE(model.observe(kTruth, 10.0, 1.0).has_value());  // same time again is fine
+  EXPECT_TRUE(model.observe(kTruth, 10.0, 1.0).observation.has_value());  // same time again is fine
 }
 
 TEST(PerceptionModelWithJudge, ABlackoutLongerThanTheTimeoutStopsTheEgo) {
@@ -373,7 +373,7 @@ TEST(PerceptionModelWithJudge, ABlackoutLongerThanTheTimeoutStopsTheEgo) {
     in.now = t;
     in.distance_to_stop_point = 200.0;  // far: a stop is always stoppable
     in.velocity = 10.0;
-    in.observation = perception.observe(green, 200.0, t);
+    in.observation = perception.observe(green, 200.0, t).observation;
     const auto r = judge.step(in);
     if (r.verdict == SignalVerdict::TimedOut && first_timeout < 0) first_timeout = t;
     if (r.decision == JudgeDecision::Stop && first_stop < 0) first_stop = t;
