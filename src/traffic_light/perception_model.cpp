@@ -1,7 +1,7 @@
 #include "traffic_light/perception_model.hpp"
 
+#include "core/time_ns.hpp"
 #include "traffic_light/seeded_stream.hpp"
-#include "traffic_light/time_ns.hpp"
 
 #include <algorithm>
 #include <array>
