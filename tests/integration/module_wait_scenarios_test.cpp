@@ -116,7 +116,7 @@ TEST(AvoidanceWaitScenario, StopOnApprovalStandsThreeSecondsWithTheBlinkerThenAv
 }
 
 TEST(AvoidanceWaitScenario, ApprovedAtOnceNeitherStopsNorChangesTheBlinker) {
-  // Without a delay every policy is avoidance_left: the same rows, blinker and speed, step by step.
+  // Without a delay every policy is avoidance_left: the same rows, blinker, speed and offset, step by step.
   const ManeuverRun left = test::run_bundled("avoidance_left");
   for (const char* name : {"avoidance_candidate_none", "avoidance_candidate_all", "avoidance_stop_on_approval"}) {
     const ManeuverRun r = test::run_bundled(name, {"maneuvers=[{avoid: {obstacle: parked, clearance: 1.0}}]"});
@@ -124,6 +124,7 @@ TEST(AvoidanceWaitScenario, ApprovedAtOnceNeitherStopsNorChangesTheBlinker) {
     for (std::size_t i = 0; i < r.record.rows.size(); ++i) {
       EXPECT_EQ(r.record.rows[i].blinker, left.record.rows[i].blinker) << name << " t=" << r.record.rows[i].time;
       EXPECT_EQ(r.record.rows[i].speed, left.record.rows[i].speed) << name << " t=" << r.record.rows[i].time;
+      EXPECT_EQ(r.record.rows[i].lateral_offset, left.record.rows[i].lateral_offset) << name;
     }
   }
 }

@@ -9,21 +9,22 @@ namespace signalsim {
 namespace {
 
 TEST(PullOutDeparture, HoldsUntilEngagedThenForThePrepareTime) {
-  PullOutDeparture d(1.4, 2.0);  // the run starts at 0.4 s, engage_delay 1 s
-  d.observe(0.4, true);
-  EXPECT_FALSE(d.engaged(0.4));
-  EXPECT_TRUE(d.holds(0.4));
-  EXPECT_FALSE(d.time_since_first_engaged_forward(0.4));  // not engaged: none
-  d.observe(1.4, true);
-  EXPECT_TRUE(d.engaged(1.4));
-  EXPECT_DOUBLE_EQ(*d.time_since_first_engaged_forward(1.4), 0.0);
-  EXPECT_TRUE(d.holds(1.4));
+  PullOutDeparture d(1.3, 2.0);  // the run starts at 0.3 s, engage_delay 1 s
+  d.observe(0.3, true);
+  EXPECT_FALSE(d.engaged(0.3));
+  EXPECT_TRUE(d.holds(0.3));
+  EXPECT_FALSE(d.time_since_first_engaged_forward(0.3));  // not engaged: none
+  d.observe(1.3, true);
+  EXPECT_TRUE(d.engaged(1.3));
+  EXPECT_DOUBLE_EQ(*d.time_since_first_engaged_forward(1.3), 0.0);
+  EXPECT_TRUE(d.holds(1.3));
+  d.observe(3.2, true);
+  EXPECT_TRUE(d.holds(3.2));  // 1.9 s
   d.observe(3.3, true);
-  EXPECT_TRUE(d.holds(3.3));  // 1.9 s
-  d.observe(3.4, true);
-  // 3.4 - 1.4 is 1.9999999999999998 in doubles: whole nanoseconds give 2.0, which is not < 2.0.
-  EXPECT_EQ(*d.time_since_first_engaged_forward(3.4), 2.0);
-  EXPECT_FALSE(d.holds(3.4));
+  // 3.3 - 1.3 is 1.9999999999999998 in doubles: whole nanoseconds give 2.0, which is not < 2.0 (the
+  // start planner's centre-line test compares this value with prepare_time_before_start too).
+  EXPECT_EQ(*d.time_since_first_engaged_forward(3.3), 2.0);
+  EXPECT_FALSE(d.holds(3.3));
 }
 
 TEST(PullOutDeparture, WithoutAPrepareTimeOnlyEngagementHolds) {

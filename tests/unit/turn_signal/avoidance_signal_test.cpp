@@ -198,15 +198,26 @@ AvoidanceSignal::Input waiting(CandidateTurnSignalPolicy policy) {
   return in;
 }
 
+// A previous request the avoidance's own would overwrite (it ends after the shift starts).
+TurnSignalInfo overwritten() { return request(TurnIndicator::EnableRight, 0, 200, 10, 150, RequestSource::PullOut); }
+
 TEST(AvoidanceWaitingApproval, NoneAndStopOnApprovalPassThePreviousRequest) {
-  const auto previous = request(TurnIndicator::EnableRight, 0, 50, 10, 40, RequestSource::PullOut);
   for (const auto policy : {CandidateTurnSignalPolicy::None, CandidateTurnSignalPolicy::StopOnApproval}) {
     AvoidanceSignal module;
-    // Moving and at rest, the front within the prep distance of the shift start: still the previous request.
-    EXPECT_PRED2(same_info, module.update(previous, waiting(policy), ego_front(95.0, 5.0), kParams), previous);
-    EXPECT_PRED2(same_info, module.update(previous, waiting(policy), ego_front(99.0, 0.0), kParams), previous);
+    // Moving and at rest, the front within the prep distance of the shift start: still the previous
+    // request (EMPTY, or one the registered lines' request would replace).
+    EXPECT_PRED2(same_info, module.update(TurnSignalInfo{}, waiting(policy), ego_front(95.0, 5.0), kParams),
+                 TurnSignalInfo{});
+    EXPECT_PRED2(same_info, module.update(TurnSignalInfo{}, waiting(policy), ego_front(99.0, 0.0), kParams),
+                 TurnSignalInfo{});
+    EXPECT_PRED2(same_info, module.update(overwritten(), waiting(policy), ego_front(99.0, 0.0), kParams), overwritten());
     EXPECT_TRUE(module.ignored_ids().empty());
   }
+  // Registered, the same lines replace that request.
+  AvoidanceSignal running;
+  auto in = waiting(CandidateTurnSignalPolicy::None);
+  in.phase = AvoidanceSignal::Phase::Running;
+  EXPECT_EQ(running.update(overwritten(), in, ego_front(99.0, 0.0), kParams).turn, TurnIndicator::EnableLeft);
 }
 
 TEST(AvoidanceWaitingApproval, StoppedCandidateSignalsOnlyBelowPointThreeMetresPerSecond) {
@@ -217,9 +228,8 @@ TEST(AvoidanceWaitingApproval, StoppedCandidateSignalsOnlyBelowPointThreeMetresP
   EXPECT_EQ(at_rest.source, RequestSource::Avoidance);
   EXPECT_EQ(at_rest.required_start, 100.0);
   EXPECT_EQ(at_rest.required_end, 120.0);
-  const auto previous = request(TurnIndicator::EnableRight, 0, 50, 10, 40, RequestSource::PullOut);
-  EXPECT_PRED2(same_info, module.update(previous, in, ego_front(99.0, 0.3), kParams), previous);  // not < 0.3
-  EXPECT_PRED2(same_info, module.update(previous, in, ego_front(99.0, -0.3), kParams), previous);
+  EXPECT_PRED2(same_info, module.update(overwritten(), in, ego_front(99.0, 0.3), kParams), overwritten());  // not < 0.3
+  EXPECT_PRED2(same_info, module.update(TurnSignalInfo{}, in, ego_front(99.0, -0.3), kParams), TurnSignalInfo{});
   EXPECT_EQ(module.update(TurnSignalInfo{}, in, ego_front(99.0, -0.29), kParams).turn, TurnIndicator::EnableLeft);
 }
 
