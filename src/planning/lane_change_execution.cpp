@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "planning/operator_approval.hpp"
+
 namespace signalsim {
 
 const char* to_string(LaneChangePhase phase) {
@@ -61,8 +63,8 @@ bool LaneChangeExecution::update(const Step& step) {
       step.s_base > timing_.latest_start + kLatestStartTolerance)
     phase_ = LaneChangePhase::Missed;
   if (phase_ == LaneChangePhase::WaitingApproval) {
-    const double blinker_on = step.blinker_on_since ? step.now - *step.blinker_on_since : 0.0;
-    if (blinker_on >= timing_.approval_delay - 1e-9 && target_lane_clear(step)) {
+    const double since = step.blinker_on_since.value_or(step.now);
+    if (approval_due(step.now, since, timing_.approval_delay) && target_lane_clear(step)) {
       approved_ = line_from(candidate_start(step));  // the path is fixed from here on
       approval_ = Approval{step.now, step.s_base, step.prepare_duration, step.blinker_on_since};
       phase_ = LaneChangePhase::Running;

@@ -4,8 +4,8 @@
 //   Pending          the module is not running yet (its blinker is off); the ego keeps its lane.
 //   WaitingApproval  the module signals (waiting-for-approval request); the ego keeps its lane. It is
 //                    approved at the first step where the approval delay has passed since the
-//                    blinker came on (an operator's RTC approval; 0 = automatic) and the target lane
-//                    is clear of other vehicles around the candidate path.
+//                    blinker came on (an operator's RTC approval, operator_approval.hpp; 0 =
+//                    automatic) and the target lane is clear of other vehicles around the candidate path.
 //   Running          the path is fixed at approval: a prepare segment on the original lane (the
 //                    distance driven in prepare_duration at the current speed and acceleration,
 //                    Autoware's v*t + a*t^2/2, capped at the maximum speed and at standstill), then

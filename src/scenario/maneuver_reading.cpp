@@ -13,6 +13,7 @@ AvoidManeuver read_avoid(const YamlFields& fields) {
   a.clearance = fields.number("clearance");
   a.side = fields.choice("side");
   a.length = fields.number("length");
+  a.approval_delay = fields.number("approval_delay");
   fields.finish();
   return a;
 }
@@ -23,6 +24,7 @@ PullOutManeuver read_pull_out(const YamlFields& fields) {
   m.length = fields.number("length");
   m.at = fields.number("at");
   m.backward = fields.number("backward");
+  m.engage_delay = fields.number("engage_delay");
   fields.finish();
   return m;
 }
@@ -92,6 +94,7 @@ void read_maneuvers(const YamlFields& top, const std::string& path, Scenario& s)
       s.avoids.push_back(read_avoid(fields));
     } else if (kind == "pull_out") {
       s.pull_out = read_pull_out(fields);
+      s.pull_out->line = yaml_line(item);
     } else if (kind == "pull_over") {
       s.pull_over = read_pull_over(fields);
     } else {

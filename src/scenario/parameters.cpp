@@ -176,10 +176,14 @@ BehaviorSignalParameters behavior_parameters(const ParameterSet& set, const Turn
   p.max_longitudinal_acc = set.number("max_longitudinal_acc");
   p.lane_change_required_end_at_boundary = set.boolean("lane_change_required_end_at_boundary");
   p.max_prepare_time = set.number("max_prepare_time");
+  // The schema admits only the four names (a file with another gets its line and the choices).
+  p.candidate_path_turn_signal = candidate_turn_signal_policy(set.text("candidate_path_turn_signal")).value();
+  p.turn_signal_on_approval_hold_duration = set.number("turn_signal_on_approval_hold_duration");
   p.turn_signal_on_centerline_start = set.text("turn_signal_on_centerline_start");
   p.minimum_shift_length = set.number("minimum_shift_length");
   p.th_distance_to_middle_of_the_road = set.number("th_distance_to_middle_of_the_road");
   p.prepare_time_before_start = set.number("prepare_time_before_start");
+  p.enable_back = set.boolean("enable_back");
   return p;
 }
 

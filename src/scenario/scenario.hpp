@@ -104,16 +104,19 @@ struct ObstacleSpec {
 };
 inline constexpr double kObstacleWidth = vehicle_defaults::kWidth;  ///< [m] SUMO DEFAULT_VEHTYPE
 
-/// `maneuvers: [{avoid: {obstacle, clearance, side, length}}]`: pass a declared obstacle standing on
-/// the ego's planned lane: shift out, hold, shift back (planning/shift_line.hpp plan_avoidance).
+/// `maneuvers: [{avoid: {obstacle, clearance, side, length, approval_delay}}]`: pass a declared
+/// obstacle standing on the ego's planned lane: shift out, hold, shift back
+/// (planning/shift_line.hpp plan_avoidance). Approval comes `approval_delay` seconds after the module
+/// began to wait (planning/avoidance_execution.hpp); until then the ego waits before the shift.
 struct AvoidManeuver {
   std::string obstacle;
   double clearance = 1.0;    ///< lateral gap between the ego's side and the obstacle [m]
   std::string side = "auto"; ///< auto (left), left, right
   double length = 0.0;       ///< > 0: each shift is this long [m]; 0: from jerk/accel limits at max_speed
+  double approval_delay = 0.0;  ///< [s] after the module began to wait (an operator's RTC approval)
 };
 
-/// `maneuvers: [{pull_out: {offset, length, at}}]`: the ego departs `offset` metres beside its lane's
+/// `maneuvers: [{pull_out: {offset, length, at, backward, engage_delay}}]`: the ego departs `offset` metres beside its lane's
 /// centre (the road side; SUMO departPosLat) and shifts back to the centre over `length` metres from
 /// base_link's route s `at` (default: its depart position). Only on the first edge.
 struct PullOutManeuver {
@@ -123,6 +126,10 @@ struct PullOutManeuver {
   /// > 0: first back up this far along the lane at kBackwardSpeed (emulated: SUMO moves the ego back
   /// with Vehicle::moveTo; the decider sees a negative speed, not driving forward: hazard lights).
   double backward = 0.0;  ///< [m]
+  /// [s] after the run's first step the ego is engaged (Autoware's AUTONOMOUS mode); it stands still
+  /// until then (planning/pull_out_departure.hpp).
+  double engage_delay = 0.0;
+  int line = 0;  ///< the scenario file's line of the maneuver (0: unknown)
 };
 inline constexpr double kBackwardSpeed = 1.0;  ///< [m/s] emulated backing-up speed
 

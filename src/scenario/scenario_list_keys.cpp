@@ -17,6 +17,11 @@ KeySpec lead_key() {
 }
 KeySpec from_s_key() { return required_number_key("from_s", -1e6, 1e9, "m", "Start of the stretch (route s, front bumper)."); }
 KeySpec to_s_key() { return required_number_key("to_s", -1e6, 1e9, "m", "End of the stretch, at least from_s."); }
+// An operator's RTC approval of a module's maneuver (planning/operator_approval.hpp), counted from `since`.
+KeySpec approval_delay_key(double default_value, const std::string& since) {
+  return number_key("approval_delay", default_value, 0.0, 3600.0, "s",
+                    "Approval comes this long after " + since + " (an operator's RTC approval; 0: at once).");
+}
 
 const KeyTable& lane_change_keys() {
   static const LaneChangeManeuver d;
@@ -36,8 +41,7 @@ const KeyTable& lane_change_keys() {
           required_number_key("at", 0.0, 1e6, "m", "base_link's earliest start of the lateral motion (route s; on "
                                                    "edge with edge)."),
           number_key("length", kDefaultLaneChangeLength, 1.0, 10000.0, "m", "Route s over which the ego shifts one lane."),
-          number_key("approval_delay", d.approval_delay, 0.0, 3600.0, "s",
-                     "Approval comes this long after the blinker (an operator's RTC approval)."),
+          approval_delay_key(d.approval_delay, "the blinker"),
       }};
   return table;
 }
@@ -53,6 +57,7 @@ const KeyTable& avoid_keys() {
           text_key_or("side", d.side, "The side to pass on (auto: left).", {"auto", "left", "right"}),
           number_key("length", d.length, 0.0, 10000.0, "m",
                      "Each shift's length; 0: from the jerk and acceleration limits at max_speed."),
+          approval_delay_key(d.approval_delay, "the module began to wait (the ego waits before the shift)"),
       }};
   return table;
 }
@@ -68,6 +73,9 @@ const KeyTable& pull_out_keys() {
           with_default_note(number_key("at", d.at, 0.0, 1e6, "m", "Route s of base_link where the shift starts."),
                             "the depart position (minus backward)"),
           number_key("backward", d.backward, 0.0, 1000.0, "m", "First back up this far (hazard lights)."),
+          number_key("engage_delay", d.engage_delay, 0.0, 3600.0, "s",
+                     "The ego is engaged (Autoware's autonomous mode) this long after the run starts; it stands "
+                     "still until then."),
       }};
   return table;
 }

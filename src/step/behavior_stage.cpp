@@ -25,20 +25,30 @@ BehaviorSignalInput signal_input(const LateralSegment& seg, const BehaviorStage:
   return in;
 }
 
-// Avoidance: every shift line of its plan (ids from the segment's first), and the shift planned at the ego.
-void add_avoidance(const LateralSegment& seg, double planned_shift_at_ego, const BehaviorSignalInput& signal,
-                   ModuleInputs& in) {
+// Keeps the nearest of this step's holds.
+void add_hold(BehaviorStage::Result& result, std::optional<double> distance, const char* reason) {
+  if (distance && (!result.hold || *distance < result.hold->distance)) result.hold = BehaviorStage::Hold{*distance, reason};
+}
+
+// Avoidance: every shift line of its plan (ids from the segment's first; registered, or the candidate
+// lines while waiting for approval), the shift that path plans at the ego, the phase and the policy.
+void add_avoidance(const LateralSegment& seg, bool waiting, CandidateTurnSignalPolicy policy,
+                   double planned_shift_at_ego, const BehaviorSignalInput& signal, ModuleInputs& in) {
   for (std::size_t k = 0; k < seg.plan.lines().size(); ++k) {
     const ShiftLine& line = seg.plan.lines()[k];
     in.avoidance.shift_lines.push_back({seg.first_line_id + k, line.s_start, line.s_end, line.shift_start, line.shift_end});
   }
+  in.avoidance.phase = waiting ? AvoidanceSignal::Phase::WaitingApproval : AvoidanceSignal::Phase::Running;
+  in.avoidance.policy = policy;
   in.avoidance.planned_shift_at_ego = planned_shift_at_ego;
   in.avoidance.signal = signal;
   in.requests.avoidance = &in.avoidance;
 }
 
-// Pull out: its shift line, whether the ego drives forward and has departed ([SP]).
-void add_pull_out(const LateralSegment& seg, const BehaviorStage::Observation& o, const BehaviorSignalInput& signal,
+// Pull out: its shift line, whether the ego drives forward and has departed ([SP]), the time since it
+// first drove forward engaged, and whether it may back up.
+void add_pull_out(const LateralSegment& seg, const BehaviorStage::Observation& o,
+                  std::optional<double> since_engaged_forward, bool enable_back, const BehaviorSignalInput& signal,
                   ModuleInputs& in) {
   const ShiftLine& line = seg.plan.lines().front();
   PullOutSignal::Input& pull_out = in.pull_out;
@@ -48,6 +58,8 @@ void add_pull_out(const LateralSegment& seg, const BehaviorStage::Observation& o
   pull_out.shift_at_end = line.shift_end;
   pull_out.driving_forward = !o.backing;
   pull_out.override_ego_stopped_check = !o.departed;  // [SP]: not yet departed
+  pull_out.time_since_first_engaged_forward = since_engaged_forward;
+  pull_out.enable_back = enable_back;
   pull_out.closest_lanelet = seg.route_index;
   pull_out.signal = signal;
   in.requests.pull_out = &pull_out;
@@ -71,8 +83,15 @@ void add_pull_over(const LateralSegment& seg, const BehaviorSignalInput& signal,
 
 BehaviorStage::BehaviorStage(LateralPlan plan, const BehaviorSignalParameters& params,
                              const BehaviorStageConfig& config)
-    : plan_(std::move(plan)), params_(params), config_(config) {
-  for (const LateralSegment& seg : plan_.segments) executions_.emplace_back(seg.lane_change, config.gaps);
+    : plan_(std::move(plan)),
+      params_(params),
+      config_(config),
+      departure_(config.start_time + plan_.engage_delay, params.prepare_time_before_start) {
+  const bool stop_on_approval = params.candidate_path_turn_signal == CandidateTurnSignalPolicy::StopOnApproval;
+  for (const LateralSegment& seg : plan_.segments) {
+    executions_.emplace_back(seg.lane_change, config.gaps);
+    avoidances_.emplace_back(seg.avoidance, stop_on_approval, params.turn_signal_on_approval_hold_duration);
+  }
 }
 
 const LaneChangeExecution* BehaviorStage::execution_of(const LateralSegment& seg) const {
@@ -87,6 +106,8 @@ double BehaviorStage::planned_offset(const LateralSegment& seg, double s, bool b
     const auto& line = lc->approved_line();
     return line ? line->offset_at(s) : seg.lane_change.shift_start;
   }
+  const auto index = static_cast<std::size_t>(&seg - plan_.segments.data());
+  if (seg.kind == LateralKind::Avoidance && !avoidances_.at(index).approved()) return seg.plan.lines().front().shift_start;
   return seg.plan.offset_at(s);
 }
 
@@ -115,6 +136,7 @@ BehaviorStage::Result BehaviorStage::step(const Observation& o) {
                         std::min(config_.route_length, ego.s_base + config_.path_forward)};
   ModuleInputs in;
   in.requests.now = o.now;
+  Result result;
   const std::size_t lc = current_lane_change(ego.s_base);
   LaneChangeExecution::Step lc_step;
   if (lc < plan_.segments.size()) {
@@ -124,13 +146,11 @@ BehaviorStage::Result BehaviorStage::step(const Observation& o) {
   for (const LateralSegment& seg : plan_.segments) {
     if (seg.kind == LateralKind::Avoidance && !in.requests.avoidance && seg.plan.lines().back().s_end >= ego.s_base &&
         seg.plan.lines().back().s_end <= path.back)
-      add_avoidance(seg, o.segment == &seg ? planned_offset(seg, ego.s_base, o.backing) : 0.0,
-                    signal_input(seg, o, path), in);
+      run_avoidance(seg, o, path, in, result);
     if (seg.kind == LateralKind::PullOut && o.segment == &seg && ego.s_base <= seg.plan.lines().back().s_end)
-      add_pull_out(seg, o, signal_input(seg, o, path), in);
+      run_pull_out(seg, o, path, in, result);
     if (seg.kind == LateralKind::PullOver && seg.goal_s <= path.back) add_pull_over(seg, signal_input(seg, o, path), in);
   }
-  Result result;
   result.behavior = merge_behavior_requests(modules_, in.requests, ego, params_);
   if (lc < plan_.segments.size()) advance_lane_change(lc, lc_step, o, result);
   return result;
@@ -197,7 +217,34 @@ void BehaviorStage::advance_lane_change(std::size_t index, LaneChangeExecution::
     // Done or given up: the next lane change starts afresh.
     if (to == LaneChangePhase::Done || to == LaneChangePhase::Missed) modules_.lane_change.reset();
   }
-  result.hold_distance = execution.distance_to_hold_point(o.ego.s_base);
+  add_hold(result, execution.distance_to_hold_point(o.ego.s_base), "the hold point of a lane change waiting for approval");
+}
+
+// The avoidance's phase moves on before its module runs (an approval or a release is seen by the step
+// it comes in, docs/behaviour.md §T8.2 "Avoidance"); then its module input, and the wait point or the
+// hold on approval. While waiting the module sees the candidate path's offset at the ego.
+void BehaviorStage::run_avoidance(const LateralSegment& seg, const Observation& o, const ModulePath& path,
+                                  ModuleInputs& in, Result& result) {
+  AvoidanceExecution& execution = avoidances_.at(static_cast<std::size_t>(&seg - plan_.segments.data()));
+  execution.update({o.now, o.ego.s_base, std::abs(o.ego.speed) < AvoidanceSignal::kStoppedSpeed});
+  const double planned_shift_at_ego = o.segment == &seg ? seg.plan.offset_at(o.ego.s_base) : 0.0;
+  add_avoidance(seg, execution.phase() == AvoidancePhase::WaitingApproval, params_.candidate_path_turn_signal,
+                planned_shift_at_ego, signal_input(seg, o, path), in);
+  add_hold(result, execution.distance_to_hold_point(o.ego.s_base),
+           execution.phase() == AvoidancePhase::Holding ? "an approved avoidance holding with its blinker (stop_on_approval)"
+                                                        : "the wait point of an avoidance waiting for approval");
+}
+
+// The start planner: its clock sees the step first (Autoware's updateData), then the module runs; it
+// holds the ego before engagement and for prepare_time_before_start after (docs/behaviour.md §T8.2 "Pull out").
+void BehaviorStage::run_pull_out(const LateralSegment& seg, const Observation& o, const ModulePath& path,
+                                 ModuleInputs& in, Result& result) {
+  departure_.observe(o.now, !o.backing);
+  add_pull_out(seg, o, departure_.time_since_first_engaged_forward(o.now), params_.enable_back,
+               signal_input(seg, o, path), in);
+  if (departure_.holds(o.now))
+    add_hold(result, 0.0, departure_.engaged(o.now) ? "the start planner's wait before starting (prepare_time_before_start)"
+                                                    : "the start planner before engagement (engage_delay)");
 }
 
 std::vector<LaneChangeRecord> BehaviorStage::lane_change_records() const {

@@ -9,8 +9,10 @@
 //   path (forward_path_length ahead of base_link), until base_link passes its lateral motion's end;
 //   the module is reset after each lane change, so the next one starts afresh;
 // - avoidance: once its whole plan lies within the module path (Autoware registers shift lines only
-//   for objects within the path), until its last line is behind base_link;
-// - start planner (pull out): from departure until base_link passes the pull-out end;
+//   for objects within the path), until its last line is behind base_link; its lines count from
+//   approval (waiting, holding: planning/avoidance_execution.hpp);
+// - start planner (pull out): from the run's start until base_link passes the pull-out end; it holds
+//   the ego before engagement and for prepare_time_before_start after (planning/pull_out_departure.hpp);
 // - goal planner (pull over): once the pull-over goal lies within the module path.
 // No SUMO here: the stage names the lane whose traffic it may need (waiting_lane_change) and is handed
 // that traffic with the step's observation.
@@ -21,7 +23,9 @@
 #include <vector>
 
 #include "core/vehicle_defaults.hpp"
+#include "planning/avoidance_execution.hpp"
 #include "planning/lane_change_execution.hpp"
+#include "planning/pull_out_departure.hpp"
 #include "step/route_planning.hpp"
 #include "report/timeline.hpp"
 #include "turn_signal/behavior_modules.hpp"
@@ -34,6 +38,7 @@ struct BehaviorStageConfig {
   double vehicle_length = vehicle_defaults::kLength;  ///< [m]
   double max_speed = vehicle_defaults::kMaxSpeed;  ///< [m/s] the ego's (the lane change's prepare segment)
   LaneChangeGaps gaps;           ///< the lane-change approval's target-lane margins
+  double start_time = 0.0;       ///< [s] SUMO time of the run's first step (a pull out's engagement counts from it)
 };
 
 /// The behaviour modules' path of one step [m route s]: from 5 m behind base_link to
@@ -75,10 +80,15 @@ class BehaviorStage {
     LaneChangePhase from = LaneChangePhase::Pending;
     LaneChangePhase to = LaneChangePhase::Pending;
   };
+  /// A module holds the ego: base_link must come to rest within `distance` [m].
+  struct Hold {
+    double distance = 0.0;
+    const char* reason = "";  ///< what holds it ("the hold point of a lane change waiting for approval", ...)
+  };
   struct Result {
     TurnSignalInfo behavior;               ///< the merged request for the decider
     std::vector<Transition> transitions;   ///< lane-change phase changes this step
-    std::optional<double> hold_distance;   ///< [m] base_link must come to rest within this (a lane change not yet approved)
+    std::optional<Hold> hold;              ///< the nearest hold of this step, if any
   };
 
   /// The lane change whose target lane's traffic a step with base_link at `s_base` may need: the one
@@ -89,13 +99,17 @@ class BehaviorStage {
   Result step(const Observation& observation);
 
   /// The offset `seg` plans for base_link at s (left positive, from its reference lane's centre).
-  /// Backing up: the pull out's road-side offset. A lane change not yet approved: its original lane.
+  /// Backing up: the pull out's road-side offset. A lane change or an avoidance not yet approved:
+  /// its original lane.
   double planned_offset(const LateralSegment& seg, double s, bool backing) const;
 
   const LateralPlan& plan() const { return plan_; }
 
   /// Every lane change of the plan as executed so far, in route order.
   std::vector<LaneChangeRecord> lane_change_records() const;
+
+  /// The ego is engaged at `now` (planning/pull_out_departure.hpp); always without a pull out.
+  bool engaged(double now) const { return departure_.engaged(now); }
 
  private:
   const LaneChangeExecution* execution_of(const LateralSegment& seg) const;
@@ -106,12 +120,18 @@ class BehaviorStage {
   void add_lane_change(const LateralSegment& seg, LaneChangeExecution& execution, const LaneChangeExecution::Step& step,
                        const ModulePath& path, ModuleInputs& in) const;
   void advance_lane_change(std::size_t index, LaneChangeExecution::Step step, const Observation& o, Result& result);
+  void run_avoidance(const LateralSegment& seg, const Observation& o, const ModulePath& path, ModuleInputs& in,
+                     Result& result);
+  void run_pull_out(const LateralSegment& seg, const Observation& o, const ModulePath& path, ModuleInputs& in,
+                    Result& result);
 
   LateralPlan plan_;
   BehaviorSignalParameters params_;
   BehaviorStageConfig config_;
   BehaviorModules modules_;
   std::vector<LaneChangeExecution> executions_;  ///< one per segment (used by lane changes only)
+  std::vector<AvoidanceExecution> avoidances_;   ///< one per segment (used by avoidances only)
+  PullOutDeparture departure_;                   ///< the pull out's clock (engaged from the start without one)
 };
 
 /// The lateral motions the metrics measure, ordered by start: each lane change's executed line

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "scenario/input_error.hpp"
+#include "step/maneuver_segments.hpp"
 #include "turn_signal/behavior_modules.hpp"
 #include "turn_signal/exit_signal_marking.hpp"
 
@@ -214,69 +215,6 @@ std::vector<LateralSegment> plan_lane_changes(const Scenario& scenario, const su
   return out;
 }
 
-LateralSegment plan_avoid(const Scenario& scenario, const sumo::RoutePlan& plan, const AvoidManeuver& avoid,
-                          std::size_t index) {
-  const std::string where = "maneuvers: avoid '" + avoid.obstacle + "': ";
-  const ObstacleSpec* obstacle = nullptr;
-  for (const ObstacleSpec& o : scenario.obstacles)
-    if (o.id == avoid.obstacle) obstacle = &o;
-  if (obstacle == nullptr) fail(scenario, where + "no such obstacle in 'obstacles'");
-  const auto route_index = plan.map.find_edge(obstacle->edge);
-  if (!route_index) fail(scenario, where + "edge '" + obstacle->edge + "' is not on the ego's route");
-  const Lanelet& lanelet = plan.map.at(*route_index);
-  const std::string lane_id = obstacle->edge + "_" + std::to_string(obstacle->lane);
-  if (lanelet.lane_id != lane_id)
-    fail(scenario, where + "it stands on " + lane_id + ", not on the ego's planned lane " + lanelet.lane_id);
-  if (obstacle->pos > lanelet.length || obstacle->pos < obstacle->length)
-    fail(scenario, where + "its position must lie between its length and the lane length");
-  const double b2f = scenario.ego.base_link_to_front;
-  AvoidanceRequest request;
-  request.s_object_start = lanelet.s_start + obstacle->pos - obstacle->length;
-  request.s_object_end = lanelet.s_start + obstacle->pos;
-  request.object_left = 0.5 * kObstacleWidth;
-  request.object_right = -0.5 * kObstacleWidth;
-  request.clearance = avoid.clearance;
-  request.vehicle_width = kObstacleWidth;  // the ego uses SUMO's default width too
-  request.side = avoid.side == "left" ? AvoidSide::Left : avoid.side == "right" ? AvoidSide::Right : AvoidSide::Auto;
-  request.base_link_to_front = b2f;
-  request.rear_overhang = scenario.ego.length - b2f;
-  request.speed = scenario.ego.max_speed;
-  if (avoid.length > 0.0) request.lengths.fixed_length = avoid.length;
-  LateralSegment seg;
-  seg.kind = LateralKind::Avoidance;
-  seg.route_index = *route_index;
-  seg.edge = lanelet.edge_id;
-  seg.reference_lane = lanelet.lane_id;
-  seg.left_half_width = seg.right_half_width = 0.5 * lanelet.width;
-  seg.plan = plan_avoidance(request);
-  seg.first_line_id = 1000 * (index + 1);
-  const double first_s = seg.plan.lines().front().s_start;
-  const double last_s = seg.plan.lines().back().s_end;
-  if (first_s < lanelet.s_start || last_s + b2f > lanelet.s_end()) {
-    std::ostringstream out;
-    out << where << "the avoidance (base_link " << first_s << " to " << last_s << " m) must start and end while the "
-        << "ego is on edge '" << seg.edge << "' (route s " << lanelet.s_start << " to " << lanelet.s_end()
-        << " m, front bumper included); move the obstacle or shorten the shifts (length)";
-    fail(scenario, out.str());
-  }
-  return seg;
-}
-
-// A plan must start and end while base_link and the front are on the segment's edge.
-void check_within_edge(const Scenario& scenario, const LateralSegment& seg, const Lanelet& lanelet,
-                       const std::string& what) {
-  const double b2f = scenario.ego.base_link_to_front;
-  const double first_s = seg.plan.lines().front().s_start;
-  const double last_s = seg.plan.lines().back().s_end;
-  if (first_s < lanelet.s_start - 1e-9 || last_s + b2f > lanelet.s_end()) {
-    std::ostringstream out;
-    out << "maneuvers: " << what << " (base_link " << first_s << " to " << last_s << " m) must start and end while "
-        << "the ego is on edge '" << seg.edge << "' (route s " << lanelet.s_start << " to " << lanelet.s_end()
-        << " m, front bumper included)";
-    fail(scenario, out.str());
-  }
-}
-
 }  // namespace
 
 LateralPlan plan_lateral(const Scenario& scenario, const sumo::RoutePlan& plan, const sumo::NetIndex& net) {
@@ -290,51 +228,20 @@ LateralPlan plan_lateral(const Scenario& scenario, const sumo::RoutePlan& plan, 
     if (o.pos > edge->lanes[static_cast<std::size_t>(o.lane)].length)
       fail(scenario, "obstacles: '" + o.id + "': pos is beyond the end of its lane");
   }
-  const double b2f = scenario.ego.base_link_to_front;
   if (scenario.pull_out) {
-    const PullOutManeuver& m = *scenario.pull_out;
     if (lateral.on_edge(plan.map.at(0).edge_id)) fail(scenario, "maneuvers: pull_out and a lane change on the first edge");
-    const Lanelet& first = plan.map.at(0);
-    LateralSegment seg;
-    seg.kind = LateralKind::PullOut;
-    seg.edge = first.edge_id;
-    seg.reference_lane = first.lane_id;
-    seg.left_half_width = seg.right_half_width = 0.5 * first.width;
-    const double depart_base = scenario.ego.depart_pos - b2f;
-    if (m.backward > 0.0 && scenario.ego.depart_pos - m.backward < scenario.ego.length) {
-      std::ostringstream out;
-      out << "maneuvers: pull_out.backward " << m.backward << " m would back the ego off the start of edge '"
-          << first.edge_id << "' (depart_pos " << scenario.ego.depart_pos << " m, length " << scenario.ego.length << " m)";
-      fail(scenario, out.str());
-    }
-    if (m.backward > 0.0 && scenario.ego.depart_speed > 0.0)
-      fail(scenario, "maneuvers: pull_out.backward needs ego.depart_speed 0");
-    const double at = m.at < 0.0 ? std::max(0.0, depart_base - m.backward) : m.at;
-    seg.plan = plan_pull_out(at, m.offset, m.length);
-    check_within_edge(scenario, seg, first, "pull_out");
-    lateral.depart_offset = m.offset;
-    lateral.backward = m.backward;
-    lateral.segments.push_back(std::move(seg));
+    lateral.segments.push_back(pull_out_segment(scenario, plan));
+    lateral.depart_offset = scenario.pull_out->offset;
+    lateral.backward = scenario.pull_out->backward;
+    lateral.engage_delay = scenario.pull_out->engage_delay;
   }
   if (scenario.pull_over) {
-    const PullOverManeuver& m = *scenario.pull_over;
-    const auto index = plan.map.find_edge(m.edge);
-    if (!index) fail(scenario, "maneuvers: pull_over: edge '" + m.edge + "' is not on the ego's route");
-    const Lanelet& lanelet = plan.map.at(*index);
-    LateralSegment seg;
-    seg.kind = LateralKind::PullOver;
-    seg.edge = lanelet.edge_id;
-    seg.reference_lane = lanelet.lane_id;
-    seg.route_index = *index;
-    seg.left_half_width = seg.right_half_width = 0.5 * lanelet.width;
-    seg.goal_s = lanelet.s_start + m.pos - b2f;
-    seg.plan = plan_pull_over(seg.goal_s, m.offset, m.length);
-    check_within_edge(scenario, seg, lanelet, "pull_over");
+    LateralSegment seg = pull_over_segment(scenario, plan);
     if (lateral.on_edge(seg.edge)) fail(scenario, "maneuvers: at most one maneuver per edge ('" + seg.edge + "' has two)");
     lateral.segments.push_back(std::move(seg));
   }
   for (std::size_t i = 0; i < scenario.avoids.size(); ++i) {
-    LateralSegment seg = plan_avoid(scenario, plan, scenario.avoids[i], i);
+    LateralSegment seg = avoid_segment(scenario, plan, scenario.avoids[i], i);
     if (lateral.on_edge(seg.edge))
       fail(scenario, "maneuvers: at most one maneuver per edge ('" + seg.edge + "' has two)");
     lateral.segments.push_back(std::move(seg));

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "planning/avoidance_execution.hpp"
 #include "planning/lane_change_execution.hpp"
 #include "planning/shift_line.hpp"
 #include "scenario/scenario.hpp"
@@ -34,6 +35,7 @@ struct LateralSegment {
   /// the executed line is decided at approval (lane_change).
   ShiftPlan plan;
   LaneChangeTiming lane_change;  ///< lane change only
+  AvoidanceTiming avoidance;     ///< avoidance only: its wait point and approval delay
   /// Lane change: lateral position of the lane boundary the ego crosses (the adjacent lane's boundary) [m].
   double boundary = 0.0;
   double left_half_width = 1.6;   ///< of the reference lane [m] (lane-bound test)
@@ -49,6 +51,8 @@ struct LateralPlan {
   double depart_offset = 0.0;
   /// Pull out: metres the ego backs up (emulated) before it pulls out.
   double backward = 0.0;
+  /// Pull out: [s] after the run's first step the ego is engaged (pull_out.engage_delay).
+  double engage_delay = 0.0;
   const LateralSegment* on_edge(const std::string& edge) const {
     for (const LateralSegment& seg : segments)
       if (seg.edge == edge) return &seg;

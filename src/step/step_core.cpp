@@ -38,13 +38,14 @@ StopSpeedPlanner stop_planner_for(const EgoSpec& ego) {
   return StopSpeedPlanner(params, ego.emergency_decel);
 }
 
-BehaviorStageConfig behavior_config_for(const Scenario& scenario, const RouteMap& route) {
+BehaviorStageConfig behavior_config_for(const Scenario& scenario, const RouteMap& route, double start_time) {
   BehaviorStageConfig config;
   config.path_forward = scenario.run_params.decider.forward_path_length;
   config.route_length = route.length();
   config.vehicle_length = scenario.ego.length;
   config.max_speed = scenario.ego.max_speed;
   config.gaps = {scenario.run_params.lane_change_safety_rear_gap, scenario.run_params.lane_change_safety_front_gap};
+  config.start_time = start_time;
   return config;
 }
 
@@ -128,7 +129,7 @@ StepCore::StepCore(CoreSetup setup)
       judge_params_(scenario_.run_params.judge),
       end_time_(run_end_time(scenario_, setup.start_time)),
       decider_(turn_signal_parameters(scenario_)),
-      behavior_(lateral_, behavior_parameters(scenario_), behavior_config_for(scenario_, route_)),
+      behavior_(lateral_, behavior_parameters(scenario_), behavior_config_for(scenario_, route_, setup.start_time)),
       lights_(std::move(setup.lights), judge_params_, scenario_.perception,
               scenario_.run_params.decider.forward_path_length, scenario_.v2i_channel),
       stop_speed_(stop_planner_for(scenario_.ego)),
@@ -160,7 +161,7 @@ StepCore::StepCore(CoreSetup setup)
 ObservationDemand StepCore::demand(const sumo::EgoState& ego) {
   place_ = locator_.locate(ego.lane, ego.edge, ego.lane_pos);
   const double s_front = place_.s_front;
-  const double row_speed = row_speed_of(ego.speed);
+  const double row_speed = row_speed_of(ego.speed, ego.time);
   ObservationDemand want;
   if (const LateralSegment* seg = behavior_.plan().on_edge(ego.edge)) want.lateral_reference_lane = seg->reference_lane;
   if (const LateralSegment* waiting = behavior_.waiting_lane_change(s_front - b2f_))
@@ -174,11 +175,13 @@ ObservationDemand StepCore::demand(const sumo::EgoState& ego) {
 }
 
 // Backing up (pull out with `backward`, emulated): not driving forward, until the plan's distance is
-// backed up.
+// backed up (the ego moves back only once engaged, docs/behaviour.md §T8.2 "Pull out").
 bool StepCore::backing() const { return backed_up_ < lateral_.backward - 1e-9; }
 
-// The row's signed speed: negative while backing up, else SUMO's.
-double StepCore::row_speed_of(double sumo_speed) const { return backing() ? -kBackwardSpeed : sumo_speed; }
+// The row's signed speed: negative while moving back, else SUMO's.
+double StepCore::row_speed_of(double sumo_speed, double time) const {
+  return backing() && behavior_.engaged(time) ? -kBackwardSpeed : sumo_speed;
+}
 
 // observe: whether SUMO left the lane plan, and the lateral offset, measured against the planned lane
 // while the ego is on a segment's edge.
@@ -189,7 +192,8 @@ StepNow StepCore::observe(const StepObservation& seen) {
   const double s_front = place_.s_front;
   now.off_plan = plan_watch_.observe(now.sumo.lane, now.sumo.edge, place_.index, s_front, now.sumo.time, record_);
   now.backing = backing();
-  now.ego = EgoOnRoute{s_front, s_front - b2f_, row_speed_of(now.sumo.speed)};
+  now.moving_back = now.backing && behavior_.engaged(now.sumo.time);
+  now.ego = EgoOnRoute{s_front, s_front - b2f_, row_speed_of(now.sumo.speed, now.sumo.time)};
   if (now.sumo.speed > kRestSpeed) departed_ = true;
   now.segment = behavior_.plan().on_edge(now.sumo.edge);
   now.lateral_offset = now.segment ? seen.lateral_offset.value() : now.sumo.lateral_offset;
@@ -331,10 +335,11 @@ SpeedPlan StepCore::plan_speed(const StepNow& now, const BehaviorStage::Result& 
   // The pull-over goal: a jerk-limited stop with base_link at the goal (its level is not recorded).
   std::optional<StopLevel> goal_level;
   if (pull_over_goal_) goal_level = stop_speed_.add_stop(pull_over_goal_->goal_s - now.ego.s_base);
-  // A lane change not yet approved: base_link comes to rest before its last possible start (the
-  // stop constrains the speed from the step where a normal stop must begin, until approval).
+  // A module's hold (a lane change or an avoidance waiting for approval, an avoidance holding on
+  // approval, a pull out before it starts): base_link comes to rest there (the stop constrains the
+  // speed from the step where a normal stop must begin, until the hold ends).
   std::optional<StopLevel> hold_level;
-  if (behavior.hold_distance) hold_level = stop_speed_.add_stop(*behavior.hold_distance);
+  if (behavior.hold) hold_level = stop_speed_.add_stop(behavior.hold->distance);
   plan.speed = stop_speed_.speed();
   plan.emergency_braking = plan.stop_level == StopLevel::Emergency || hold_level == StopLevel::Emergency;
   if (now.backing) plan.speed = 0.0;  // the back-up moves the ego (apply)
@@ -342,9 +347,9 @@ SpeedPlan StepCore::plan_speed(const StepNow& now, const BehaviorStage::Result& 
   // What of signalsim holds the ego at rest this step, if anything (the stuck rule).
   // Off the plan, signalsim's stops are for the planned lanes, not the one SUMO drives: it holds nothing.
   if (plan.speed < kRestSpeed && !now.off_plan) {
-    plan.held_by = now.backing         ? "backing up"
+    plan.held_by = now.moving_back     ? "backing up"
                    : plan.stop_level   ? "stopped for light " + lights.stopping->light->tls_id
-                   : hold_level        ? "the hold point of a lane change waiting for approval"
+                   : hold_level        ? std::string(behavior.hold->reason)
                    : goal_level        ? "the pull-over goal"
                                        : "its speed plan";
   }
@@ -371,7 +376,7 @@ Commands StepCore::commands(const PendingStep& step) {
     c.lateral = LateralCommand{
         behavior_.planned_offset(*now.segment, now.ego.s_base + step.plan.speed * dt_, now.backing),
         now.segment->reference_lane};
-  if (now.backing) {
+  if (now.moving_back) {
     c.move_back = std::min(kBackwardSpeed * dt_, lateral_.backward - backed_up_);
     backed_up_ += c.move_back;
   }

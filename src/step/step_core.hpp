@@ -59,7 +59,8 @@ double run_end_time(const Scenario& scenario, double start_time);
 struct StepNow {
   sumo::EgoState sumo;                      ///< as SUMO reports it
   EgoOnRoute ego;                           ///< s_front, s_base; speed signed (negative while backing up)
-  bool backing = false;                     ///< emulated backward driving (pull out with `backward`)
+  bool backing = false;                     ///< a pull out's back-up is still to drive (not driving forward)
+  bool moving_back = false;                 ///< backing and engaged: the back-up moves the ego this step
   bool off_plan = false;                    ///< on a lane the lane plan does not list (PlanWatch)
   const LateralSegment* segment = nullptr;  ///< the lateral plan's segment on the ego's edge, if any
   double lateral_offset = 0.0;              ///< [m] from the segment's planned lane, else from SUMO's lane
@@ -116,7 +117,7 @@ class StepCore final : public RunCore {
 
  private:
   bool backing() const;
-  double row_speed_of(double sumo_speed) const;
+  double row_speed_of(double sumo_speed, double time) const;
   StepNow observe(const StepObservation& seen);
   std::vector<OccupiedSpan> target_lane_traffic(const StepObservation& seen, double s_base) const;
   StepLights light(const StepNow& now, const StepObservation& seen);

@@ -2,8 +2,8 @@
 // without the light, or the light's detections, delivered after the latency.
 #include "traffic_light/perception_model.hpp"
 
+#include "core/time_ns.hpp"
 #include "traffic_light/seeded_stream.hpp"
-#include "traffic_light/time_ns.hpp"
 
 #include <algorithm>
 #include <array>

@@ -7,8 +7,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/time_ns.hpp"
 #include "traffic_light/judge_line.hpp"
-#include "traffic_light/time_ns.hpp"
 
 namespace signalsim {
 

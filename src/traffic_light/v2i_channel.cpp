@@ -5,8 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/time_ns.hpp"
 #include "traffic_light/seeded_stream.hpp"
-#include "traffic_light/time_ns.hpp"
 
 namespace signalsim {
 

@@ -39,8 +39,16 @@ std::optional<AvoidanceShiftLine> AvoidanceSignal::target_line(const std::vector
   return s1;
 }
 
+bool AvoidanceSignal::signals_candidate(CandidateTurnSignalPolicy policy, double speed) {
+  // planWaitingApproval: "all_candidate" always, "stopped_candidate" only while stopped.
+  return policy == CandidateTurnSignalPolicy::AllCandidate ||
+         (policy == CandidateTurnSignalPolicy::StoppedCandidate && std::abs(speed) < kStoppedSpeed);
+}
+
 TurnSignalInfo AvoidanceSignal::update(const TurnSignalInfo& previous, const Input& input, const EgoOnRoute& ego,
                                        const BehaviorSignalParameters& params) {
+  // Waiting for approval (docs/behaviour.md §T8.2): the candidate lines as if registered, or the previous request.
+  if (input.phase == Phase::WaitingApproval && !signals_candidate(input.policy, ego.speed)) return previous;
   // The path shifter keeps only lines whose end is at or ahead of the ego.
   std::vector<AvoidanceShiftLine> lines;
   lines.reserve(input.shift_lines.size());
@@ -150,8 +158,9 @@ bool PullOutSignal::override_stopped_check(bool has_departed, bool geometric_pla
 
 bool PullOutSignal::is_centerline_start(const Input& in, const BehaviorSignalParameters& p) {
   const double shift = in.shift_at_end - in.shift_at_start;
+  // [SP] calcTurnSignalInfo: not engaged yet, or engaged for less than prepare_time_before_start.
   const bool need_blinker_before_start =
-      in.time_since_first_engaged_forward && *in.time_since_first_engaged_forward < p.prepare_time_before_start;
+      !in.time_since_first_engaged_forward || *in.time_since_first_engaged_forward < p.prepare_time_before_start;
   return std::abs(shift) < p.minimum_shift_length && !in.enable_back &&
          p.th_distance_to_middle_of_the_road < p.minimum_shift_length && need_blinker_before_start;
 }

@@ -37,17 +37,27 @@ struct AvoidanceShiftLine {
 
 /// Static obstacle avoidance (docs/behaviour.md §T8.2 "Avoidance", §T12.1.13). State: the permanent set of
 /// ignored shift-line ids (docs/behaviour.md §T8.3).
+///
+/// Waiting for approval (nothing registered yet), Autoware's planWaitingApproval: with the policy
+/// all_candidate, or stopped_candidate while |v| < 0.3 m/s, the candidate lines give the request
+/// exactly as registered lines would (the same steps, the same ignore set); otherwise (none,
+/// stop_on_approval) the previous request passes through.
 class AvoidanceSignal {
  public:
+  enum class Phase { WaitingApproval, Running };
+
   struct Input {
-    std::vector<AvoidanceShiftLine> shift_lines;  ///< registered lines ordered by s_start (any, filtered here)
+    Phase phase = Phase::Running;  ///< Running: the lines are registered (also while holding on approval)
+    CandidateTurnSignalPolicy policy = CandidateTurnSignalPolicy::None;  ///< candidate_path_turn_signal
+    std::vector<AvoidanceShiftLine> shift_lines;  ///< registered (or candidate) lines ordered by s_start (filtered here)
     double planned_shift_at_ego = 0.0;  ///< the planned (smooth) path's offset at the ego's s_base [m]
     /// Path span, lane bounds, current_shift_length, hatched flags, ...; shift_line, the flags,
     /// is_driving_forward and source are set by the module.
     BehaviorSignalInput signal;
   };
 
-  /// One step. Returns `previous` unchanged when no line ends at or ahead of base_link, when
+  /// One step. Returns `previous` unchanged while waiting without a candidate request (see the class
+  /// comment), when no line ends at or ahead of base_link, when
   /// |current_shift_length - planned_shift_at_ego| > 1.0 m, or when the target line is ignored;
   /// otherwise OVERWRITE(previous, BEHAVIOR_SIGNAL(target line)) and latches the line if ignored.
   TurnSignalInfo update(const TurnSignalInfo& previous, const Input& input, const EgoOnRoute& ego,
@@ -59,6 +69,12 @@ class AvoidanceSignal {
   /// v * max_prepare_time of base_link (strict). nullopt for no lines.
   static std::optional<AvoidanceShiftLine> target_line(const std::vector<AvoidanceShiftLine>& lines,
                                                        const EgoOnRoute& ego, const BehaviorSignalParameters& params);
+
+  /// Waiting for approval: does the policy show the candidate lines' request at `speed` [m/s]?
+  static bool signals_candidate(CandidateTurnSignalPolicy policy, double speed);
+
+  /// Autoware's helper isVehicleStopped: |v| below this [m/s] (stopped_candidate).
+  static constexpr double kStoppedSpeed = 0.3;
 
   bool is_ignored(std::uint64_t id) const { return ignored_.count(id) != 0; }
   const std::set<std::uint64_t>& ignored_ids() const { return ignored_; }

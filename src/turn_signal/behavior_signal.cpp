@@ -41,6 +41,14 @@ double path_slope(const BehaviorSignalInput& in, double s) {
 
 }  // namespace
 
+std::optional<CandidateTurnSignalPolicy> candidate_turn_signal_policy(const std::string& text) {
+  if (text == "none") return CandidateTurnSignalPolicy::None;
+  if (text == "stopped_candidate") return CandidateTurnSignalPolicy::StoppedCandidate;
+  if (text == "all_candidate") return CandidateTurnSignalPolicy::AllCandidate;
+  if (text == "stop_on_approval") return CandidateTurnSignalPolicy::StopOnApproval;
+  return std::nullopt;
+}
+
 BehaviorSignalParameters behavior_signal_parameters(const TurnSignalParameters& decider,
                                                     BehaviorSignalParameters base) {
   base.turn_signal_shift_length_threshold = decider.turn_signal_shift_length_threshold;

@@ -32,6 +32,18 @@
 
 namespace signalsim {
 
+/// avoidance.policy.candidate_path_turn_signal (docs/behaviour.md §T8.2 "Avoidance"): the avoidance's
+/// blinker while it waits for approval.
+enum class CandidateTurnSignalPolicy {
+  None,              ///< "none": the previous module's request (the shipped value)
+  StoppedCandidate,  ///< "stopped_candidate": the candidate lines' request while |v| < 0.3 m/s
+  AllCandidate,      ///< "all_candidate": the candidate lines' request
+  StopOnApproval,    ///< "stop_on_approval": as "none"; at approval the ego holds with the blinker
+};
+
+/// The policy named `text` as Autoware spells it; nullopt for any other text.
+std::optional<CandidateTurnSignalPolicy> candidate_turn_signal_policy(const std::string& text);
+
 /// Everything the behaviour modules read from the parameter set. Names are Autoware's; defaults are
 /// docs/behaviour.md §T10 (and the Autoware module YAMLs where §T10 has none).
 struct BehaviorSignalParameters {
@@ -57,11 +69,16 @@ struct BehaviorSignalParameters {
   bool lane_change_required_end_at_boundary = true;
   // Avoidance (docs/behaviour.md §T8.2).
   double max_prepare_time = 3.0;  ///< [s] the far opposite shift line is chosen within v*this
+  /// avoidance.policy.candidate_path_turn_signal (signalsim's default is the shipped "none"; the
+  /// module's struct default is "stopped_candidate").
+  CandidateTurnSignalPolicy candidate_path_turn_signal = CandidateTurnSignalPolicy::None;
+  double turn_signal_on_approval_hold_duration = 3.0;  ///< [s] stop_on_approval's hold
   // Start planner (docs/behaviour.md §T8.2).
   std::string turn_signal_on_centerline_start = "RIGHT";  ///< "LEFT" / "RIGHT"
   double minimum_shift_length = 0.5;                      ///< [m]
   double th_distance_to_middle_of_the_road = 0.5;         ///< [m]
-  double prepare_time_before_start = 0.0;                 ///< [s]
+  double prepare_time_before_start = 0.0;                 ///< [s] the wait with the blinker after engaging
+  bool enable_back = true;                                ///< backing up allowed (start_planner.enable_back)
   /// signalsim: spacing of the footprint samples of the lane-bound test [m] (Autoware: path points).
   double bound_check_interval = 1.0;
 

@@ -23,7 +23,7 @@ suite=(scenarios "$data/sumo_load_error.yaml" "$user/fcd_signals.yaml" "$user/ta
 code=$?
 [ $code -eq 4 ] || fail "--isolate: exit code $code, not 4 (the two SUMO errors)"
 rows=$(($(wc -l < "$work/isolated/results.csv") - 1))
-[ "$rows" -eq 74 ] || fail "--isolate: $rows rows, not 74 (the 66 bundled scenarios and 8 more)"
+[ "$rows" -eq 80 ] || fail "--isolate: $rows rows, not 80 (the 72 bundled scenarios and 8 more)"
 [ "$(grep -c ',error,' "$work/isolated/results.csv")" -eq 3 ] || fail "--isolate: not 3 error rows"
 grep -q "SUMO could not load the simulation: The lane nowhere_0 to use within the busStop 'stop' is not known." \
   "$work/isolated/results.csv" || fail "no SUMO load error row"

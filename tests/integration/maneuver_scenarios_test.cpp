@@ -11,14 +11,10 @@
 #include <string>
 #include <vector>
 
+#include "maneuver_run.hpp"
 #include "report/expectations.hpp"
-#include "scenario/input_error.hpp"
 #include "report/metrics.hpp"
-#include "report/outputs.hpp"
-#include "step/route_planning.hpp"
-#include "scenario/scenario.hpp"
-#include "sim/step_loop.hpp"
-#include "net/net_index.hpp"
+#include "scenario/input_error.hpp"
 
 namespace signalsim {
 namespace {
@@ -28,23 +24,10 @@ constexpr double kMinSearchDistance = 10.0;  // turn_signal_minimum_search_dista
 constexpr double kTolerance = 0.2;           // m, lateral tracking
 constexpr double kLaneWidth = 3.2;           // cross.net.xml lanes
 
-struct ManeuverRun {
-  Scenario scenario;
-  LateralPlan lateral;
-  RunRecord record;
-};
+using test::ManeuverRun;
+using test::s_base;
 
-ManeuverRun run(const std::string& name) {
-  ManeuverRun r;
-  r.scenario = load_scenario(std::string(SIGNALSIM_SOURCE_DIR) + "/scenarios/" + name + ".yaml");
-  const sumo::NetIndex net = sumo::NetIndex::load(r.scenario.net);
-  const sumo::RoutePlan plan = plan_route(r.scenario, net);
-  r.lateral = plan_lateral(r.scenario, plan, net);
-  r.record = run_scenario(r.scenario, plan, net);
-  return r;
-}
-
-double s_base(const ManeuverRun& r, const TimelineRow& row) { return row.s_front - r.record.base_link_to_front; }
+ManeuverRun run(const std::string& name) { return test::run_bundled(name); }
 
 // Every step with a plan: measured within 0.2 m of it; the plan starts on the depart lane's offset
 // and ends on the planned lane's centre; the lane change is never a jump.

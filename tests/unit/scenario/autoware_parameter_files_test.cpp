@@ -52,6 +52,13 @@ TEST(AutowareFiles, EveryShippedFileLoadsAndEachValueComesFromItsPlace) {
   EXPECT_EQ(set.origin("max_prepare_duration"), fixture("lane_change.param.yaml") + ":17");
   EXPECT_EQ(set.origin("stop_margin"), fixture("traffic_light.param.yaml") + ":4");
   EXPECT_EQ(set.origin("max_prepare_time"), fixture("static_obstacle_avoidance.param.yaml") + ":18");
+  // avoidance.policy. (docs/behaviour.md §T8.2 "Avoidance") and start_planner.enable_back.
+  EXPECT_EQ(set.text("candidate_path_turn_signal"), "none");
+  EXPECT_EQ(set.origin("candidate_path_turn_signal"), fixture("static_obstacle_avoidance.param.yaml") + ":28");
+  EXPECT_DOUBLE_EQ(set.number("turn_signal_on_approval_hold_duration"), 3.0);
+  EXPECT_EQ(set.origin("turn_signal_on_approval_hold_duration"), fixture("static_obstacle_avoidance.param.yaml") + ":29");
+  EXPECT_TRUE(set.boolean("enable_back"));
+  EXPECT_EQ(set.origin("enable_back"), fixture("start_planner.param.yaml") + ":11");
   EXPECT_EQ(set.origin("turn_signal_search_time"), fixture("behavior_path_planner.param.yaml") + ":26");
   EXPECT_EQ(set.origin("lane_change_safety_rear_gap"), "default");
   // forward_path_length comes from behavior_path_planner (line 9), not from the start planner's
@@ -105,6 +112,16 @@ TEST(AutowareFilesBadInput, OutOfRangeNamesTheNamespacedKey) {
             ":4: parameter 'traffic_light.stop_margin': value 99 is out of range [-10, 50]");
   EXPECT_EQ(apply_text("/**:\n  ros__parameters:\n    lane_change:\n      trajectory:\n        max_prepare_duration: -1\n"),
             ":5: parameter 'lane_change.trajectory.max_prepare_duration': value -1 is out of range [0, 60]");
+}
+
+TEST(AutowareFilesBadInput, AvoidancePolicyNamesTheFileLineAndChoices) {
+  EXPECT_EQ(apply_text("/**:\n  ros__parameters:\n    avoidance:\n      policy:\n"
+                       "        candidate_path_turn_signal: \"when_stopped\"\n"),
+            ":5: parameter 'avoidance.policy.candidate_path_turn_signal': 'when_stopped' is not one of none, "
+            "stopped_candidate, all_candidate, stop_on_approval");
+  EXPECT_EQ(apply_text("/**:\n  ros__parameters:\n    avoidance:\n      policy:\n"
+                       "        turn_signal_on_approval_hold_duration: -1.0\n"),
+            ":5: parameter 'avoidance.policy.turn_signal_on_approval_hold_duration': value -1.0 is out of range [0, 60]");
 }
 
 TEST(AutowareFilesBadInput, WrongTypeNamesTheNamespacedKey) {

@@ -1,5 +1,6 @@
 // docs/behaviour.md §T8.2 "Avoidance", §T8.3, §T12.1.13: target-line selection, deviation guard, ignore set,
-// OVERWRITE with the previous module's request.
+// OVERWRITE with the previous module's request; the blinker while waiting for approval per
+// candidate_path_turn_signal (Autoware's planWaitingApproval).
 #include <gtest/gtest.h>
 
 #include "behavior_test_helpers.hpp"
@@ -186,6 +187,84 @@ TEST(AvoidanceSignal, OverwritesThePreviousRequest) {
   const auto ended = request(TurnIndicator::EnableLeft, 0, 70, 10, 60, RequestSource::PullOut);
   AvoidanceSignal c;
   EXPECT_PRED2(same_info, c.update(ended, in, ego_front(50.0), kParams), ended);
+}
+
+// ---- waiting for approval (planWaitingApproval) --------------------------------------------------
+
+AvoidanceSignal::Input waiting(CandidateTurnSignalPolicy policy) {
+  auto in = avoidance_input({line(1, 100, 120, 0, 2), line(2, 140, 160, 2, 0)});
+  in.phase = AvoidanceSignal::Phase::WaitingApproval;
+  in.policy = policy;
+  return in;
+}
+
+// A previous request the avoidance's own would overwrite (it ends after the shift starts).
+TurnSignalInfo overwritten() { return request(TurnIndicator::EnableRight, 0, 200, 10, 150, RequestSource::PullOut); }
+
+TEST(AvoidanceWaitingApproval, NoneAndStopOnApprovalPassThePreviousRequest) {
+  for (const auto policy : {CandidateTurnSignalPolicy::None, CandidateTurnSignalPolicy::StopOnApproval}) {
+    AvoidanceSignal module;
+    // Moving and at rest, the front within the prep distance of the shift start: still the previous
+    // request (EMPTY, or one the registered lines' request would replace).
+    EXPECT_PRED2(same_info, module.update(TurnSignalInfo{}, waiting(policy), ego_front(95.0, 5.0), kParams),
+                 TurnSignalInfo{});
+    EXPECT_PRED2(same_info, module.update(TurnSignalInfo{}, waiting(policy), ego_front(99.0, 0.0), kParams),
+                 TurnSignalInfo{});
+    EXPECT_PRED2(same_info, module.update(overwritten(), waiting(policy), ego_front(99.0, 0.0), kParams), overwritten());
+    EXPECT_TRUE(module.ignored_ids().empty());
+  }
+  // Registered, the same lines replace that request.
+  AvoidanceSignal running;
+  auto in = waiting(CandidateTurnSignalPolicy::None);
+  in.phase = AvoidanceSignal::Phase::Running;
+  EXPECT_EQ(running.update(overwritten(), in, ego_front(99.0, 0.0), kParams).turn, TurnIndicator::EnableLeft);
+}
+
+TEST(AvoidanceWaitingApproval, StoppedCandidateSignalsOnlyBelowPointThreeMetresPerSecond) {
+  AvoidanceSignal module;
+  const auto in = waiting(CandidateTurnSignalPolicy::StoppedCandidate);
+  const auto at_rest = module.update(TurnSignalInfo{}, in, ego_front(99.0, 0.29), kParams);
+  EXPECT_EQ(at_rest.turn, TurnIndicator::EnableLeft);  // the candidate shift out, as if registered
+  EXPECT_EQ(at_rest.source, RequestSource::Avoidance);
+  EXPECT_EQ(at_rest.required_start, 100.0);
+  EXPECT_EQ(at_rest.required_end, 120.0);
+  EXPECT_PRED2(same_info, module.update(overwritten(), in, ego_front(99.0, 0.3), kParams), overwritten());  // not < 0.3
+  EXPECT_PRED2(same_info, module.update(TurnSignalInfo{}, in, ego_front(99.0, -0.3), kParams), TurnSignalInfo{});
+  EXPECT_EQ(module.update(TurnSignalInfo{}, in, ego_front(99.0, -0.29), kParams).turn, TurnIndicator::EnableLeft);
+}
+
+TEST(AvoidanceWaitingApproval, AllCandidateSignalsWhileMovingWithTheRegisteredRules) {
+  AvoidanceSignal module;
+  const auto in = waiting(CandidateTurnSignalPolicy::AllCandidate);
+  // §T8.1 prep distance at 5 m/s: max(15, 10) = 15 m before the shift start.
+  EXPECT_EQ(module.update(TurnSignalInfo{}, in, ego_front(85.0, 5.0), kParams).turn, TurnIndicator::EnableLeft);
+  EXPECT_EQ(module.update(TurnSignalInfo{}, in, ego_front(84.9, 5.0), kParams).turn, TurnIndicator::NoCommand);
+  // The same request the registered lines give.
+  AvoidanceSignal registered;
+  auto running = in;
+  running.phase = AvoidanceSignal::Phase::Running;
+  EXPECT_PRED2(same_info, module.update(TurnSignalInfo{}, in, ego_front(95.0, 5.0), kParams),
+               registered.update(TurnSignalInfo{}, running, ego_front(95.0, 5.0), kParams));
+}
+
+TEST(AvoidanceWaitingApproval, ACandidateIgnoreIsLatchedForGood) {
+  // A candidate too small to signal is ignored as a registered one would be; after approval it stays ignored.
+  AvoidanceSignal module;
+  auto in = waiting(CandidateTurnSignalPolicy::AllCandidate);
+  in.shift_lines = {line(5, 100, 120, 0, 0.2)};
+  EXPECT_EQ(module.update(TurnSignalInfo{}, in, ego_front(95.0), kParams).turn, TurnIndicator::NoCommand);
+  EXPECT_TRUE(module.is_ignored(5));
+  in.phase = AvoidanceSignal::Phase::Running;
+  const auto previous = request(TurnIndicator::EnableRight, 0, 50, 10, 40, RequestSource::PullOut);
+  EXPECT_PRED2(same_info, module.update(previous, in, ego_front(95.0), kParams), previous);
+}
+
+TEST(AvoidanceWaitingApproval, PolicyNamesAreAutowares) {
+  EXPECT_EQ(candidate_turn_signal_policy("none"), CandidateTurnSignalPolicy::None);
+  EXPECT_EQ(candidate_turn_signal_policy("stopped_candidate"), CandidateTurnSignalPolicy::StoppedCandidate);
+  EXPECT_EQ(candidate_turn_signal_policy("all_candidate"), CandidateTurnSignalPolicy::AllCandidate);
+  EXPECT_EQ(candidate_turn_signal_policy("stop_on_approval"), CandidateTurnSignalPolicy::StopOnApproval);
+  EXPECT_FALSE(candidate_turn_signal_policy("None").has_value());
 }
 
 }  // namespace

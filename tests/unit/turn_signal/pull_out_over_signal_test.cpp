@@ -119,9 +119,18 @@ TEST(PullOutSignal, CenterlineStartForcesTheConfiguredBlinker) {
   auto c = in;
   c.time_since_first_engaged_forward = 2.0;  // not < 2.0
   EXPECT_FALSE(PullOutSignal::is_centerline_start(c, p));
+  // Not engaged yet (no first engaged-forward time): the blinker is forced too, whatever the prepare
+  // time. Autoware's StartPlannerModule::calcTurnSignalInfo, is_need_blinker =
+  // !first_engaged_and_driving_forward_time || needToPrepareBlinkerBeforeStartDrivingForward()
+  // (tier4/autoware_universe_planning fc41b8921, docs/behaviour.md §T8.2 "Pull out").
   c = in;
   c.time_since_first_engaged_forward.reset();
-  EXPECT_FALSE(PullOutSignal::is_centerline_start(c, p));
+  EXPECT_TRUE(PullOutSignal::is_centerline_start(c, p));
+  auto no_wait = p;
+  no_wait.prepare_time_before_start = 0.0;
+  EXPECT_TRUE(PullOutSignal::is_centerline_start(c, no_wait));
+  c.time_since_first_engaged_forward = 0.0;  // engaged now, no prepare time: the generator decides
+  EXPECT_FALSE(PullOutSignal::is_centerline_start(c, no_wait));
   c = in;
   c.enable_back = true;
   EXPECT_FALSE(PullOutSignal::is_centerline_start(c, p));

@@ -1,5 +1,6 @@
 // Times in integer nanoseconds, as rclcpp::Time compares them (docs/behaviour.md §L1.5 choice): the one
-// conversion the light judge, the perception model and the V2I channel share.
+// conversion the light judge, the perception model, the V2I channel and the behaviour modules' clocks
+// (approval, hold and departure waits, docs/behaviour.md §T8.2) share.
 #pragma once
 
 #include <algorithm>
