@@ -1,8 +1,9 @@
 // Notes and warnings on stderr: facts about the input a user should know that are not errors (keys of
 // an Autoware parameter file signalsim does not use, scenario keys that replace a vehicle_info value),
-// and input that may not do what its author meant (a key Autoware dropped). Each is printed once per
-// process (a batch loads every scenario in the parent, its workers run quietly), and never when notes
-// are turned off (`--quiet`; summary.json keeps the warnings).
+// and input that may not do what its author meant (a key Autoware dropped, a country preset for the
+// other driving side). Each is printed once per process (a batch loads every scenario in the parent,
+// its workers run quietly), and never when notes are turned off (`--quiet`; summary.json keeps the
+// warnings).
 #pragma once
 
 #include <string>

@@ -1,8 +1,8 @@
 // Loading a scenario file: the overrides applied to its YAML tree, then each part read through its
 // key table (scenario_keys.hpp) in a fixed order - the simulation keys, the ego, obstacles and
 // maneuvers, the traffic-light inputs, parameters (kept by name and typed), expectations - and last
-// the check that the top level holds no other key. Also the decider's and the behaviour modules'
-// parameters with the ego's footprint.
+// the check that the top level holds no other key; then the country preset's driving side against the
+// net's. Also the decider's and the behaviour modules' parameters with the ego's footprint.
 #include "scenario/scenario.hpp"
 
 #include "scenario/countries.hpp"
@@ -17,6 +17,7 @@
 #include "scenario/sumo_inputs.hpp"
 #include "scenario/yaml_fields.hpp"
 #include "core/file_paths.hpp"
+#include "net/net_file.hpp"
 
 #include <filesystem>
 #include <optional>
@@ -46,6 +47,13 @@ void read_parameters(const YamlFields& top, const std::string& path, const YAML:
   for (const UnusedParameters& file : s.params.unused()) s.notes.push_back(unused_parameters_note(file));
   s.warnings.insert(s.warnings.end(), s.params.warnings().begin(), s.params.warnings().end());
   s.run_params = run_parameters(s.params);
+}
+
+// A preset for the other driving side than the net's (read from the net's beginning; a net that
+// cannot be read is the run's to report).
+void check_driving_side(const Country& country, Scenario& s) {
+  if (const std::optional<bool> lefthand = sumo::read_net_lefthand(s.net))
+    if (auto warning = driving_side_warning(country, s.net, *lefthand)) s.warnings.push_back(std::move(*warning));
 }
 
 // `decider:`, `light_judge:` (a lib: path relative to this file; an exec: command runs in its
@@ -101,6 +109,7 @@ Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrid
   read_expectations(top, path, s);
   read_systems_under_test(top, path, s);
   top.finish();
+  if (country) check_driving_side(*country, s);
   // The scenario loaded: say what it ignored and what may not do what was meant.
   for (const std::string& note : s.notes) note_once(note);
   for (const std::string& warning : s.warnings) warn_once(warning);

@@ -231,7 +231,8 @@ struct Scenario {
   /// replaced by ego keys); printed once each as "signalsim: note: ..." (scenario/notes).
   std::vector<std::string> notes;
   /// What of the input may not do what its author meant (keys Autoware dropped from its parameter
-  /// files); printed once each as "signalsim: warning: ..." and kept in summary.json `notes`.
+  /// files, a country preset for the other driving side than the net's); printed once each as
+  /// "signalsim: warning: ..." and kept in summary.json `notes`.
   std::vector<std::string> warnings;
   /// params.strict (--strict-params): keys of parameter files checked against Autoware's
   bool strict_params = false;
