@@ -37,6 +37,8 @@ set_target_properties(signalsim PROPERTIES INSTALL_RPATH_USE_LINK_PATH TRUE)
 
 install(TARGETS signalsim RUNTIME DESTINATION ${SIGNALSIM_INSTALL_BINDIR})
 install(DIRECTORY config DESTINATION ${SIGNALSIM_INSTALL_DATADIR})
+# The table of Autoware's keys of its parameter files (--strict-params; tools/autoware_key_tables).
+install(DIRECTORY data DESTINATION ${SIGNALSIM_INSTALL_DATADIR})
 # The plot program (run --plot, sweep --plot, compare --plot) and its package, product beside the
 # binary: python/ of the source tree is python/ of the data directory (src/app/plot_tool.cpp).
 install(PROGRAMS python/signalsim-plot DESTINATION ${SIGNALSIM_INSTALL_DATADIR}/python)

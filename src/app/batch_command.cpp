@@ -5,11 +5,12 @@
 #include "app/batch_backend.hpp"
 #include "app/batch_cli.hpp"
 #include "app/command.hpp"
-#include "app/strict_params_flag.hpp"
+#include "app/override_flags.hpp"
 #include "app/sut_flags.hpp"
 #include "batch/run_list.hpp"
 #include "batch/scenario_files.hpp"
 #include "scenario/input_error.hpp"
+#include "scenario/notes.hpp"
 
 namespace signalsim::app {
 
@@ -24,14 +25,15 @@ Command add_batch_command(CLI::App& app) {
   auto o = std::make_shared<Options>();
   CLI::App* sub = app.add_subcommand("batch", "Run a suite of scenarios (files or directories) in parallel; results.csv");
   sub->add_option("paths", o->paths, "Scenario files or directories of them (*.yaml)")->required();
-  sub->add_option("--set", o->set, "Override for every run: a scenario key or a parameter (key=value); repeatable");
+  add_override_flags(sub, o->set);
   add_batch_options(sub, o->batch, "out/batch", true);
-  add_strict_params_flag(sub, o->set);
   add_sut_flags(sub, o->set, o->suts);
   add_backend_options(sub, o->backend);
   return {sub, [o]() -> int {
             try {
+              hold_notes();  // until every scenario loaded: a bad --set or --params is one line
               const std::vector<RunSpec> runs = suite_runs(scenario_files(o->paths), o->set);
+              release_notes();
               const BatchSettings settings = to_settings(o->batch, "out/batch", 300.0);
               const BackendRun run = run_with_backend(runs, settings, o->batch, o->backend);
               return run.merged ? run.result.exit_code() : 0;

@@ -7,7 +7,8 @@
 // no_expectations) is checked on its events only and says so; it is not a failure (JUnit: skipped).
 // --update rewrites the golden files from the runs; --junit writes JUnit XML. With a decider or light
 // judge under test (--decider, --light-judge or the scenario's keys) the golden file must have been made
-// with the same ones (batch/golden_suts.hpp), else the case fails.
+// with the same ones (batch/golden_suts.hpp), else the case fails. --set, --params and --strict-params
+// change every scenario as for batch, so a candidate parameter set is checked against the golden files.
 #include <unistd.h>
 
 #include <cstdio>
@@ -19,6 +20,7 @@
 #include "app/batch_cli.hpp"
 #include "app/cli_numbers.hpp"
 #include "app/command.hpp"
+#include "app/override_flags.hpp"
 #include "app/sut_flags.hpp"
 #include "batch/golden.hpp"
 #include "batch/golden_suts.hpp"
@@ -30,6 +32,7 @@
 #include "report/atomic_file.hpp"
 #include "report/run_files.hpp"
 #include "scenario/input_error.hpp"
+#include "scenario/notes.hpp"
 
 namespace signalsim::app {
 namespace fs = std::filesystem;
@@ -45,7 +48,7 @@ struct CheckOptions {
   bool expectations_flag = false;    // --expectations: the default behaviour, accepted
   std::string junit;
   BatchCliOptions batch;
-  std::vector<std::string> set;  ///< the overrides of --decider, --light-judge, --sut-timeout
+  std::vector<std::string> set;  ///< --set, --params, --strict-params, --decider, --light-judge, --sut-timeout
   SutFlags suts;
 };
 
@@ -190,10 +193,12 @@ Command add_check_command(CLI::App& app) {
                 "A failed expectation fails the check: the default (accepted for old scripts)")
       ->excludes("--ignore-expectations");
   sub->add_option("--junit", o->junit, "Also write the results as JUnit XML to this file");
+  add_override_flags(sub, o->set);  // before the SUT flags, which append to the same overrides
   add_batch_options(sub, o->batch, "out/check", false);
   add_sut_flags(sub, o->set, o->suts);
   return {sub, [o]() -> int {
             try {
+              hold_notes();  // until every scenario loaded: a bad --set or --params is one line
               const std::vector<std::string> files = scenario_files(o->paths);
               std::map<std::string, std::string> stems;
               for (const std::string& f : files) {
@@ -202,6 +207,7 @@ Command add_check_command(CLI::App& app) {
                   throw InputError(f, 0, "same golden name '" + it->first + "' as " + it->second + " (file names must differ)");
               }
               const std::vector<RunSpec> runs = suite_runs(files, o->set);
+              release_notes();
               BatchSettings settings = to_settings(o->batch, "out/check", 300.0);
               settings.quiet = settings.quiet || isatty(STDOUT_FILENO) != 1;  // the verdicts below say it all
               const BatchResult result = run_batch(runs, settings);

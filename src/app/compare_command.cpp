@@ -23,7 +23,7 @@
 #include "app/batch_cli.hpp"
 #include "app/command.hpp"
 #include "app/plot_tool.hpp"
-#include "app/strict_params_flag.hpp"
+#include "app/override_flags.hpp"
 #include "app/sut_flags.hpp"
 #include "batch/child_process.hpp"
 #include "batch/comparison.hpp"
@@ -33,6 +33,7 @@
 #include "report/atomic_file.hpp"
 #include "report/expectations.hpp"
 #include "scenario/input_error.hpp"
+#include "scenario/notes.hpp"
 #include "scenario/scenario.hpp"
 #include "sim/session_setup.hpp"
 #include "net/net_index.hpp"
@@ -164,7 +165,9 @@ int compare(const CompareOptions& o) {
   try {
     std::vector<std::string> set = o.set;
     set.insert(set.end(), o.sut_set.begin(), o.sut_set.end());
+    hold_notes();  // bad input is one line: the notes of the scenarios loaded before it are not printed
     scenarios = check_scenarios(scenario_files(o.paths), set);
+    release_notes();
   } catch (const std::exception& e) {
     return bad_input(settings.out_dir, e.what());
   }
@@ -250,8 +253,7 @@ Command add_compare_command(CLI::App& app) {
       "compare", "Run each scenario driven by signalsim and by SUMO alone; comparison.csv and comparison.png");
   // Not required() for CLI11: with no path, compare itself refuses (and removes an earlier comparison).
   sub->add_option("paths", o->paths, "Scenario files or directories of them (*.yaml)");
-  sub->add_option("--set", o->set, "Override for every run: a scenario key or a parameter (key=value); repeatable");
-  add_strict_params_flag(sub, o->set);
+  add_override_flags(sub, o->set);
   add_sut_flags(sub, o->sut_set, o->suts);
   add_batch_options(sub, o->batch, "out/compare", false);
   return {sub, [o] { return compare(*o); }};

@@ -12,6 +12,7 @@ Command add_countries_command(CLI::App& app) {
             try {
               for (const Country& c : list_countries()) {
                 std::printf("%s  %s  (%s)\n", c.code.c_str(), c.name.c_str(), c.path.c_str());
+                if (!c.driving_side.empty()) std::printf("    %-52s %s\n", "driving_side", c.driving_side.c_str());
                 for (const auto& entry : c.parameters)
                   std::printf("    %-52s %s\n", entry.first.Scalar().c_str(),
                               entry.second.IsScalar() ? entry.second.Scalar().c_str() : "(nested)");

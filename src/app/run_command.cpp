@@ -9,7 +9,7 @@
 #include <optional>
 
 #include "app/command.hpp"
-#include "app/strict_params_flag.hpp"
+#include "app/override_flags.hpp"
 #include "app/sut_flags.hpp"
 #include "app/plot_tool.hpp"
 #include "report/expectations.hpp"
@@ -117,6 +117,7 @@ int run(const RunOptions& options) {
     check_expectations_apply(planned.scenario, planned.plan.map);
     set_notes_enabled(!options.quiet);
     for (const std::string& note : scenario->notes) note_once(note);
+    for (const std::string& warning : scenario->warnings) warn_once(warning);
     // SUMO writes into the run directory while it runs: a previous run's files must go first, so
     // that an interrupted or failed run never leaves them looking like this one's.
     clear_run_outputs(options.out_dir);
@@ -169,11 +170,10 @@ Command add_run_command(CLI::App& app) {
   CLI::App* sub = app.add_subcommand("run", "Run one scenario and write timeline.csv, events.csv, summary.json");
   sub->add_option("scenario", options->scenario_path, "Scenario YAML file")->required();
   sub->add_option("--out", options->out_dir, "Output directory (created)")->capture_default_str();
-  sub->add_option("--set", options->overrides.set,
-                  "Override: a scenario key (seed=3, ego.max_speed=10, country=de) or a parameter "
-                  "(turn_signal_search_time=2.5); repeatable");
+  add_override_flags(sub, options->overrides.set,
+                     "Override: a scenario key (seed=3, ego.max_speed=10, country=de) or a parameter "
+                     "(turn_signal_search_time=2.5); repeatable");
   sub->add_flag("--quiet", options->quiet, "Print nothing on success");
-  add_strict_params_flag(sub, options->overrides.set);
   add_sut_flags(sub, options->overrides.set, options->suts);
   sub->add_flag("--plot", options->plot, "Draw PNGs of the run into OUT/plots with signalsim-plot");
   sub->add_option("--driver", options->driver,

@@ -13,6 +13,7 @@
 #include "batch/sweep_plot_check.hpp"
 #include "batch/sweep_keys.hpp"
 #include "scenario/input_error.hpp"
+#include "scenario/notes.hpp"
 
 namespace signalsim::app {
 
@@ -36,6 +37,7 @@ Command add_sweep_command(CLI::App& app) {
   add_sut_flags(sub, o->set, o->suts);
   return {sub, [o]() -> int {
             try {
+              hold_notes();  // until every run is checked: bad input is one line
               const Sweep sweep = load_sweep(o->file);
               std::vector<RunSpec> runs = expand_sweep(sweep);
               for (const std::string& key : swept_keys(sweep))
@@ -45,6 +47,7 @@ Command add_sweep_command(CLI::App& app) {
               for (RunSpec& run : runs) run.set.insert(run.set.end(), o->set.begin(), o->set.end());
               check_sweep_runs(sweep, runs);
               check_sweep_plot(sweep, runs);  // a plot: no run can give is refused before any run
+              release_notes();
               const std::string default_out = sweep.out.empty() ? "out/" + sweep.name : sweep.out;
               const double timeout = sweep.timeout.value_or(*sweep_keys().at("timeout").default_number);
               BatchSettings settings = to_settings(o->batch, default_out, timeout);

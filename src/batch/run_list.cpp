@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "scenario/input_error.hpp"
+#include "scenario/overrides.hpp"
 #include "scenario/scenario.hpp"
 
 namespace signalsim {
@@ -136,7 +137,8 @@ std::vector<RunSpec> suite_runs(const std::vector<std::string>& files, const std
     try {
       run.name = load_scenario(file, ScenarioOverrides{set}).name;
     } catch (const InputError& e) {
-      if (e.file() == "--set") throw;  // the command's own input: every run would fail alike
+      // The command's own input (--set, a --params file): every run would fail alike.
+      if (is_override_input(e.file(), ScenarioOverrides{set})) throw;
       run.name = fs::path(file).stem().string();
       run.load_error = e.what();
     } catch (const std::exception& e) {  // a sumocfg the scenario names that does not read, ...

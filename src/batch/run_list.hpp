@@ -21,7 +21,8 @@ void check_sweep_runs(const Sweep& sweep, std::vector<RunSpec>& runs);
 
 /// The runs of a suite: one per scenario file with the same overrides. Loads each (no SUMO). A file
 /// that does not load (malformed, an unknown key, ...) is a run with `load_error` set and its file
-/// stem as name: it becomes an error row and the others run. Throws InputError for a bad --set.
+/// stem as name: it becomes an error row and the others run. Throws InputError for a bad --set or
+/// --params file (scenario/overrides.hpp is_override_input).
 std::vector<RunSpec> suite_runs(const std::vector<std::string>& files, const std::vector<std::string>& set);
 
 }  // namespace signalsim

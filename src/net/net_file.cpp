@@ -11,7 +11,10 @@
 #include <iterator>
 #include <memory>
 
+#include <pugixml.hpp>
+
 #include "net/net_index.hpp"
+#include "net/net_xml_reading.hpp"
 
 namespace signalsim::sumo {
 namespace {
@@ -78,6 +81,37 @@ std::string read_gzip(const std::string& path) {
 }
 
 }  // namespace
+
+std::optional<bool> read_net_lefthand(const std::string& path) {
+  struct GzClose {
+    void operator()(gzFile_s* file) const { gzclose(file); }
+  };
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) return std::nullopt;
+  std::unique_ptr<gzFile_s, GzClose> file(gzopen(path.c_str(), "rb"));  // plain files read through
+  if (!file) return std::nullopt;
+  constexpr unsigned kPart = 1u << 16;
+  std::string head;
+  while (head.size() < kChunk) {
+    const std::size_t old_size = head.size();
+    head.resize(old_size + kPart);
+    const int n = gzread(file.get(), head.data() + old_size, kPart);
+    head.resize(old_size + static_cast<std::size_t>(std::max(n, 0)));
+    // A parse of the beginning keeps what it read: the root's start tag is whole once the parse went
+    // past it (into a child), or the file has ended.
+    pugi::xml_document doc;
+    const pugi::xml_parse_result parsed = doc.load_buffer(head.data(), head.size(), pugi::parse_default, pugi::encoding_utf8);
+    const pugi::xml_node root = doc.document_element();
+    const bool ended = n <= 0;
+    if (root && (root.first_child() || parsed || ended)) {
+      if (std::string_view(root.name()) != "net") return std::nullopt;
+      const pugi::xml_attribute lefthand = root.attribute("lefthand");
+      return lefthand ? parse_sumo_bool(lefthand.value()) : std::optional<bool>(false);
+    }
+    if (ended) return std::nullopt;
+  }
+  return std::nullopt;
+}
 
 std::string read_net_file(const std::string& path) {
   std::error_code ec;

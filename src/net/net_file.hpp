@@ -1,7 +1,9 @@
 // Reads a SUMO net file into memory: plain XML, or gzip (detected by its magic bytes 0x1f 0x8b,
-// not by its name, so "x.net.xml" may be compressed and "x.net.xml.gz" may be plain).
+// not by its name, so "x.net.xml" may be compressed and "x.net.xml.gz" may be plain); or only its
+// driving side, from the file's beginning.
 #pragma once
 
+#include <optional>
 #include <string>
 
 namespace signalsim::sumo {
@@ -9,5 +11,11 @@ namespace signalsim::sumo {
 /// The (inflated) bytes of the file at `path`.
 /// Throws NetError "<path>: <reason>" when the file is missing, unreadable or a corrupt gzip stream.
 std::string read_net_file(const std::string& path);
+
+/// Whether the net at `path` (plain or gzip) is for left-hand traffic: its root <net>'s `lefthand`
+/// (false when it has none), read from the file's first MiB at most. nullopt when the file cannot be
+/// read, has no <net> root there, or the value is not a SUMO boolean: loading the net says why.
+/// Never throws.
+std::optional<bool> read_net_lefthand(const std::string& path);
 
 }  // namespace signalsim::sumo

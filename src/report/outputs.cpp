@@ -246,6 +246,7 @@ void write_run_outputs(const std::string& dir, const Scenario& scenario, const s
   summary["net"] = scenario.net;
   summary["status"] = to_string(status);
   summary["driver"] = to_string(record.driver);
+  if (!scenario.warnings.empty()) summary["notes"] = scenario.warnings;  // only then: other summaries as they were
   summary["seed"] = scenario.seed;
   summary["step_length"] = scenario.step_length;
   summary["duration"] = scenario.duration;

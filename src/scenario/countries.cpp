@@ -33,6 +33,9 @@ Country read_country(const fs::path& path) {
   if (c.code != path.stem().string())
     fields.fail("code", "'" + c.code + "' does not match the file name '" + path.stem().string() + "'");
   c.name = fields.text("name");
+  c.driving_side = fields.text_or("driving_side", "");
+  if (!c.driving_side.empty() && c.driving_side != "left" && c.driving_side != "right")
+    fields.fail("driving_side", "'" + c.driving_side + "' is not one of left, right");
   c.parameters = fields.node("parameters");
   if (!c.parameters || !c.parameters.IsMap()) fields.fail("parameters", "expected a mapping of parameter: value");
   fields.finish();
@@ -67,6 +70,13 @@ std::vector<Country> list_countries() {
   std::vector<Country> out;
   for (const auto& code : known_codes()) out.push_back(read_country(countries_dir() / (code + ".yaml")));
   return out;
+}
+
+std::optional<std::string> driving_side_warning(const Country& country, const std::string& net, bool net_lefthand) {
+  if (country.driving_side.empty() || (country.driving_side == "left") == net_lefthand) return std::nullopt;
+  return "country " + country.code + " drives on the " + country.driving_side + ", but the net " + net + " is " +
+         (net_lefthand ? "left-hand traffic (lefthand=\"true\")" : "right-hand traffic (no lefthand=\"true\")") +
+         ": the exit blinker is then on the wrong side for that traffic";
 }
 
 }  // namespace signalsim

@@ -2,6 +2,7 @@
 // (config/countries/<code>.yaml), never as code branches.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,8 @@ struct Country {
   std::string code;        ///< ISO 3166-1 alpha-2, lower case ("jp")
   std::string name;        ///< "Japan"
   std::string path;        ///< the file it came from
+  /// "left" or "right": the side traffic keeps to (`driving_side:`); empty when the preset does not say
+  std::string driving_side;
   YAML::Node parameters;   ///< Autoware names -> values (applied like a parameter file)
 };
 
@@ -31,5 +34,10 @@ Country load_country(const std::string& code);
 
 /// Every preset, sorted by code.
 std::vector<Country> list_countries();
+
+/// The warning for a preset whose driving side is not the net's (a SUMO net is left-hand traffic with
+/// `lefthand="true"` on its <net>): the roundabout exit blinker the preset asks for then points the
+/// wrong way for the traffic SUMO drives. Nothing when the sides agree or the preset does not say.
+std::optional<std::string> driving_side_warning(const Country& country, const std::string& net, bool net_lefthand);
 
 }  // namespace signalsim

@@ -13,7 +13,7 @@ namespace {
 
 // The footprint from Autoware's vehicle description; a key the scenario gives wins (and is noted).
 void apply_vehicle_info(const VehicleInfo& info, int line, const std::string& path, EgoSpec& ego,
-                        std::vector<std::string>& notes) {
+                        std::vector<std::string>& notes, std::vector<std::string>& warnings) {
   ego.vehicle_info = info.file;
   const struct {
     const char* key;
@@ -39,6 +39,7 @@ void apply_vehicle_info(const VehicleInfo& info, int line, const std::string& pa
                          " m (length 0.5-30 m, width 0.3-5 m)");
   ego.vehicle_info_unused = info.unused;
   if (!info.unused.empty()) notes.push_back(unused_parameters_note({info.file, info.unused}));
+  warnings.insert(warnings.end(), info.warnings.begin(), info.warnings.end());
 }
 
 // params.strict, read before params: it applies to the vehicle description too.
@@ -76,7 +77,7 @@ void read_ego(const YamlFields& top, const YAML::Node& root, const std::string& 
   s.strict_params = strict_params(root, path);
   if (ego.has("vehicle_info"))
     apply_vehicle_info(load_vehicle_info(resolve_beside(path, ego.text("vehicle_info")), s.strict_params),
-                       ego.line_of("vehicle_info"), path, s.ego, s.notes);
+                       ego.line_of("vehicle_info"), path, s.ego, s.notes, s.warnings);
   if (s.ego.base_link_to_front > s.ego.length) {
     if (s.ego.from_vehicle_info.count("base_link_to_front"))
       ego.fail("length", short_number(s.ego.length) + " m is shorter than base_link_to_front " +

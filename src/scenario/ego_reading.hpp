@@ -13,7 +13,7 @@ namespace signalsim {
 
 /// Reads `ego:` of the top-level mapping `top` (the tree `root`, overrides applied) of scenario file
 /// `path` into s.ego, and params.strict into s.strict_params (it applies to ego.vehicle_info too).
-/// Notes vehicle_info values the keys replace in s.notes. Throws InputError (file, line, key): a
+/// Notes vehicle_info values the keys replace in s.notes (and keys Autoware dropped in s.warnings). Throws InputError (file, line, key): a
 /// missing ego or route, a value out of range or of the wrong type, base_link_to_front beyond the
 /// length, depart keys beside ego.id, a bad vehicle_info file or footprint.
 void read_ego(const YamlFields& top, const YAML::Node& root, const std::string& path, Scenario& s);

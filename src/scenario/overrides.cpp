@@ -7,6 +7,21 @@
 
 namespace signalsim {
 
+namespace {
+
+// `mapping[key]` (a list, or absent) with `value` appended (each item of a list value).
+void append_to_list(YAML::Node& mapping, const std::string& key, const YAML::Node& value, const std::string& item) {
+  if (!mapping[key] || mapping[key].IsNull()) mapping[key] = YAML::Node(YAML::NodeType::Sequence);
+  YAML::Node list = mapping[key];
+  if (!list.IsSequence()) throw InputError("--set", 0, "'" + item + "': '" + key + "' is not a list");
+  if (value.IsSequence())
+    for (const YAML::Node& element : value) list.push_back(element);
+  else
+    list.push_back(value);
+}
+
+}  // namespace
+
 bool is_scenario_key(const std::string& key) { return scenario_keys().find(key) != nullptr; }
 
 YAML::Node apply_overrides(YAML::Node root, const ScenarioOverrides& overrides, YAML::Node& parameters) {
@@ -14,11 +29,13 @@ YAML::Node apply_overrides(YAML::Node root, const ScenarioOverrides& overrides, 
     if (const auto bad = find_invalid_utf8(item))
       throw InputError("--set", 0, "an override is not UTF-8 text: " + describe_invalid_utf8(item, *bad));
     const auto eq = item.find('=');
-    if (eq == std::string::npos || eq == 0)
+    // key+=value appends to a list of the scenario.
+    const bool append = eq != std::string::npos && eq > 0 && item[eq - 1] == '+';
+    if (eq == std::string::npos || eq == 0 || (append && eq == 1))
       throw InputError("--set", 0, "'" + item + "' is not of the form key=value");
-    const std::string key = item.substr(0, eq);
+    const std::string key = item.substr(0, append ? eq - 1 : eq);
     if (eq + 1 == item.size())
-      throw InputError("--set", 0, "'" + item + "': empty value (write " + key + "=VALUE)");
+      throw InputError("--set", 0, "'" + item + "': empty value (write " + key + (append ? "+=" : "=") + "VALUE)");
     YAML::Node value;
     try {
       value = YAML::Load(item.substr(eq + 1));
@@ -30,6 +47,8 @@ YAML::Node apply_overrides(YAML::Node root, const ScenarioOverrides& overrides, 
     if (value.IsScalar()) value = YAML::Node(value.Scalar());
     const std::string head = key.substr(0, key.find('.'));
     if (!is_scenario_key(head)) {
+      if (append) throw InputError("--set", 0, "'" + item + "': += appends to a list of the scenario, and '" + key +
+                                                   "' is a parameter");
       parameters[key] = value;
       continue;
     }
@@ -40,7 +59,8 @@ YAML::Node apply_overrides(YAML::Node root, const ScenarioOverrides& overrides, 
       const std::size_t dot = key.find('.', start);
       const std::string part = key.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
       if (dot == std::string::npos) {
-        node[part] = value;
+        if (append) append_to_list(node, part, value, item);
+        else node[part] = value;
         break;
       }
       if (!node[part] || node[part].IsNull()) node[part] = YAML::Node(YAML::NodeType::Map);
@@ -51,6 +71,23 @@ YAML::Node apply_overrides(YAML::Node root, const ScenarioOverrides& overrides, 
     }
   }
   return root;
+}
+
+bool is_override_input(const std::string& file, const ScenarioOverrides& overrides) {
+  if (file == "--set") return true;
+  for (const std::string& item : overrides.set) {
+    const auto append = item.find("+=");
+    if (append == std::string::npos || item.find('=') != append + 1) continue;
+    try {
+      const YAML::Node value = YAML::Load(item.substr(append + 2));
+      if (value.IsScalar() && value.Scalar() == file) return true;
+      if (value.IsSequence())
+        for (const YAML::Node& element : value)
+          if (element.IsScalar() && element.Scalar() == file) return true;
+    } catch (const YAML::Exception&) {  // apply_overrides refuses it
+    }
+  }
+  return false;
 }
 
 }  // namespace signalsim

@@ -15,9 +15,15 @@ namespace signalsim {
 bool is_scenario_key(const std::string& key);
 
 /// `root` with every override whose head is a scenario key set at its path (`ego.max_speed=10`
-/// creates ego: when missing); the others are added to `parameters` (name -> value). Values are
-/// parsed as YAML. Throws InputError ("--set", no line) for an item that is not key=value, an empty
-/// or malformed value, text that is not UTF-8, or a path through a value that is not a mapping.
+/// creates ego: when missing), or appended to the list there for `key+=value` (each item of a list
+/// value; `params.files+=/abs/candidate.yaml` creates params.files: when missing); the others are
+/// added to `parameters` (name -> value). Values are parsed as YAML. Throws InputError ("--set", no
+/// line) for an item that is not key=value, an empty or malformed value, text that is not UTF-8, a
+/// path through a value that is not a mapping, += on a value that is not a list or on a parameter.
 YAML::Node apply_overrides(YAML::Node root, const ScenarioOverrides& overrides, YAML::Node& parameters);
+
+/// Whether `file`, an InputError's, is the overrides' own input rather than a scenario's: "--set", or a
+/// file an override appends to a list (`params.files+=FILE`, --params). Every scenario would fail alike.
+bool is_override_input(const std::string& file, const ScenarioOverrides& overrides);
 
 }  // namespace signalsim

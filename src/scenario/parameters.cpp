@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <sstream>
 
+#include "scenario/autoware_key_table.hpp"
 #include "scenario/input_error.hpp"
 #include "scenario/parameter_keys.hpp"
 #include "core/number_parsing.hpp"
@@ -82,9 +83,16 @@ void ParameterSet::apply_parameters(const std::vector<FlatParameter>& flat, cons
                                                (entry.value.IsSequence() ? "a list" : "a single value"));
       if (const auto near = suggest_parameter(entry.name))
         throw InputError(file, entry.line, "unknown parameter '" + entry.name + "' (did you mean '" + *near + "'?)");
-      if (origin.strict || !origin.is_file)
-        throw InputError(file, entry.line, "unknown parameter '" + entry.name + "'" +
-                                               (origin.is_file ? " (strict parameters: every key must be known)" : ""));
+      if (!origin.is_file) throw InputError(file, entry.line, "unknown parameter '" + entry.name + "'");
+      // Strict: a key of Autoware's file of that name is listed, one Autoware dropped is a warning, any
+      // other an error.
+      const std::string autoware_file = std::filesystem::path(file).filename().string();
+      if (const auto warning = origin.strict ? strict_key_warning(autoware_key_tables(), autoware_file, file,
+                                                                  entry.line, entry.name, "parameter")
+                                             : std::nullopt) {
+        warnings_.push_back(*warning);
+        continue;
+      }
       unused.push_back(entry.name);
       continue;
     }

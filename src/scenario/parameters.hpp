@@ -39,8 +39,9 @@ struct ParameterOrigin {
   /// How the summary names the source of a value: empty for "<file>:<line>" (a parameter file),
   /// else e.g. "country jp", "set", "--set".
   std::string label;
-  /// A parameter file (Autoware's, as shipped): keys signalsim does not use are listed, not refused,
-  /// unless `strict`. Any other mapping (a country preset, params.set, --set) is always strict.
+  /// A parameter file (Autoware's, as shipped): keys signalsim does not use are listed, not refused;
+  /// `strict` checks them against Autoware's keys of the file (scenario/autoware_key_table.hpp). Any
+  /// other mapping (a country preset, params.set, --set) refuses every key signalsim does not use.
   bool is_file = false;
   bool strict = true;
 };
@@ -63,12 +64,13 @@ class ParameterSet {
   /// `/**: ros__parameters:` wrapper). A parameter is found by signalsim's name or by its Autoware
   /// place (ParameterSpec::autoware_key). Throws InputError naming the origin's file, the line and
   /// the key as written for a wrong type, an out-of-range value, a parameter given twice, a key
-  /// close to a known name ("did you mean"), and, when strict, any unknown key.
+  /// close to a known name ("did you mean"), and, when strict, a key Autoware's file of that name
+  /// does not have either (scenario/autoware_key_table.hpp; one Autoware dropped is a warning).
   void apply(const YAML::Node& mapping, const ParameterOrigin& origin);
   /// A strict mapping named `file` in messages and summaries (a preset, params.set, --set).
   void apply(const YAML::Node& mapping, const std::string& file) { apply(mapping, ParameterOrigin{file, file}); }
-  /// Reads a parameter file and applies it (unknown keys listed unless `strict`). Throws InputError
-  /// (missing file, malformed YAML, ...).
+  /// Reads a parameter file and applies it (keys signalsim does not use are listed; `strict` checks
+  /// them against Autoware's). Throws InputError (missing file, malformed YAML, ...).
   void apply_file(const std::string& path, bool strict);
 
   double number(const std::string& name) const;
@@ -85,12 +87,15 @@ class ParameterSet {
   void check_consistency(const std::string& file) const;
   /// Per parameter file applied with unknown keys allowed: the keys signalsim does not use.
   const std::vector<UnusedParameters>& unused() const { return unused_; }
+  /// One line per key of a strict parameter file that Autoware dropped ("<file>:<line>: ...").
+  const std::vector<std::string>& warnings() const { return warnings_; }
 
  private:
   void apply_parameters(const std::vector<FlatParameter>& flat, const ParameterOrigin& origin);
   std::map<std::string, ParameterValue> values_;
   std::map<std::string, std::string> origins_;
   std::vector<UnusedParameters> unused_;
+  std::vector<std::string> warnings_;
 };
 
 /// A resolved set as typed values with units: everything the decider, the behaviour modules, the

@@ -1,8 +1,8 @@
 // Loading a scenario file: the overrides applied to its YAML tree, then each part read through its
 // key table (scenario_keys.hpp) in a fixed order - the simulation keys, the ego, obstacles and
 // maneuvers, the traffic-light inputs, parameters (kept by name and typed), expectations - and last
-// the check that the top level holds no other key. Also the decider's and the behaviour modules'
-// parameters with the ego's footprint.
+// the check that the top level holds no other key; then the country preset's driving side against the
+// net's. Also the decider's and the behaviour modules' parameters with the ego's footprint.
 #include "scenario/scenario.hpp"
 
 #include "scenario/countries.hpp"
@@ -17,8 +17,10 @@
 #include "scenario/sumo_inputs.hpp"
 #include "scenario/yaml_fields.hpp"
 #include "core/file_paths.hpp"
+#include "net/net_file.hpp"
 
 #include <filesystem>
+#include <optional>
 #include <utility>
 
 namespace signalsim {
@@ -26,7 +28,7 @@ namespace {
 
 // Parameters: defaults, params.files, the country preset, params.set, then --set overrides.
 void read_parameters(const YamlFields& top, const std::string& path, const YAML::Node& parameter_overrides,
-                     Scenario& s) {
+                     const std::optional<Country>& country, Scenario& s) {
   YAML::Node set;
   if (top.has("params")) {
     YamlFields params(top.node("params"), path, "params", params_keys());
@@ -38,15 +40,20 @@ void read_parameters(const YamlFields& top, const std::string& path, const YAML:
     if (given) set.reset(given);  // (assigning an absent node would throw)
     params.finish();
   }
-  if (!s.country.empty()) {
-    const Country country = load_country(s.country);
-    s.params.apply(country.parameters, ParameterOrigin{country.path, "country " + country.code});
-  }
+  if (country) s.params.apply(country->parameters, ParameterOrigin{country->path, "country " + country->code});
   if (set && !set.IsNull()) s.params.apply(set, ParameterOrigin{path, "set"});
   if (parameter_overrides.size() > 0) s.params.apply(parameter_overrides, ParameterOrigin{"--set", "--set"});
   s.params.check_consistency(path);
   for (const UnusedParameters& file : s.params.unused()) s.notes.push_back(unused_parameters_note(file));
+  s.warnings.insert(s.warnings.end(), s.params.warnings().begin(), s.params.warnings().end());
   s.run_params = run_parameters(s.params);
+}
+
+// A preset for the other driving side than the net's (read from the net's beginning; a net that
+// cannot be read is the run's to report).
+void check_driving_side(const Country& country, Scenario& s) {
+  if (const std::optional<bool> lefthand = sumo::read_net_lefthand(s.net))
+    if (auto warning = driving_side_warning(country, s.net, *lefthand)) s.warnings.push_back(std::move(*warning));
 }
 
 // `decider:`, `light_judge:` (a lib: path relative to this file; an exec: command runs in its
@@ -93,15 +100,19 @@ Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrid
     top.fail("duration", "duration / step_length exceeds 2 000 000 steps; shorten the run or lengthen the step");
   s.country = top.text_or("country");
   if (!s.country.empty() && !is_country_code(s.country)) top.fail("country", unknown_country_reason(s.country));
+  const std::optional<Country> country = s.country.empty() ? std::nullopt : std::optional(load_country(s.country));
   read_ego(top, root, path, s);
   read_obstacles(top, path, s);
   read_maneuvers(top, path, s);
   read_signal_inputs(top, path, s);
-  read_parameters(top, path, parameter_overrides, s);
+  read_parameters(top, path, parameter_overrides, country, s);
   read_expectations(top, path, s);
   read_systems_under_test(top, path, s);
   top.finish();
-  for (const std::string& note : s.notes) note_once(note);  // the scenario loaded: say what it ignored
+  if (country) check_driving_side(*country, s);
+  // The scenario loaded: say what it ignored and what may not do what was meant.
+  for (const std::string& note : s.notes) note_once(note);
+  for (const std::string& warning : s.warnings) warn_once(warning);
   return s;
 }
 

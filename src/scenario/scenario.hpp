@@ -210,6 +210,7 @@ std::string describe(const Expectation& e);
 struct ScenarioOverrides {
   /// "key=value": a scenario key path (`seed=3`, `ego.max_speed=10`, `country=de`) or a parameter
   /// name (`turn_signal_search_time=2.5`, applied after params.set). Values are YAML scalars.
+  /// "key+=value" appends to a list of the scenario (`params.files+=/abs/candidate.yaml`).
   std::vector<std::string> set;
 };
 
@@ -236,7 +237,12 @@ struct Scenario {
   /// Facts about the input that are not errors (unused keys of parameter files, vehicle_info values
   /// replaced by ego keys); printed once each as "signalsim: note: ..." (scenario/notes).
   std::vector<std::string> notes;
-  bool strict_params = false;           ///< params.strict (--strict-params): unknown file keys refused
+  /// What of the input may not do what its author meant (keys Autoware dropped from its parameter
+  /// files, a country preset for the other driving side than the net's); printed once each as
+  /// "signalsim: warning: ..." and kept in summary.json `notes`.
+  std::vector<std::string> warnings;
+  /// params.strict (--strict-params): keys of parameter files checked against Autoware's
+  bool strict_params = false;
   std::vector<LaneChangeManeuver> lane_changes;   ///< from `maneuvers` (at most one per edge)
   std::vector<ObstacleSpec> obstacles;
   std::vector<AvoidManeuver> avoids;              ///< from `maneuvers`

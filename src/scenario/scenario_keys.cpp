@@ -142,8 +142,9 @@ const KeyTable& params_keys() {
                                  "shipped (`/**: ros__parameters:`) or signalsim's flat ones."),
           shape_key("set", KeyType::Parameters,
                     "Parameter values, applied after the files and the country preset."),
-          boolean_key("strict", false, "Every key of a parameter file (and of ego.vehicle_info) must be one "
-                                       "signalsim uses; else they are listed as unused."),
+          boolean_key("strict", false, "Every key of a parameter file (and of ego.vehicle_info) that signalsim "
+                                       "does not use must be one of Autoware's keys of that file "
+                                       "(data/autoware_keys.yaml); a key Autoware dropped is a warning."),
       }};
   return table;
 }

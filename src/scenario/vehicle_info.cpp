@@ -5,6 +5,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "scenario/autoware_key_table.hpp"
 #include "scenario/input_error.hpp"
 #include "scenario/parameter_keys.hpp"
 #include "scenario/yaml_fields.hpp"
@@ -12,10 +13,11 @@
 namespace signalsim {
 namespace {
 
-// The dimensions signalsim uses, then the keys Autoware's file also has (read by other nodes).
+// The dimensions signalsim uses (Autoware's file has more keys, read by other nodes:
+// data/autoware_keys.yaml lists them).
 constexpr const char* kUsed[] = {"wheel_base", "front_overhang", "rear_overhang",
                                  "wheel_tread", "left_overhang", "right_overhang"};
-constexpr const char* kKnownOther[] = {"wheel_radius", "wheel_width", "vehicle_height", "max_steer_angle"};
+constexpr const char* kAutowareFile = "vehicle_info.param.yaml";  // its keys in the table, whatever the name
 constexpr double kMaxDimension = 30.0;  // [m] as ego.length's upper bound
 
 }  // namespace
@@ -34,14 +36,15 @@ VehicleInfo load_vehicle_info(const std::string& path, bool strict) {
                                              std::to_string(info.lines.at(entry.name)) + ")");
     const auto field = fields.find(entry.name);
     if (field == fields.end()) {
-      bool known = false;
-      for (const char* other : kKnownOther) known = known || entry.name == other;
       for (const char* name : kUsed)
-        if (!known && edit_distance(entry.name, name) <= 1)
+        if (edit_distance(entry.name, name) <= 1)
           throw InputError(path, entry.line, "unknown key '" + entry.name + "' (did you mean '" + name + "'?)");
-      if (strict && !known)
-        throw InputError(path, entry.line, "unknown key '" + entry.name + "' (strict parameters: every key must be known)");
-      info.unused.push_back(entry.name);
+      if (const auto warning = strict ? strict_key_warning(autoware_key_tables(), kAutowareFile, path, entry.line,
+                                                           entry.name, "key")
+                                      : std::nullopt)
+        info.warnings.push_back(*warning);
+      else
+        info.unused.push_back(entry.name);
       continue;
     }
     double value = 0.0;

@@ -17,6 +17,7 @@ struct VehicleInfo {
   double wheel_tread = 0.0, left_overhang = 0.0, right_overhang = 0.0;  ///< [m]
   std::map<std::string, int> lines;  ///< the file's line of each key read
   std::vector<std::string> unused;   ///< keys of the file signalsim does not use
+  std::vector<std::string> warnings;  ///< strict: one line per key Autoware dropped
 
   double length() const { return front_overhang + wheel_base + rear_overhang; }
   double width() const { return wheel_tread + left_overhang + right_overhang; }
@@ -25,9 +26,10 @@ struct VehicleInfo {
 
 /// Reads a vehicle_info file. Throws InputError naming the file and line: missing file, malformed
 /// YAML, a missing or non-numeric dimension, a negative one (a zero wheel base or tread), a key one
-/// edit away from a known one ("did you mean"), and when `strict` a key that is not one of
-/// Autoware's vehicle_info keys (wheel_radius, wheel_width, vehicle_height, max_steer_angle are
-/// known but unused: listed in `unused`).
+/// edit away from a used one ("did you mean"), and when `strict` a key Autoware's vehicle_info
+/// does not have either (scenario/autoware_key_table.hpp). Keys signalsim does not use are listed in
+/// `unused` (wheel_radius, wheel_width, vehicle_height, max_steer_angle), keys Autoware dropped in
+/// `warnings` (strict).
 VehicleInfo load_vehicle_info(const std::string& path, bool strict = false);
 
 }  // namespace signalsim

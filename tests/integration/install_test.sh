@@ -20,7 +20,7 @@ prefix=$work/prefix
 bin=$prefix/bin/signalsim
 data=$prefix/share/signalsim
 [ -x "$bin" ] || fail "no executable $bin"
-for f in config/autoware_defaults.yaml config/countries/jp.yaml python/signalsim_plot/cli.py \
+for f in config/autoware_defaults.yaml config/countries/jp.yaml data/autoware_keys.yaml python/signalsim_plot/cli.py \
          scenarios/intersection_left.yaml sumo_nets/cross/cross.net.xml; do
   [ -f "$data/$f" ] || fail "not installed: share/signalsim/$f"
 done
@@ -58,6 +58,12 @@ for f in timeline.csv events.csv; do
   cmp -s "left/$f" "$work/left_build/$f" || fail "$f differs from the build tree's run"
 done
 echo "ok   installed intersection_left passes; timeline and events identical to the build tree's"
+
+# --strict-params reads the installed table of Autoware's keys (share/signalsim/data).
+"$bin" run "$data/scenarios/intersection_left.yaml" --out strict --quiet --strict-params \
+  --params "$src/tests/data/autoware_launch/behavior_path_planner.param.yaml" 2> strict.err ||
+  fail "--strict-params with the installed table: exit $?: $(cat strict.err)"
+echo "ok   --strict-params checks autoware_launch's file against the installed table"
 
 # SIGNALSIM_DATA_DIR: a copy of the data with one more preset; the extra one is listed and usable.
 cp -r "$data" "$work/data"

@@ -1,7 +1,10 @@
 // Autoware's parameter files as shipped (fixtures in tests/data/autoware, written with the real
 // files' structure): every parameter signalsim uses is read from where the real file keeps it,
-// the other keys are listed (not refused) unless strict, and each value remembers its origin.
+// the other keys are listed (not refused; strict: checked against Autoware's own keys), and each value
+// remembers its origin.
 #include <algorithm>
+#include <iostream>
+#include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -83,11 +86,19 @@ TEST(AutowareFiles, EveryShippedFileLoadsAndEachValueComesFromItsPlace) {
   EXPECT_EQ(goal->keys.size(), 9u);  // signalsim uses nothing of the goal planner's file
 }
 
-TEST(AutowareFiles, StrictRefusesTheFirstKeySignalsimDoesNotUse) {
+TEST(AutowareFiles, StrictListsAutowaresKeysAndWarnsOfADroppedOne) {
   ParameterSet set;
-  const std::string message = error_of([&] { set.apply_file(fixture("lane_change.param.yaml"), /*strict=*/true); });
-  EXPECT_EQ(message, fixture("lane_change.param.yaml") +
-                         ":4: unknown parameter 'lane_change.time_limit' (strict parameters: every key must be known)");
+  ASSERT_NO_THROW(set.apply_file(fixture("lane_change.param.yaml"), /*strict=*/true));
+  EXPECT_EQ(unused_of(set, fixture("lane_change.param.yaml"))->keys.front(), "lane_change.time_limit");
+  EXPECT_TRUE(set.warnings().empty());
+  // The start planner's enable_shift_pull_out left autoware_launch's file in 2025.
+  ASSERT_NO_THROW(set.apply_file(fixture("start_planner.param.yaml"), /*strict=*/true));
+  ASSERT_EQ(set.warnings().size(), 1u);
+  EXPECT_EQ(set.warnings()[0], fixture("start_planner.param.yaml") +
+                                   ":10: parameter 'start_planner.enable_shift_pull_out' was dropped from Autoware's "
+                                   "start_planner.param.yaml (autowarefoundation/autoware_launch 4aeeff84d0, "
+                                   "2025-08-28): it has no effect");
+  EXPECT_FALSE(lists(unused_of(set, fixture("start_planner.param.yaml")), "start_planner.enable_shift_pull_out"));
 }
 
 TEST(AutowareFiles, NoteNamesTheFileTheCountAndTheFirstKeys) {
@@ -95,6 +106,23 @@ TEST(AutowareFiles, NoteNamesTheFileTheCountAndTheFirstKeys) {
   EXPECT_EQ(unused_parameters_note(u),
             "lc.yaml: 8 keys signalsim does not use: a, b, c, d, e, f (+2 more; all in summary.json parameter_files)");
   EXPECT_EQ(unused_parameters_note({"x.yaml", {"a"}}), "x.yaml: 1 key signalsim does not use: a");
+}
+
+TEST(AutowareFiles, NotesAndWarningsHeldBackPrintOnRelease) {
+  forget_printed_notes();
+  std::ostringstream captured;
+  std::streambuf* const stderr_buffer = std::cerr.rdbuf(captured.rdbuf());
+  hold_notes();
+  note_once("held note");
+  warn_once("held warning");
+  warn_once("held warning");  // once
+  const std::string while_held = captured.str();
+  release_notes();
+  note_once("after");
+  std::cerr.rdbuf(stderr_buffer);
+  forget_printed_notes();
+  EXPECT_EQ(while_held, "");
+  EXPECT_EQ(captured.str(), "signalsim: note: held note\nsignalsim: warning: held warning\nsignalsim: note: after\n");
 }
 
 // --- bad input in a namespaced file: the file, the line and the key as written -----------------
@@ -244,13 +272,17 @@ TEST(ScenarioParameterFiles, StrictKeyAndOrigins) {
   EXPECT_EQ(loose.params.origin("max_accel"), "--set");
   EXPECT_EQ(loose.params.origin("turn_signal_search_time"), "country jp");
   ASSERT_EQ(loose.params.unused().size(), 1u);
-  const std::string strict_file = dir.file("strict.yaml", base + files + "  strict: true\n");
-  EXPECT_NE(error_of([&] { load_scenario(strict_file); }).find("lane_change.param.yaml:4: unknown parameter 'lane_change.time_limit'"),
-            std::string::npos);
+  const std::string typo = dir.file("lane_change.param.yaml",
+                                    "/**:\n  ros__parameters:\n    lane_change:\n      time_limt: 50.0\n");
+  const std::string typo_files = "params:\n  files: [" + typo + "]\n";
+  const std::string strict_file = dir.file("strict.yaml", base + typo_files + "  strict: true\n");
+  const std::string refused = typo + ":4: unknown parameter 'lane_change.time_limt': not a key of Autoware's "
+                                     "lane_change.param.yaml (did you mean 'lane_change.time_limit'?)";
+  EXPECT_EQ(error_of([&] { load_scenario(strict_file); }), refused);
+  EXPECT_NO_THROW(load_scenario(dir.file("strict_shipped.yaml", base + files + "  strict: true\n")));
   // --strict-params is the override params.strict=true.
-  EXPECT_NE(error_of([&] { load_scenario(dir.file("s2.yaml", base + files), ScenarioOverrides{{"params.strict=true"}}); })
-                .find("strict parameters"),
-            std::string::npos);
+  EXPECT_EQ(error_of([&] { load_scenario(dir.file("s2.yaml", base + typo_files), ScenarioOverrides{{"params.strict=true"}}); }),
+            refused);
   EXPECT_NE(error_of([&] { load_scenario(dir.file("s3.yaml", base + files + "  strict: perhaps\n")); })
                 .find("key 'params.strict': expected true or false"),
             std::string::npos);

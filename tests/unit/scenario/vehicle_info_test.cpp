@@ -61,12 +61,13 @@ TEST(VehicleInfo, UnequalOverhangsAddUp) {
   EXPECT_NEAR(info.width(), 1.9, 1e-12);
   EXPECT_NEAR(info.base_link_to_front(), 3.9, 1e-12);
   EXPECT_EQ(info.unused, (std::vector<std::string>{"vehicle_mass"}));
-  // Strict: a key that is not Autoware's is refused; Autoware's own unused keys are not.
+  // Strict: a key that is not Autoware's is refused, naming its nearest key; Autoware's own unused keys are not.
   try {
     load_vehicle_info(path, /*strict=*/true);
     ADD_FAILURE() << "strict accepted vehicle_mass";
   } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()), path + ":9: unknown key 'vehicle_mass' (strict parameters: every key must be known)");
+    EXPECT_EQ(std::string(e.what()), path + ":9: unknown key 'vehicle_mass': not a key of Autoware's "
+                                            "vehicle_info.param.yaml (did you mean 'vehicle_height'?)");
   }
   EXPECT_NO_THROW(load_vehicle_info(fixture("vehicle_info.param.yaml"), /*strict=*/true));
 }
