@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "batch/slurm/slurm_backend.hpp"
+#include "scenario/notes.hpp"
 
 namespace signalsim::app {
 
@@ -46,6 +47,7 @@ BackendRun run_with_backend(const std::vector<RunSpec>& runs, BatchSettings sett
                                          : nullptr;
     if (slurm_only) throw std::runtime_error(std::string(slurm_only) + " needs --backend slurm");
     refuse_while_slurm_job_runs(settings.out_dir);  // its tasks write into the same run directories
+    release_notes();  // the scenarios' notes, held by the command: from here the batch runs
     forget_slurm_job(settings.out_dir);
     BackendRun run{run_batch(runs, settings)};
     if (!settings.quiet || run.result.interrupted)
@@ -57,6 +59,7 @@ BackendRun run_with_backend(const std::vector<RunSpec>& runs, BatchSettings sett
   if (o.collect) {
     if (o.no_wait) throw std::runtime_error("--collect waits for the job; --no-wait is for a submission");
     if (settings.resume) throw std::runtime_error("--collect and --resume do not go together: collect first");
+    release_notes();  // the scenarios' notes, held by the command
     run.result = collect_slurm_batch(runs, settings);
   } else {
     SlurmOptions options;

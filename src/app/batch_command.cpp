@@ -33,7 +33,7 @@ Command add_batch_command(CLI::App& app) {
             try {
               hold_notes();  // until every scenario loaded: a bad --set or --params is one line
               const std::vector<RunSpec> runs = suite_runs(scenario_files(o->paths), o->set);
-              release_notes();
+              // run_with_backend releases the held notes once the back-end is there to run them
               const BatchSettings settings = to_settings(o->batch, "out/batch", 300.0);
               const BackendRun run = run_with_backend(runs, settings, o->batch, o->backend);
               return run.merged ? run.result.exit_code() : 0;

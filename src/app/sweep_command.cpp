@@ -47,12 +47,12 @@ Command add_sweep_command(CLI::App& app) {
               for (RunSpec& run : runs) run.set.insert(run.set.end(), o->set.begin(), o->set.end());
               check_sweep_runs(sweep, runs);
               check_sweep_plot(sweep, runs);  // a plot: no run can give is refused before any run
-              release_notes();
               const std::string default_out = sweep.out.empty() ? "out/" + sweep.name : sweep.out;
               const double timeout = sweep.timeout.value_or(*sweep_keys().at("timeout").default_number);
               BatchSettings settings = to_settings(o->batch, default_out, timeout);
               settings.swept = swept_keys(sweep);
               if (o->list) {
+                release_notes();  // else run_with_backend releases them once the back-end is there
                 for (const RunSpec& run : runs) {
                   std::printf("%4zu  %s", run.index, run.scenario.c_str());
                   for (const auto& [key, value] : run.values) std::printf("  %s=%s", key.c_str(), value.c_str());

@@ -19,7 +19,12 @@ const char* to_string(AvoidancePhase phase) {
 }
 
 std::optional<double> AvoidanceExecution::distance_to_hold_point(double s_base) const {
-  if (phase_ == AvoidancePhase::WaitingApproval) return timing_.wait_point - s_base;
+  // insertWaitPoint: an ego more than stop_buffer past the wait point has overrun it, and no wait
+  // point is inserted (docs/behaviour.md §T8.2 "Avoidance").
+  if (phase_ == AvoidancePhase::WaitingApproval) {
+    const double to_wait_point = timing_.wait_point - s_base;
+    return to_wait_point < -kAvoidanceStopBuffer ? std::nullopt : std::optional<double>(to_wait_point);
+  }
   if (phase_ == AvoidancePhase::Holding) return 0.0;  // insertDecelPoint at the ego's position
   return std::nullopt;
 }

@@ -118,6 +118,15 @@ LateralSegment pull_out_segment(const Scenario& scenario, const sumo::RoutePlan&
   const double at = m.at < 0.0 ? std::max(0.0, depart_base - m.backward) : m.at;
   seg.plan = plan_pull_out(at, m.offset, m.length);
   check_within_edge(scenario, seg, first, "pull_out");
+  // The module runs while base_link is before the shift's end: a wait at the start (engagement,
+  // prepare_time_before_start) behind it would never be held (docs/behaviour.md §T8.2 "Pull out").
+  const bool waits = m.engage_delay > 0.0 || scenario.run_params.behavior.prepare_time_before_start > 0.0;
+  if (waits && m.backward <= 0.0 && at + m.length < depart_base) {
+    std::ostringstream out;
+    out << "maneuvers: pull_out waits at its start, but its shift ends at s " << at + m.length
+        << " m, behind the ego's base_link at departure (" << depart_base << " m)";
+    throw InputError(scenario.path, m.line, out.str());
+  }
   return seg;
 }
 

@@ -45,6 +45,7 @@ check unknown_avoidance_policy run "$bad/unknown_avoidance_policy.yaml" -- "unkn
 check negative_hold_duration run "$bad/negative_hold_duration.yaml" -- "negative_hold_duration.yaml:7" "turn_signal_on_approval_hold_duration" "out of range \[0, 60\]"
 check negative_approval_delay run "$bad/negative_approval_delay.yaml" -- "negative_approval_delay.yaml:8" "approval_delay"
 check pull_out_wait_while_moving run "$bad/pull_out_wait_while_moving.yaml" -- "pull_out_wait_while_moving.yaml:8: maneuvers: pull_out waits at its start" "needs ego.depart_speed 0"
+check pull_out_wait_behind_departure run "$bad/pull_out_wait_behind_departure.yaml" -- "pull_out_wait_behind_departure.yaml:8: maneuvers: pull_out waits at its start, but its shift ends at s 5 m, behind the ego's base_link at departure (6.3 m)"
 check bad_param_file run "$bad/bad_param_file.yaml" -- "bad_params.yaml:2" "turn_signal_on_swerving" "true or false"
 check unknown_key run "$bad/unknown_key.yaml" -- "unknown_key.yaml:5" "unknown key 'ego.colour'"
 check unknown_edge run "$bad/unknown_edge.yaml" -- "unknown_edge.yaml" "out_Q" "not in the net"

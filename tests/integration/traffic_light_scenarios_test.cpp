@@ -120,10 +120,10 @@ TEST(TrafficLightScenarios, GreenLeftArrowStopsTheStraightEgo) {
 TEST(TrafficLightScenarios, BlackoutTimesOutIntoAStop) {
   const RunRecord r = run(bundled("tl_perception_blackout"));
   // Nothing is delivered from 10 s; the last observation ages past tl_state_timeout (1.0 s, strict)
-  // and the hysteresis (0.1 s, strict) -> the first stop at about 11.3 s.
+  // and the hysteresis (0.1 s, strict) -> the first stop at 11.2 s.
   const TimelineRow* stop = first_stop(r);
   ASSERT_NE(stop, nullptr);
-  EXPECT_NEAR(stop->time, 11.3, 0.1 + 1e-9);
+  EXPECT_NEAR(stop->time, 11.2, 1e-9);
   for (const TimelineRow& row : r.rows)
     if (row.time >= 10.0 && row.time <= 40.0) {
       EXPECT_TRUE(row.tl_observed.empty()) << "blackout at t=" << row.time;
@@ -140,7 +140,7 @@ TEST(TrafficLightScenarios, LightLeftOutOfTheMessagesStopsAtOnce) {
   const RunRecord r = run(bundled("tl_light_missing_from_message"));
   const TimelineRow* stop = first_stop(r);
   ASSERT_NE(stop, nullptr);
-  EXPECT_NEAR(stop->time, 10.2, 1e-9) << "a blackout over the same time stops at 11.3 s";
+  EXPECT_NEAR(stop->time, 10.2, 1e-9) << "a blackout over the same time stops at 11.2 s";
   EXPECT_EQ(stop->tl_decision, JudgeDecision::Stop);
   for (const TimelineRow& row : r.rows)
     if (row.time >= 10.0 && row.time <= 40.0) {

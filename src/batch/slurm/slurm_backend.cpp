@@ -14,6 +14,7 @@
 #include "batch/slurm/slurm_commands.hpp"
 #include "batch/slurm/slurm_wait.hpp"
 #include "scenario/input_error.hpp"
+#include "scenario/notes.hpp"
 
 namespace signalsim {
 namespace fs = std::filesystem;
@@ -55,6 +56,7 @@ SlurmOutcome run_batch_on_slurm(const std::vector<RunSpec>& runs, const BatchSet
   submission.time = slurm.time;
   submission.extra_args = slurm.sbatch_args;
   check_submission(submission);  // a bad --partition is refused before OUT changes
+  release_notes();  // the scenarios' notes, held by the command until the job can be submitted
   const InterruptGuard signals;  // from here, Ctrl-C ends in the wait below, which cancels the job
 
   SlurmOutcome outcome;
