@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 
+#include "app/cli_numbers.hpp"
 #include "app/command.hpp"
 #include "app/override_flags.hpp"
 #include "app/sut_flags.hpp"
@@ -39,7 +40,9 @@ struct RunOptions {
   bool gui = false;            ///< run in sumo-gui (libtraci)
   int gui_delay_ms = -1;       ///< -1: not given
   std::string connect;         ///< HOST:PORT of a SUMO someone else started
+  bool connect_given = false;  ///< --connect was given (also as "", which is refused)
   int client_order = -1;       ///< -1: not given
+  double traci_timeout = -1.0;  ///< [s]; -1: not given
   bool quiet = false;
   bool plot = false;  ///< draw the run's pictures with signalsim-plot afterwards
   std::string driver = "signalsim";  ///< who drives the ego: signalsim, or sumo (observed only)
@@ -66,16 +69,19 @@ RunContext run_context(const RunOptions& options) {
   RunContext context;
   context.out_dir = options.out_dir;
   context.sumo_drives = options.driver == "sumo";
-  if (options.gui && !options.connect.empty())
+  if (options.gui && options.connect_given)
     throw InputError("--gui", 0, "--gui and --connect exclude each other (attach sumo-gui with --connect instead)");
   if (!options.gui && options.gui_delay_ms >= 0) throw InputError("--gui-delay", 0, "only applies with --gui");
-  if (options.connect.empty() && options.client_order >= 0)
+  if (!options.connect_given && options.client_order >= 0)
     throw InputError("--client-order", 0, "only applies with --connect");
+  if (!options.connect_given && !options.gui && options.traci_timeout >= 0)
+    throw InputError("--traci-timeout", 0, "only applies with --connect or --gui");
   if (options.gui) {
     context.backend.kind = sumo::BackendKind::Gui;
     context.backend.gui_delay_ms = std::max(0, options.gui_delay_ms);
     context.backend.screenshot = (std::filesystem::path(options.out_dir) / run_files::kGuiScreenshot).string();
-  } else if (!options.connect.empty()) {
+    context.backend.traci_timeout = std::max(0.0, options.traci_timeout);  // none unless given: a user may pause it
+  } else if (options.connect_given) {
     const auto colon = options.connect.rfind(':');
     const std::string digits = colon == std::string::npos ? std::string() : options.connect.substr(colon + 1);
     const bool all_digits = !digits.empty() && digits.size() <= 5 &&
@@ -87,6 +93,7 @@ RunContext run_context(const RunOptions& options) {
     context.backend.host = options.connect.substr(0, colon);
     context.backend.port = port;
     context.backend.client_order = std::max(1, options.client_order);
+    if (options.traci_timeout >= 0) context.backend.traci_timeout = options.traci_timeout;
   }
   return context;
 }
@@ -186,9 +193,14 @@ Command add_run_command(CLI::App& app) {
   sub->add_option("--gui-delay", options->gui_delay_ms, "With --gui: sumo-gui's delay between steps [ms]")
       ->check(CLI::Range(0, 10000));
   sub->add_option("--connect", options->connect,
-                  "Attach to a SUMO started with --remote-port (HOST:PORT); step in lock-step with its other clients");
+                  "Attach to a SUMO started with --remote-port (HOST:PORT); step in lock-step with its other clients")
+      ->each([options](const std::string&) { options->connect_given = true; });
   sub->add_option("--client-order", options->client_order, "With --connect: this client's TraCI order (setOrder)")
       ->check(CLI::Range(1, 1000));
+  sub->add_option("--traci-timeout", options->traci_timeout,
+                  "With --connect or --gui: the longest wait in seconds for SUMO to accept the connection and to "
+                  "answer each request, else the run ends with an error (default 30 with --connect, none with --gui)")
+      ->check(number_between(0.1, 86400.0));
   return {sub, [options] { return run(*options); }};
 }
 

@@ -1,14 +1,20 @@
+// The SIGINT/SIGTERM flag and its handlers (interruption.hpp).
 #include "session/interruption.hpp"
 
+#include <atomic>
 #include <csignal>
 
 namespace signalsim::sumo {
 namespace {
 
-volatile std::sig_atomic_t requested = 0;  // the first signal's number
+// The first signal's number. Atomic: the handler writes it, and TraCI's relay thread
+// (traci_relay.hpp) reads it too.
+std::atomic<int> requested{0};
+static_assert(std::atomic<int>::is_always_lock_free, "written by a signal handler");
 
 void on_signal(int signal) {
-  if (requested == 0) requested = signal;
+  int none = 0;
+  requested.compare_exchange_strong(none, signal);
 }
 
 }  // namespace
@@ -30,7 +36,7 @@ bool interruption_requested() { return requested != 0; }
 int interruption_signal() { return requested; }
 
 void throw_if_interrupted() {
-  if (requested) throw Interrupted(requested);
+  if (const int signal = requested) throw Interrupted(signal);
 }
 
 }  // namespace signalsim::sumo

@@ -1,8 +1,11 @@
 // The TraCI back-ends, through libtraci (the libsumo API over a socket, docs/behaviour.md §S1):
-//   gui      signalsim starts sumo-gui on a free 127.0.0.1 port (--start --quit-on-end), connects,
-//            colours the ego and tracks it in the view, and stops the program by its PID at the end;
+//   gui      signalsim starts sumo-gui on a free 127.0.0.1 port (--start --quit-on-end), connects
+//            (through the relay of traci_relay.hpp, without a time limit unless --traci-timeout
+//            gives one: a user may pause sumo-gui), colours the ego and tracks it in the view, and
+//            stops the program by its PID at the end;
 //   connect  signalsim attaches to a SUMO someone else started with --remote-port and --num-clients,
-//            takes its place in the stepping order (setOrder), checks the step length, and at the end
+//            through a relay that checks every answer and bounds every wait (traci_relay.hpp), takes
+//            its place in the stepping order (setOrder), checks the step length, and at the end
 //            closes only its own connection: the simulation goes on for the other clients.
 #include <algorithm>
 #include <chrono>
@@ -13,7 +16,6 @@
 #include <sstream>
 #include <thread>
 
-#include <netdb.h>
 #include <unistd.h>
 
 #include <libsumo/libtraci.h>
@@ -23,6 +25,7 @@
 #include "session/session_impl.hpp"
 #include "session/sumo_command_line.hpp"
 #include "session/sumo_process.hpp"
+#include "session/traci_relay.hpp"
 
 namespace signalsim::sumo {
 namespace {
@@ -65,50 +68,6 @@ std::string read_text(const std::string& path) {
 
 std::string endpoint(const BackendOptions& b) { return b.host + ":" + std::to_string(b.port); }
 
-constexpr unsigned kHandshakeTimeout = 10;  // [s] for a server to answer TraCI's first commands
-
-// One connection attempt (libtraci's own retries print to stdout and wait 1 s each).
-bool try_connect(int port, const std::string& host) {
-  try {
-    libtraci::Simulation::init(port, 0, host);
-    return true;
-  } catch (const std::exception&) {
-    return false;
-  }
-}
-
-// Whether `host` has an address (a name lookup, no connection).
-bool resolves(const std::string& host) {
-  addrinfo* found = nullptr;
-  const int status = getaddrinfo(host.c_str(), nullptr, nullptr, &found);
-  if (found != nullptr) freeaddrinfo(found);
-  return status == 0;
-}
-
-// While it lives, blocking socket calls give up after `seconds` (SIGALRM without SA_RESTART makes
-// recv() return EINTR, which libtraci turns into an exception): a port that accepts but never speaks
-// TraCI must not hang the run.
-class HandshakeDeadline {
- public:
-  explicit HandshakeDeadline(unsigned seconds) {
-    struct sigaction action {};
-    action.sa_handler = [](int) {};
-    sigemptyset(&action.sa_mask);
-    action.sa_flags = 0;
-    sigaction(SIGALRM, &action, &previous_);
-    alarm(seconds);
-  }
-  ~HandshakeDeadline() {
-    alarm(0);
-    sigaction(SIGALRM, &previous_, nullptr);
-  }
-  HandshakeDeadline(const HandshakeDeadline&) = delete;
-  HandshakeDeadline& operator=(const HandshakeDeadline&) = delete;
-
- private:
-  struct sigaction previous_ {};
-};
-
 class TraciSession final : public SessionImpl<LibtraciApi> {
  public:
   explicit TraciSession(const SessionConfig& config) : SessionImpl<LibtraciApi>(config) {
@@ -121,14 +80,16 @@ class TraciSession final : public SessionImpl<LibtraciApi> {
 
   ~TraciSession() override {
     if (connected_) {
-      // connect: the simulation goes on for the other clients, without signalsim's ego
-      if (config_.backend.kind == BackendKind::Connect) release_ego();
+      // connect: the simulation goes on for the other clients, without signalsim's ego (not after
+      // the relay ended the connection: nothing would reach the server)
+      if (config_.backend.kind == BackendKind::Connect && relay_failure().empty()) release_ego();
       try {
         libtraci::Simulation::close();  // connect: only this client leaves; gui: sumo-gui quits
       } catch (...) {  // a lost connection: nothing left to close
       }
     }
-    if (gui_) gui_->wait_for_exit(5.0);  // then ~SumoProcess stops it by its PID
+    // then ~SumoProcess stops it by its PID (at once when the connection failed: it may be frozen)
+    if (gui_ && relay_failure().empty()) gui_->wait_for_exit(5.0);
   }
 
   BackendKind backend() const override { return config_.backend.kind; }
@@ -137,15 +98,17 @@ class TraciSession final : public SessionImpl<LibtraciApi> {
 
  protected:
   std::string failure_reason(const std::exception& e) const override {
+    if (gui_ && !gui_->running()) {
+      const std::string said = gui_error();
+      return "sumo-gui ended" + (said.empty() ? std::string() : ": " + said);
+    }
+    // The relay ended the connection: its reason, not libtraci's "peer shutdown".
+    if (std::string relayed = relay_failure(); !relayed.empty()) return relayed;
     std::string reason = e.what();
     // SUMO answered with an error (TraCIException): a refusal, not a lost connection.
     const bool refused = dynamic_cast<const libsumo::TraCIException*>(&e) != nullptr;
     if (config_.backend.kind == BackendKind::Connect && !refused)
       reason = "the connection to SUMO at " + endpoint(config_.backend) + " failed or was lost: " + reason;
-    if (gui_ && !gui_->running()) {
-      const std::string said = gui_error();
-      reason = "sumo-gui ended" + (said.empty() ? std::string() : ": " + said);
-    }
     return reason;
   }
 
@@ -215,21 +178,39 @@ class TraciSession final : public SessionImpl<LibtraciApi> {
     } catch (const std::exception& e) {
       throw SumoError(std::string("--gui: ") + e.what());
     }
+    connect_gui(port);
+  }
+
+  // Connects to the sumo-gui just started, through a relay, once it listens (it has loaded the net).
+  void connect_gui(int port) {
     const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(kGuiStartTimeout);
-    while (!try_connect(port, "127.0.0.1")) {
+    const RelayLimits limits{config_.backend.traci_timeout, kMaxTraciMessage};
+    while (!relay_) {
       throw_if_interrupted();
       if (!gui_->running()) {
         const std::string said = gui_error();
         throw SumoError("sumo-gui could not start" + (said.empty() ? std::string() : ": " + said));
       }
-      if (std::chrono::steady_clock::now() >= until)
-        throw SumoError("sumo-gui did not accept a TraCI connection on port " + std::to_string(port) + " within " +
-                        std::to_string(static_cast<int>(kGuiStartTimeout)) + " s");
-      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+      try {
+        relay_ = std::make_unique<TraciRelay>("127.0.0.1", port, limits);
+      } catch (const Interrupted&) {
+        throw;
+      } catch (const SumoError&) {  // not listening yet
+        if (std::chrono::steady_clock::now() >= until)
+          throw SumoError("sumo-gui did not accept a TraCI connection on port " + std::to_string(port) + " within " +
+                          std::to_string(static_cast<int>(kGuiStartTimeout)) + " s");
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+      }
     }
     // Another program could have taken the port between free_local_port() and sumo-gui's bind: then
     // our sumo-gui has ended and the connection is someone else's.
     if (!gui_->running()) throw SumoError("sumo-gui could not start: " + gui_error());
+    try {
+      libtraci::Simulation::init(relay_->client_port(), 0, "127.0.0.1");  // asks sumo-gui's version
+    } catch (const std::exception& e) {
+      leave();
+      throw SumoError("sumo-gui did not answer TraCI: " + failure_reason(e));
+    }
   }
 
   // sumo-gui's first error: what it printed, else (with --log) its log file.
@@ -241,34 +222,17 @@ class TraciSession final : public SessionImpl<LibtraciApi> {
 
   void attach() {
     const BackendOptions& b = config_.backend;
-    // A few quick attempts: a server that was just started may not listen yet.
-    bool connected = false;
-    for (int attempt = 0; attempt < 5 && !connected; ++attempt) {
-      throw_if_interrupted();
-      if (attempt > 0) std::this_thread::sleep_for(std::chrono::milliseconds(200));
-      const auto started = std::chrono::steady_clock::now();
-      {
-        const HandshakeDeadline deadline(kHandshakeTimeout);  // init waits for SUMO's version answer
-        connected = try_connect(b.port, b.host);
-      }
-      // A refused connection fails at once; one that took long was accepted but never answered.
-      if (!connected && std::chrono::steady_clock::now() - started > std::chrono::seconds(1))
-        throw SumoError("something at " + endpoint(b) + " accepted the connection but did not answer TraCI within " +
-                        std::to_string(kHandshakeTimeout) + " s (is it a SUMO started with --remote-port?)");
-    }
-    // libtraci's own message after a failed connect is about its clean-up ("send failed: Broken
-    // pipe"), not the cause: name the cause that can be told without connecting (a probe connection
-    // would take one of the server's client places).
-    if (!connected && !resolves(b.host))
-      throw SumoError("cannot connect to SUMO at " + endpoint(b) + ": host '" + b.host + "' not found");
-    if (!connected)
-      throw SumoError("cannot connect to SUMO at " + endpoint(b) + ": connection refused or host unreachable (start "
-                      "it with: sumo -c FILE.sumocfg --remote-port " + std::to_string(b.port) + " --num-clients N)");
+    relay_ = std::make_unique<TraciRelay>(b.host, b.port, RelayLimits{b.traci_timeout, kMaxTraciMessage});
     try {
-      const HandshakeDeadline deadline(kHandshakeTimeout);
+      libtraci::Simulation::init(relay_->client_port(), 0, "127.0.0.1");  // asks SUMO's version
+    } catch (const std::exception& e) {
+      leave();
+      throw SumoError(failure_reason(e));
+    }
+    try {
       try {
         libtraci::Simulation::setOrder(b.client_order);
-      } catch (const std::exception& e) {
+      } catch (const libsumo::TraCIException& e) {
         throw SumoError("SUMO at " + endpoint(b) + " refused client order " + std::to_string(b.client_order) + ": " +
                         e.what());
       }
@@ -291,10 +255,12 @@ class TraciSession final : public SessionImpl<LibtraciApi> {
       throw;
     } catch (const std::exception& e) {
       leave();
-      throw SumoError("SUMO at " + endpoint(b) + " did not answer TraCI within " + std::to_string(kHandshakeTimeout) +
-                      " s, or dropped the connection (" + e.what() + ")");
+      throw SumoError(failure_reason(e));
     }
   }
+
+  // Why the relay ended the connection; "" while it relays (or before it started).
+  std::string relay_failure() const { return relay_ ? relay_->failure() : std::string(); }
 
   static void leave() noexcept {
     try {
@@ -312,6 +278,7 @@ class TraciSession final : public SessionImpl<LibtraciApi> {
   };
   TempFile gui_output_;             // destroyed after gui_ (declared before it)
   std::unique_ptr<SumoProcess> gui_;
+  std::unique_ptr<TraciRelay> relay_;  // between libtraci and the server; closed after libtraci
   bool connected_ = false;
   std::vector<std::pair<std::string, std::string>> server_options_;  // connect: as the server reports them
   // A busy sumo-gui may draw the first frame after a view change without the vehicles: each picture

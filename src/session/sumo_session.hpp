@@ -51,6 +51,9 @@ struct BackendOptions {
   std::string host = "127.0.0.1";  ///< connect: the server's host
   int port = 0;                    ///< connect: its TraCI port
   int client_order = 1;            ///< connect: TraCI setOrder (clients step in ascending order)
+  /// connect, gui: [s] the longest wait for the server to accept the connection and for each of its
+  /// answers (--traci-timeout; traci_relay.hpp); 0: no limit
+  double traci_timeout = 30.0;
   int gui_delay_ms = 0;            ///< gui: sumo-gui's --delay between steps [ms]
   /// gui: a PNG of the view (TraCI GUI.screenshot) written here at the first step the ego's blinker
   /// is on (or at the last step when it never is); empty: none.

@@ -39,6 +39,7 @@ for v in nan NaN inf -inf infinity 1e999; do
   refused --seed "$v" generate "$net" --count 1 --out "$work/g"
   refused --gui-delay "$v" run "$s" --gui --out "$work/r"
   refused --client-order "$v" run "$s" --connect 127.0.0.1:1 --out "$work/r"
+  refused --traci-timeout "$v" run "$s" --connect 127.0.0.1:1 --out "$work/r"
 done
 [ -e "$work/b/results.csv" ] || [ -e "$work/w/results.csv" ] || [ -e "$work/c/results.csv" ] && fail "a batch ran"
 [ -e "$work/g" ] && fail "generate wrote $work/g"

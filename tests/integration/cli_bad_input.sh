@@ -9,10 +9,12 @@ bad=$src/tests/data/bad
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 failures=0
+total=0
 
 # case NAME ARGS... ; expects exit 2, one stderr line matching every PATTERN given after "--".
 check() {
   local name=$1; shift
+  total=$((total + 1))
   local args=() patterns=()
   while [ $# -gt 0 ] && [ "$1" != "--" ]; do args+=("$1"); shift; done
   shift
@@ -77,12 +79,23 @@ check route_file_has_ego run "$bad/route_file_has_ego.yaml" -- "ego_id_taken.rou
 port=$(python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')
 check refused_port run "$src/scenarios/intersection_left.yaml" --connect "127.0.0.1:$port" -- "cannot connect to SUMO at 127.0.0.1:$port" "connection refused or host unreachable"
 check bad_connect_address run "$src/scenarios/intersection_left.yaml" --connect nowhere -- "--connect" "not HOST:PORT"
+check empty_connect run "$src/scenarios/intersection_left.yaml" --connect "" -- "signalsim: --connect: '' is not HOST:PORT"
+check traci_timeout_without_connect run "$src/scenarios/intersection_left.yaml" --traci-timeout 5 -- "--traci-timeout" "only applies with --connect"
+# A peer that is not SUMO (tests/integration/traci_peer.py: four zero bytes), stopped by its PID.
+/usr/bin/python3 "$src/tests/integration/traci_peer.py" zeros "$work/peer_port" &
+peer=$!
+for _ in $(seq 200); do [ -s "$work/peer_port" ] && break; sleep 0.05; done
+check not_a_traci_peer run "$src/scenarios/intersection_left.yaml" --connect "127.0.0.1:$(cat "$work/peer_port")" -- \
+  "intersection_left.yaml: something at 127.0.0.1:$(cat "$work/peer_port") is not a TraCI server: it sent a message length of 0 bytes"
+kill "$peer" 2>/dev/null
+wait "$peer" 2>/dev/null
 DISPLAY= check gui_without_display run "$src/scenarios/intersection_left.yaml" --gui -- "--gui needs a display" "DISPLAY is not set"
 
 # The line the README promises, of the scenario or of the net (one block).
 check light_not_on_route run "$bad/light_not_on_route.yaml" -- "light_not_on_route.yaml:7: expect\[1\]: traffic light 'ZZ' is not on the ego's route"
 check depart_beyond_edge_line run "$bad/depart_beyond_edge.yaml" -- "depart_beyond_edge.yaml:5: ego.depart_pos: 500 m is beyond the end of edge"
 check turn_signal_distance_abc run "$bad/turn_signal_distance_abc.yaml" -- "turn_signal_distance_abc.net.xml:40: lane 'ab_0': param 'turn_signal_distance' is not a number: 'abc'" "in ego.route of"
+total=$((total + 1))
 if "$bin" inspect "$bad/turn_signal_distance_abc.net.xml" 2>&1 | grep -q "40.*lane 'ab_0'.*param 'turn_signal_distance' is not a number: 'abc'"; then
   echo "ok   inspect_lists_turn_signal_distance_defect"
 else
@@ -90,5 +103,5 @@ else
   failures=$((failures + 1))
 fi
 
-echo "$((31 - failures)) passed, $failures failed"
+echo "$((total - failures)) passed, $failures failed"
 [ $failures -eq 0 ]
