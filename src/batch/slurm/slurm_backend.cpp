@@ -43,7 +43,8 @@ void forget_slurm_job(const std::string& out_dir) {
 
 SlurmOutcome run_batch_on_slurm(const std::vector<RunSpec>& runs, const BatchSettings& settings,
                                 const SlurmOptions& slurm) {
-  require_slurm_programs({"sbatch", "squeue", "scancel"});
+  require_slurm_programs({"sbatch", "squeue", "scancel", "scontrol"});
+  require_slurm_controller();  // in seconds, before sbatch or squeue would wait on a controller that is down
   refuse_while_slurm_job_runs(settings.out_dir);
   // The tasks get absolute paths: they may start in another directory, on another node.
   const std::string out = fs::absolute(settings.out_dir).lexically_normal().string();

@@ -15,6 +15,23 @@ void require_slurm_programs(const std::vector<std::string>& programs) {
                                " is not on PATH (install slurm-client, or load the cluster's Slurm module)");
 }
 
+void require_slurm_controller() {
+  const ProgramOutput out = run_program({"scontrol", "ping"}, {}, kSlurmPingTimeout);
+  if (out.started && out.exit_code == 0) return;
+  std::string why;
+  if (out.timed_out) {
+    why = "scontrol ping " + out.err;
+  } else if (!out.started) {
+    why = "scontrol: " + out.err;
+  } else {
+    // "Slurmctld(primary) at HOST is DOWN" and a banner of asterisks; or scontrol's error lines.
+    const std::string first = out.out.substr(0, out.out.find('\n'));
+    why = "scontrol ping: " + (first.find(" is DOWN") != std::string::npos ? first
+                                                                          : stderr_one_line(out.err.empty() ? out.out : out.err));
+  }
+  throw std::runtime_error("--backend slurm: no Slurm controller answers (" + why + ")");
+}
+
 std::string output_pattern(const std::string& directory, const std::string& name) {
   // sbatch's --output is a filename pattern (%j, %A, %a, ... replaced; "%%" is a '%'), made
   // absolute with the task's directory before it is expanded, so a relative name and --chdir

@@ -14,6 +14,15 @@ namespace signalsim {
 /// `programs` that is missing.
 void require_slurm_programs(const std::vector<std::string>& programs);
 
+/// How long `scontrol ping` may take before the back-end gives up on the controller: sbatch itself
+/// retries an unreachable controller for about 18 s before it says so.
+constexpr double kSlurmPingTimeout = 5.0;  ///< [s]
+
+/// Throws std::runtime_error "--backend slurm: no Slurm controller answers (<why>)" unless
+/// `scontrol ping` reports a controller up within kSlurmPingTimeout (why: scontrol's own line, or
+/// "scontrol ping did not answer within 5 s").
+void require_slurm_controller();
+
 /// One job array to submit.
 struct ArraySubmission {
   std::string script;                   ///< the batch script (its path)
