@@ -2,6 +2,7 @@
 // byte stream.
 #include "session/traci_framing.hpp"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace signalsim::sumo {
@@ -9,6 +10,7 @@ namespace {
 
 constexpr std::size_t kLengthBytes = 4;
 constexpr std::size_t kStatusBytes = 7;  // length, id, result, the text's 4-byte length
+constexpr std::size_t kReserveAtMost = 65536;
 constexpr int kResultOk = 0x00, kResultNotImplemented = 0x01, kResultError = 0xff;
 
 // A 4-byte big-endian int at `at` (the caller checked that it is there), signed as libtraci reads it.
@@ -119,7 +121,7 @@ std::string MessageAssembler::take(const std::uint8_t* data, std::size_t n) {
       return why;
     }
     total_ = static_cast<std::size_t>(total);
-    bytes_.reserve(total_);
+    bytes_.reserve(std::min(total_, kReserveAtMost));  // grows with what arrives, not with what is announced
   }
   complete_ = total_ != 0 && bytes_.size() == total_;
   return "";

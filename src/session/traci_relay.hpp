@@ -20,6 +20,7 @@
 #include <string>
 #include <thread>
 
+#include "session/sumo_session.hpp"  // SumoError
 #include "session/traci_framing.hpp"
 
 namespace signalsim::sumo {
