@@ -64,7 +64,7 @@ void BM_SpeedPlanStep(benchmark::State& state) {
   for (auto _ : state) {
     s += 1.389;
     if (s > route.length() - 400) s = route.length() / 2;
-    benchmark::DoNotOptimize(plan_speed_under_limits(route, s, 13.0, 0.1, SpeedLimits{}));
+    benchmark::DoNotOptimize(plan_speed_under_limits(route, s, 13.0, 0.0, 0.1, SpeedLimits{}));
   }
 }
 BENCHMARK(BM_SpeedPlanStep)->Arg(100)->Arg(1000)->Arg(10000)->Arg(100000);

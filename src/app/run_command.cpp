@@ -139,7 +139,9 @@ int run(const RunOptions& options) {
       scenario = started.scenario;  // as run: a taken-over vehicle's values
       plan = std::move(started.plan);
     }  // SUMO closes here: its log is complete
-    if (!record.sumo.log.empty()) record.sumo.log_counts = sumo::count_sumo_log(record.sumo.log);
+    if (!record.sumo.log.empty())
+      record.sumo.log_counts =
+          sumo::count_sumo_log(record.sumo.log, scenario->ego.id.empty() ? sumo::kDefaultEgoId : scenario->ego.id);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const auto results = evaluate_expectations(*scenario, plan.map, record);
     const std::vector<LawVerdict> law = law_verdicts(*scenario, plan.map, record);

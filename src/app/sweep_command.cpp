@@ -8,6 +8,7 @@
 #include "app/command.hpp"
 #include "app/plot_tool.hpp"
 #include "app/sut_flags.hpp"
+#include "batch/results_table.hpp"
 #include "batch/run_list.hpp"
 #include "batch/sweep_file.hpp"
 #include "batch/sweep_plot_check.hpp"
@@ -70,8 +71,10 @@ Command add_sweep_command(CLI::App& app) {
                 for (const SweepPlot& plot : plots) {
                   std::vector<std::string> args = {settings.out_dir};
                   if (!plot.metric.empty()) args.insert(args.end(), {"--metric", plot.metric});
-                  if (!plot.x.empty()) args.insert(args.end(), {"--x", plot.x});
-                  if (!plot.y.empty()) args.insert(args.end(), {"--y", plot.y});
+                  // the axes are swept keys (or scenario): their columns may be renamed (swept_column)
+                  const auto axis = [](const std::string& key) { return key == "scenario" ? key : swept_column(key); };
+                  if (!plot.x.empty()) args.insert(args.end(), {"--x", axis(plot.x)});
+                  if (!plot.y.empty()) args.insert(args.end(), {"--y", axis(plot.y)});
                   failed = run_plot_tool(args) != 0 || failed;
                 }
                 // The pictures were asked for: a failure is a failure of the command (exit 3, kExitPicture), after

@@ -36,9 +36,11 @@ bool is_fixed_result_column(const std::string& name) {
   return false;
 }
 
+std::string swept_column(const std::string& key) { return is_run_metric_column(key) ? "swept." + key : key; }
+
 std::vector<std::string> result_columns(const std::vector<std::string>& swept, const ResultRows& rows) {
   std::vector<std::string> columns = leading_columns();
-  columns.insert(columns.end(), swept.begin(), swept.end());
+  for (const std::string& key : swept) columns.push_back(swept_column(key));
   columns.insert(columns.end(), outcome_columns().begin(), outcome_columns().end());
   std::set<std::string> fixed(columns.begin(), columns.end());
   fixed.insert(trailing_columns().begin(), trailing_columns().end());
@@ -111,7 +113,7 @@ bool row_matches(const ResultRow& row, const RunSpec& run) {
   };
   if (row.run != run.index || cell("file") != run.scenario) return false;
   for (const auto& [key, value] : run.values)
-    if (cell(key) != value) return false;
+    if (cell(swept_column(key)) != value) return false;
   return true;
 }
 

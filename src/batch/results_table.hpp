@@ -23,6 +23,10 @@ using ResultRows = std::map<std::size_t, ResultRow>;  ///< by run index
 /// a swept key may not take such a name.
 bool is_fixed_result_column(const std::string& name);
 
+/// A swept key's column: the key, or `swept.<key>` when the key is also a run-level metric's column
+/// (`max_jerk`: a judge parameter and the ride's metric), so that a key and a metric never share one.
+std::string swept_column(const std::string& key);
+
 /// Columns: run, scenario, file, <swept keys>, status, expectations_passed, expectations_total,
 /// failed_expectations, law_failed, run_dir, <metric columns of any row, metric_column_less order>, wall_time,
 /// error.

@@ -109,7 +109,7 @@ ResultRow make_row(const RunSpec& run, const std::string& out_dir, const std::st
   row.run = run.index;
   row.cells["scenario"] = run.name;
   row.cells["file"] = run.scenario;
-  for (const auto& [key, value] : run.values) row.cells[key] = value;
+  for (const auto& [key, value] : run.values) row.cells[swept_column(key)] = value;
   row.cells["run_dir"] = run_dir;
   row.cells["wall_time"] = format_text("%.2f", result.wall);
   const std::string dir = (fs::path(out_dir) / run_dir).string();
@@ -140,7 +140,7 @@ ResultRow load_error_row(const RunSpec& run) {
   row.run = run.index;
   row.cells["scenario"] = run.name;
   row.cells["file"] = run.scenario;
-  for (const auto& [key, value] : run.values) row.cells[key] = value;
+  for (const auto& [key, value] : run.values) row.cells[swept_column(key)] = value;
   row.cells["wall_time"] = "0.00";
   row.cells["status"] = "error";
   row.cells["error"] = stderr_one_line(run.load_error);

@@ -35,7 +35,8 @@ std::string joined(const std::vector<std::string>& items, const std::string& sep
 // numeric fields. The other fields hold text or true/false, which a heat map cannot show.
 const std::vector<std::string>& numeric_run_columns() {
   static const std::vector<std::string> columns = {
-      "max_decel",           "max_jerk",           "collisions",         "blinker_events", "flickers", "missed_signals",
+      "max_decel",           "max_jerk",           "p95_decel",          "p95_jerk",       "collisions",
+      "blinker_events",      "flickers",           "missed_signals",
       "red_light_violations", "expectations_passed", "expectations_total", "wall_time"};
   return columns;
 }

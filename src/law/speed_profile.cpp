@@ -13,9 +13,9 @@ double yield_braking_distance(double v) { return v * v / 6.0 + 15.0; }
 
 SpeedProfile::SpeedProfile(const RouteMap& route, double depart_front, double depart_speed, const SpeedLimits& limits,
                            double dt, std::vector<StopPoint> stops)
-    : stops_(std::move(stops)), accel_(limits.accel) {
+    : stops_(std::move(stops)), accel_(limits.accel), ramp_(limits.accel * limits.accel * limits.accel / (3.0 * limits.jerk * limits.jerk)) {
   std::sort(stops_.begin(), stops_.end(), [](const StopPoint& a, const StopPoint& b) { return a.s < b.s; });
-  double s = depart_front, v = depart_speed;
+  double s = depart_front, v = depart_speed, a = 0.0;
   const double end = route.length();
   s_.push_back(s);
   v_.push_back(v);
@@ -23,7 +23,9 @@ SpeedProfile::SpeedProfile(const RouteMap& route, double depart_front, double de
   // is cut off after a bounded number of steps.
   const std::size_t max_steps = static_cast<std::size_t>(1e7);
   for (std::size_t k = 0; s < end && k < max_steps; ++k) {
-    v = plan_speed_under_limits(route, s, v, dt, limits);
+    const LimitsPlan plan = plan_speed_under_limits(route, s, v, a, dt, limits);
+    v = plan.step.speed;
+    a = plan.step.accel;
     s += v * dt;  // SUMO's Euler update: the new speed over the step
     travel_time_ += dt;
     if (v <= 0.0) break;
@@ -41,6 +43,12 @@ double SpeedProfile::planned(double s) const {
   return v_[k - 1] + t * (v_[k] - v_[k - 1]);
 }
 
+// The jerk-limited start reaches accel after accel / jerk seconds, accel^3 / (6 jerk^2) metres on:
+// the bound counts twice that distance as ramp.
+double SpeedProfile::restart_speed(double from_rest) const {
+  return std::sqrt(2.0 * kRestartShare * accel_ * std::max(0.0, from_rest - ramp_));
+}
+
 double SpeedProfile::upper(double s) const { return planned(s) + kSpeedSlack; }
 
 const StopPoint* SpeedProfile::stop_zone_at(double s) const {
@@ -54,7 +62,7 @@ double SpeedProfile::lower(double s) const {
   double v = planned(s) - kSpeedSlack;
   // The latest stop point behind s: the ego may have restarted there from rest.
   for (const StopPoint& p : stops_)
-    if (p.s < s) v = std::min(v, std::sqrt(2.0 * kRestartShare * accel_ * (s - p.s)));
+    if (p.s < s) v = std::min(v, restart_speed(s - p.s));
   return std::max(0.0, v);
 }
 
@@ -64,7 +72,7 @@ std::string SpeedProfile::lower_reason(double s) const {
   double v = planned(s) - kSpeedSlack;
   for (const StopPoint& p : stops_)
     if (p.s < s) {
-      const double r = std::sqrt(2.0 * kRestartShare * accel_ * (s - p.s));
+      const double r = restart_speed(s - p.s);
       if (r < v) {
         v = r;
         restart = &p;

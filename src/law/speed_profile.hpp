@@ -8,7 +8,8 @@
 //               0 in every stop zone [p - braking distance, p] before a point p where it may stop
 //               (a light's stop line: the judge may stop it, docs/behaviour.md §L; a link where SUMO makes it
 //               yield: minor, stop, all-way stop, zipper, blinking light), and after p at most the
-//               restart from rest sqrt(2 * kRestartShare * accel * (s - p));
+//               restart from rest sqrt(2 * kRestartShare * accel * (s - p - ramp)), ramp =
+//               accel^3 / (3 jerk^2) (the jerk-limited start);
 //             the lesser of that and planned - kSpeedSlack, never below 0.
 // Queries are O(log n) binary searches on the rollout's samples.
 #pragma once
@@ -65,7 +66,9 @@ class SpeedProfile : public SpeedBounds {
  private:
   std::vector<double> s_, v_;  // rollout samples: front position and speed, s ascending
   std::vector<StopPoint> stops_;
+  double restart_speed(double from_rest) const;  // the lower bound after a rest [m/s]
   double accel_ = 1.0;
+  double ramp_ = 0.0;  // [m]
   double travel_time_ = 0.0;
 };
 

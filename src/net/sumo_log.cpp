@@ -4,8 +4,9 @@
 
 namespace signalsim::sumo {
 
-SumoLogCounts count_sumo_log(const std::string& path) {
+SumoLogCounts count_sumo_log(const std::string& path, const std::string& ego) {
   SumoLogCounts counts;
+  const std::string ego_vehicle = "Vehicle '" + ego + "' ";
   std::ifstream in(path);
   if (!in) return counts;
   counts.read = true;
@@ -14,7 +15,10 @@ SumoLogCounts count_sumo_log(const std::string& path) {
     if (line.rfind("Warning: ", 0) != 0) continue;
     ++counts.warnings;
     if (line.find("Teleporting vehicle") != std::string::npos) ++counts.teleports;
-    if (line.find("emergency braking") != std::string::npos) ++counts.emergency_braking;
+    if (line.find("emergency braking") != std::string::npos) {
+      ++counts.emergency_braking;
+      if (line.find(ego_vehicle) != std::string::npos) ++counts.ego_emergency_braking;
+    }
     if (line.find("ollision") != std::string::npos) ++counts.collisions;
   }
   return counts;

@@ -18,7 +18,8 @@ int rank_in(const std::vector<std::string>& list, const std::string& name) {
 const std::vector<std::string>& run_level_order() {
   static const std::vector<std::string> order = {"decider",        "decider_agreement", "light_judge",
                                                  "light_judge_agreement",
-                                                 "max_decel",      "max_jerk",       "collisions",
+                                                 "max_decel",      "max_jerk",       "p95_decel",
+                                                 "p95_jerk",       "collisions",
                                                  "blinker_events", "flickers",       "missed_signals",
                                                  "red_light_violations"};
   return order;
@@ -61,6 +62,11 @@ bool skipped_field(const std::string& key) {
 }
 
 }  // namespace
+
+bool is_run_metric_column(const std::string& name) {
+  if (name == "decider" || name == "light_judge") return false;
+  return rank_in(run_level_order(), name) < static_cast<int>(run_level_order().size());
+}
 
 std::vector<std::pair<std::string, std::string>> flatten_metrics(const nlohmann::ordered_json& metrics) {
   std::vector<std::pair<std::string, std::string>> out;

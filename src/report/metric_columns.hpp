@@ -21,4 +21,8 @@ std::vector<std::pair<std::string, std::string>> flatten_metrics(const nlohmann:
 /// metrics), then turns, roundabout entries, exits, other sections, lights; by number, then field.
 bool metric_column_less(const std::string& a, const std::string& b);
 
+/// Whether `name` is a run-level metric's column (max_decel, max_jerk, p95_decel, ..., a SUT's
+/// agreement); not the SUT's name columns (decider, light_judge), which a swept SUT shares.
+bool is_run_metric_column(const std::string& name);
+
 }  // namespace signalsim

@@ -12,6 +12,14 @@
 namespace signalsim {
 namespace {
 
+// Nearest-rank percentile: the smallest value with at least p % of the values at or below it; 0 of none.
+double percentile(std::vector<double> values, double p) {
+  if (values.empty()) return 0.0;
+  std::sort(values.begin(), values.end());
+  const auto rank = static_cast<std::size_t>(std::ceil(p / 100.0 * static_cast<double>(values.size())));
+  return values[std::clamp<std::size_t>(rank, 1, values.size()) - 1];
+}
+
 }  // namespace
 
 std::vector<SignalSection> run_signal_sections(const Scenario& scenario, const RouteMap& route, const RunRecord& record) {
@@ -29,15 +37,23 @@ RunMetrics compute_metrics(const Scenario& scenario, const RouteMap& route, cons
   // The acceleration as timeline.csv has it, so that metrics recomputed from the files (batch's
   // fallback) are the run's own: the jerk divides its rounding by the step.
   const auto written = [](double v) { return as_written(v, 3); };
+  // The ride while moving: a row whose step had the ego moving at its start or its end (not a
+  // rest); the jerk between two consecutive such rows.
+  const auto moving = [&](std::size_t i) { return rows[i].speed > kRideRestSpeed || written(rows[i].accel) != 0.0; };
   double min_accel = 0.0, max_jerk = 0.0;
+  std::vector<double> decels, jerks;
   for (std::size_t i = 0; i < rows.size(); ++i) {
     min_accel = std::min(min_accel, written(rows[i].accel));
-    if (i > 0 && rows[i].time > rows[i - 1].time)
-      max_jerk = std::max(max_jerk, std::abs(written(rows[i].accel) - written(rows[i - 1].accel)) /
-                                        (rows[i].time - rows[i - 1].time));
+    if (moving(i)) decels.push_back(std::max(0.0, -written(rows[i].accel)));
+    if (i == 0 || !(rows[i].time > rows[i - 1].time)) continue;
+    const double jerk = std::abs(written(rows[i].accel) - written(rows[i - 1].accel)) / (rows[i].time - rows[i - 1].time);
+    max_jerk = std::max(max_jerk, jerk);
+    if (moving(i) && moving(i - 1)) jerks.push_back(jerk);
   }
   m.max_decel = rounded(-min_accel, 3);
   m.max_jerk = rounded(max_jerk, 3);
+  m.p95_decel = rounded(percentile(std::move(decels), 95.0), 3);
+  m.p95_jerk = rounded(percentile(std::move(jerks), 95.0), 3);
   m.collisions = record.collisions;
   m.blinker_events = static_cast<int>(std::count_if(record.events.begin(), record.events.end(),
                                                     [](const TimelineEvent& e) { return e.kind == "blinker"; }));
@@ -54,6 +70,8 @@ nlohmann::ordered_json to_json(const RunMetrics& m) {
   nlohmann::ordered_json out;
   out["max_decel"] = m.max_decel;
   out["max_jerk"] = m.max_jerk;
+  out["p95_decel"] = m.p95_decel;
+  out["p95_jerk"] = m.p95_jerk;
   out["collisions"] = m.collisions;
   out["blinker_events"] = m.blinker_events;
   out["flickers"] = m.flickers;

@@ -11,8 +11,8 @@
 //             section_metrics.hpp: lead distance / time, time on, missed, flickers of each.
 //   lights    light_metrics.hpp: state at the line, red-light violation, the judge's decision and
 //             zone, emergency stop, stop position error of each signalised approach.
-//   run       max deceleration, max jerk (from the timeline's accel), collisions, blinker events,
-//             flickers, missed signals, red-light violations.
+//   run       max deceleration, max jerk (from the timeline's accel), their 95th percentiles while
+//             moving, collisions, blinker events, flickers, missed signals, red-light violations.
 //   columns   metric_columns.hpp: the metrics as results.csv cells and their order.
 //
 // Computed from what the run recorded (RunRecord) and the route (RouteMap), never from SUMO.
@@ -40,9 +40,14 @@ nlohmann::ordered_json optional_json(const std::optional<T>& v) {
   return v ? nlohmann::ordered_json(*v) : nlohmann::ordered_json(nullptr);
 }
 
+/// [m/s] Below this speed with no acceleration, a row is at rest (the percentiles leave it out).
+inline constexpr double kRideRestSpeed = 0.01;
+
 struct RunMetrics {
   double max_decel = 0.0;          ///< [m/s^2] largest deceleration (>= 0)
   double max_jerk = 0.0;           ///< [m/s^3] largest |d accel / dt| between consecutive steps
+  double p95_decel = 0.0;          ///< [m/s^2] 95th percentile (nearest rank) of the deceleration while moving
+  double p95_jerk = 0.0;           ///< [m/s^3] 95th percentile of |d accel / dt| between rows while moving
   int collisions = 0;
   int blinker_events = 0;
   int flickers = 0;                ///< over the whole run

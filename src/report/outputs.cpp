@@ -87,6 +87,7 @@ nlohmann::ordered_json sumo_json(const Scenario& scenario, const RunSumoInfo& in
                        {"errors", info.log_counts.errors},
                        {"teleports", info.log_counts.teleports},
                        {"emergency_braking", info.log_counts.emergency_braking},
+                       {"ego_emergency_braking", info.log_counts.ego_emergency_braking},
                        {"collisions", info.log_counts.collisions}};
   return out;
 }
@@ -147,7 +148,7 @@ void write_timeline_csv(const std::string& path, const std::vector<TimelineRow>&
   std::string out =
       "time,s_front,x,y,speed,accel,edge,lane,lateral_offset,blinker,blinker_source,sumo_signals,"
       "tl_id,tl_state,tl_observed,tl_decision,stop_distance,judge_distance,yellow_lamp_line,zone,stop_s,"
-      "stop_level,planned_offset";
+      "stop_level,planned_offset,planned_speed,speed_limited_by,sumo_speed,sumo_limited_by,leader,leader_gap";
   if (columns.v2i) out += ",v2i_time_to_red";
   if (columns.decider) out += ",ref_blinker,ref_blinker_source";
   if (columns.light_judge) out += ",ref_tl_decision,tl_reason";
@@ -195,6 +196,15 @@ void write_timeline_csv(const std::string& path, const std::vector<TimelineRow>&
     out += ',';
     text(r.stop_level ? to_string(*r.stop_level) : std::string_view());
     optional_number(r.planned_offset);
+    out += ',';
+    optional_number(r.planned_speed);
+    out += ',';
+    text(r.speed_limited_by);
+    optional_number(r.sumo_speed);
+    out += ',';
+    text(r.sumo_limited_by);
+    text(r.leader);
+    optional_number(r.leader_gap);
     if (columns.v2i) {
       out += ',';
       optional_number(r.v2i_time_to_red);

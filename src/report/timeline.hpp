@@ -16,6 +16,9 @@
 
 namespace signalsim {
 
+/// [m/s] SUMO's speed after a step this far below the command: something of SUMO's held the ego.
+inline constexpr double kSpeedShortfall = 0.01;
+
 struct TimelineRow {
   double time = 0.0;             ///< [s] simulation time of the observation
   double s_front = 0.0;          ///< route position of the front bumper [m]
@@ -40,6 +43,17 @@ struct TimelineRow {
   double yellow_lamp_line = 0.0; ///< v * yellow_lamp_period [m] while judged
   std::optional<double> stop_s;  ///< route s of the stop point while a stop is requested
   std::optional<StopLevel> stop_level;  ///< constraint set used while braking for a stop
+  /// "Why did it slow down?" (docs/outputs.md): the speed signalsim commanded for the step and what
+  /// set it (empty when SUMO drove); SUMO's speed after the step (the next row's; empty on the last
+  /// row) and, when it fell short of the command by more than kSpeedShortfall, what held it:
+  /// "leader" (its id and the gap from the front bumper to its rear) or "sumo" (another of SUMO's
+  /// rules: its right of way at a junction, its own lane limit).
+  std::optional<double> planned_speed;
+  std::string speed_limited_by;
+  std::optional<double> sumo_speed;
+  std::string sumo_limited_by;
+  std::string leader;
+  std::optional<double> leader_gap;
   /// V2I (docs/behaviour.md §L1.7, only with v2i.use_remaining_time): the judge's V2I rule held this step,
   /// and the predicted time to red of the ego's link in the predictions in force [s] (empty: none).
   bool v2i_stop = false;

@@ -21,6 +21,28 @@ double lane_change_room(double edge_length, bool first, const LaneChangeEgo& ego
   return edge_length - ego.base_link_to_front - start;
 }
 
+double lane_change_speed(double edge_length, bool first, const EdgeSpeeds& speeds, const LaneChangeEgo& ego) {
+  const double top = std::min(ego.max_speed, speeds.limit);
+  const double room = lane_change_room(edge_length, first, ego);
+  if (room <= 0.0) return top;
+  const LaneChangeTimingDefault t = default_lane_change(room);
+  const double base_start = first ? ego.depart_pos - ego.base_link_to_front : 0.0;
+  const double from = base_start + t.lead + ego.base_link_to_front;  // the front on the edge [m]
+  const double to = from + std::max(0.0, t.length);
+  const double entry_at = first ? ego.depart_pos : 0.0;
+  const double entry = first ? (ego.depart_speed >= 0.0 ? ego.depart_speed : top) : speeds.entry;
+  double fastest = 0.0;
+  for (double x = from;; x = std::min(x + 1.0, to)) {  // metre by metre (at most kLaneChangeLength)
+    double v = top;
+    if (std::isfinite(entry)) v = std::min(v, std::sqrt(entry * entry + 2.0 * ego.accel * std::max(0.0, x - entry_at)));
+    if (std::isfinite(speeds.exit))
+      v = std::min(v, std::sqrt(speeds.exit * speeds.exit + 2.0 * ego.decel * std::max(0.0, edge_length - x)));
+    fastest = std::max(fastest, v);
+    if (x >= to) break;
+  }
+  return fastest;
+}
+
 LaneChangeTimingDefault default_lane_change(double room) {
   LaneChangeTimingDefault out;
   out.lead = std::min(kLaneChangeLead, 0.2 * room);

@@ -10,7 +10,9 @@
 // Fit: the default lane change's length must be at least min_lane_change_length for its shift: a
 // car can follow the quintic shift (planning/shift_line.hpp, peak curvature (10/sqrt 3) d / L^2)
 // only while that curvature stays below the sharpest it can drive at its speed, the lesser of its
-// steering limit 1 / kMinTurningRadius and the grip limit a_lat / v^2.
+// steering limit 1 / kMinTurningRadius and the grip limit a_lat / v^2. The speed is the one the ego
+// has over the lane change (lane_change_speed): under the edge's limit and its maximum, what it can
+// have gained since the turn onto the edge and what still lets it brake for the turn off it.
 #pragma once
 
 #include <cstddef>
@@ -35,6 +37,9 @@ struct LaneChangeEgo {
   double base_link_to_front = vehicle_defaults::kBaseLinkToFront;  ///< [m]
   double depart_pos = 0.0;          ///< [m] front bumper on the first edge
   double max_speed = vehicle_defaults::kMaxSpeed;  ///< [m/s] the ego drives no faster, nor faster than the lane
+  double accel = 1.0;               ///< [m/s^2] its planned acceleration (ego.accel)
+  double decel = 1.0;               ///< [m/s^2] its planned deceleration (ego.decel)
+  double depart_speed = -1.0;       ///< [m/s] on the first edge; < 0: unknown (max_speed)
   double max_lateral_accel = 9.0;   ///< [m/s^2] its grip (ego.emergency_decel: the same tyres)
   /// The lane the ego is on when it enters the first edge, when that is not signalsim's choice (a
   /// taken-over vehicle departs where SUMO put it); -1: the plan chooses.
@@ -52,8 +57,23 @@ struct LaneChangeEgo {
 struct EdgeRoom {
   double room = std::numeric_limits<double>::infinity();  ///< lane_change_room [m]
   std::vector<double> widths;                              ///< lane widths by index [m]
-  double speed = 0.0;  ///< the ego's speed there: min(max_speed, the edge's fastest lane) [m/s]
+  double speed = 0.0;  ///< the ego's speed over its default lane change there (lane_change_speed) [m/s]
 };
+
+/// The limits around a route edge a lane change's speed depends on [m/s].
+struct EdgeSpeeds {
+  double limit = std::numeric_limits<double>::infinity();  ///< the edge's fastest lane
+  /// The turn onto the edge (its internal lane's limit) and the turn off it; infinity: none (the
+  /// route's first or last edge, a net without internal lanes).
+  double entry = std::numeric_limits<double>::infinity();
+  double exit = std::numeric_limits<double>::infinity();
+};
+
+/// The highest speed the ego has over the default lane change on an edge of `edge_length`
+/// (`first`: the route's first edge): min(max_speed, limit, sqrt(entry^2 + 2 accel x),
+/// sqrt(exit^2 + 2 decel (length - x))) over the front's positions x of the lateral motion; on the
+/// first edge the entry is the departure (depart_speed at depart_pos).
+double lane_change_speed(double edge_length, bool first, const EdgeSpeeds& speeds, const LaneChangeEgo& ego);
 
 /// One lateral motion of a lane plan: on route edge `edge`, from lane `from_lane` to `to_lane`.
 struct PlannedLaneChange {

@@ -1,6 +1,7 @@
 #include "route/route_lanes.hpp"
 
 #include <algorithm>
+#include <limits>
 
 #include "route/route_builder.hpp"
 #include "route/sumo_lane_choice.hpp"
@@ -12,13 +13,31 @@ EdgeRoom room_of(const NetEdge& edge, bool first, const LaneChangeEgo& ego) {
   EdgeRoom r;
   const double length = edge.lanes.front().length;  // netconvert gives every lane its edge's length
   r.room = lane_change_room(length, first, ego);
-  double fastest = 0.0;
-  for (const NetLane& lane : edge.lanes) {
-    r.widths.push_back(lane.width);
-    fastest = std::max(fastest, lane.speed);
-  }
-  r.speed = std::min(ego.max_speed, fastest);
+  for (const NetLane& lane : edge.lanes) r.widths.push_back(lane.width);
   return r;
+}
+
+// The limit of a turn between two route edges: the fastest internal lane of their connections
+// (infinity without internal lanes), an upper bound on the speed the ego has there.
+double turn_limit(const NetIndex& net, const std::vector<const NetConnection*>& links) {
+  double fastest = -1.0;
+  for (const NetConnection* c : links)
+    if (const NetLane* via = c->via.empty() ? nullptr : net.lane(c->via)) fastest = std::max(fastest, via->speed);
+  return fastest < 0.0 ? std::numeric_limits<double>::infinity() : fastest;
+}
+
+// Each room's speed (lane_change_speed): the edge's fastest lane and the turns on either side.
+void set_room_speeds(const NetIndex& net, const std::vector<const NetEdge*>& route,
+                     const std::vector<std::vector<const NetConnection*>>& links, const LaneChangeEgo& ego,
+                     std::vector<EdgeRoom>& rooms) {
+  for (std::size_t i = 0; i < route.size(); ++i) {
+    EdgeSpeeds speeds;
+    speeds.limit = 0.0;
+    for (const NetLane& lane : route[i]->lanes) speeds.limit = std::max(speeds.limit, lane.speed);
+    if (i > 0) speeds.entry = turn_limit(net, links[i - 1]);
+    if (i + 1 < route.size()) speeds.exit = turn_limit(net, links[i]);
+    rooms[i].speed = lane_change_speed(route[i]->lanes.front().length, i == 0, speeds, ego);
+  }
 }
 
 // "a passenger car" (signalsim's own ego), else "vClass 'bus'".
@@ -65,6 +84,8 @@ RouteLanes plan_route_lanes(const NetIndex& net, const std::vector<const NetEdge
       throw RouteError("route edges " + quoted_id(route[i]->id) + " -> " + quoted_id(route[i + 1]->id) + " are not connected");
     }
   }
+
+  set_room_speeds(net, route, links, ego, out.rooms);
 
   // Where a lane has several connections to the next edge, SUMO takes the one to its best
   // continuation lane (sumo_lane_choice.hpp), whatever signalsim plans: only that one is planned.

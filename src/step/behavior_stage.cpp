@@ -26,8 +26,9 @@ BehaviorSignalInput signal_input(const LateralSegment& seg, const BehaviorStage:
 }
 
 // Keeps the nearest of this step's holds.
-void add_hold(BehaviorStage::Result& result, std::optional<double> distance, const char* reason) {
-  if (distance && (!result.hold || *distance < result.hold->distance)) result.hold = BehaviorStage::Hold{*distance, reason};
+void add_hold(BehaviorStage::Result& result, std::optional<double> distance, const char* reason, const char* kind) {
+  if (distance && (!result.hold || *distance < result.hold->distance))
+    result.hold = BehaviorStage::Hold{*distance, reason, kind};
 }
 
 // Avoidance: every shift line of its plan (ids from the segment's first; registered, or the candidate
@@ -217,7 +218,8 @@ void BehaviorStage::advance_lane_change(std::size_t index, LaneChangeExecution::
     // Done or given up: the next lane change starts afresh.
     if (to == LaneChangePhase::Done || to == LaneChangePhase::Missed) modules_.lane_change.reset();
   }
-  add_hold(result, execution.distance_to_hold_point(o.ego.s_base), "the hold point of a lane change waiting for approval");
+  add_hold(result, execution.distance_to_hold_point(o.ego.s_base), "the hold point of a lane change waiting for approval",
+           "lane_change_hold");
 }
 
 // The avoidance's phase moves on before its module runs (an approval or a release is seen by the step
@@ -232,7 +234,8 @@ void BehaviorStage::run_avoidance(const LateralSegment& seg, const Observation& 
                 planned_shift_at_ego, signal_input(seg, o, path), in);
   add_hold(result, execution.distance_to_hold_point(o.ego.s_base),
            execution.phase() == AvoidancePhase::Holding ? "an approved avoidance holding with its blinker (stop_on_approval)"
-                                                        : "the wait point of an avoidance waiting for approval");
+                                                        : "the wait point of an avoidance waiting for approval",
+           "avoidance_hold");
 }
 
 // The start planner: its clock sees the step first (Autoware's updateData), then the module runs; it
@@ -244,7 +247,8 @@ void BehaviorStage::run_pull_out(const LateralSegment& seg, const Observation& o
                signal_input(seg, o, path), in);
   if (departure_.holds(o.now))
     add_hold(result, 0.0, departure_.engaged(o.now) ? "the start planner's wait before starting (prepare_time_before_start)"
-                                                    : "the start planner before engagement (engage_delay)");
+                                                    : "the start planner before engagement (engage_delay)",
+             "pull_out_wait");
 }
 
 std::vector<LaneChangeRecord> BehaviorStage::lane_change_records() const {

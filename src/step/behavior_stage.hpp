@@ -84,6 +84,8 @@ class BehaviorStage {
   struct Hold {
     double distance = 0.0;
     const char* reason = "";  ///< what holds it ("the hold point of a lane change waiting for approval", ...)
+    /// The same as the timeline's speed_limited_by says it: lane_change_hold, avoidance_hold, pull_out_wait.
+    const char* kind = "";
   };
   struct Result {
     TurnSignalInfo behavior;               ///< the merged request for the decider

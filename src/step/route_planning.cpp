@@ -25,6 +25,10 @@ sumo::LaneChangeEgo lane_change_ego(const Scenario& scenario) {
   ego.base_link_to_front = scenario.ego.base_link_to_front;
   ego.depart_pos = scenario.ego.depart_pos;
   ego.max_speed = scenario.ego.max_speed;
+  ego.accel = scenario.ego.accel;
+  ego.decel = scenario.ego.decel;
+  // A taken-over vehicle departs at the speed SUMO gives it (unknown here: its maximum).
+  if (scenario.ego.id.empty()) ego.depart_speed = scenario.ego.depart_speed;
   ego.max_lateral_accel = scenario.ego.emergency_decel;
   // A taken-over vehicle's departure lane is SUMO's: the plan starts where it is (an added ego's
   // depart_lane asks for a lane change onto the planned lane instead).

@@ -8,34 +8,18 @@
 
 #include <nlohmann/json.hpp>
 
-#include "planning/stop/jerk_limited_stop.hpp"
 #include "step/route_planning.hpp"
 
 namespace signalsim {
 namespace {
+
+constexpr double kDepartedSpeed = 0.1;  // [m/s] start_planner moving_velocity_threshold
 
 Blinker blinker_of(const TurnSignalDecision& d) {
   if (d.hazard == HazardLights::Enable) return Blinker::Hazard;
   if (d.turn == TurnIndicator::EnableLeft) return Blinker::Left;
   if (d.turn == TurnIndicator::EnableRight) return Blinker::Right;
   return Blinker::None;
-}
-
-// The nearest stop line ahead of a light the judge passes on a stop signal (docs/behaviour.md §L2.3 "can pass
-// through during yellow lamp"), or +infinity.
-double passed_on_stop_signal(const std::vector<LightStep>& lights) {
-  double line = std::numeric_limits<double>::infinity();
-  for (const LightStep& l : lights)
-    if (l.judged && l.front_to_stop_line > 0.0 && l.result.decision == JudgeDecision::Pass &&
-        l.result.zone == JudgeZone::PassThroughYellow)
-      line = std::min(line, l.light->s_stop_line);
-  return line;
-}
-
-StopSpeedPlanner stop_planner_for(const EgoSpec& ego) {
-  StopPlannerParameters params;
-  params.emergency.min_acc = -ego.emergency_decel;
-  return StopSpeedPlanner(params, ego.emergency_decel);
 }
 
 BehaviorStageConfig behavior_config_for(const Scenario& scenario, const RouteMap& route, double start_time) {
@@ -47,6 +31,14 @@ BehaviorStageConfig behavior_config_for(const Scenario& scenario, const RouteMap
   config.gaps = {scenario.run_params.lane_change_safety_rear_gap, scenario.run_params.lane_change_safety_front_gap};
   config.start_time = start_time;
   return config;
+}
+
+// The plan's last pull over, if any: its goal is a stop (the speed stage).
+const LateralSegment* pull_over_goal(const LateralPlan& plan) {
+  const LateralSegment* goal = nullptr;
+  for (const LateralSegment& seg : plan.segments)
+    if (seg.kind == LateralKind::PullOver) goal = &seg;
+  return goal;
 }
 
 RequestSource module_of(LateralKind kind) {
@@ -125,21 +117,18 @@ StepCore::StepCore(CoreSetup setup)
       lateral_(setup.lateral),
       b2f_(scenario_.ego.base_link_to_front),
       dt_(scenario_.step_length),
-      limits_{scenario_.ego.max_speed, scenario_.ego.accel, scenario_.ego.decel},
       judge_params_(scenario_.run_params.judge),
       end_time_(run_end_time(scenario_, setup.start_time)),
       decider_(turn_signal_parameters(scenario_)),
       behavior_(lateral_, behavior_parameters(scenario_), behavior_config_for(scenario_, route_, setup.start_time)),
       lights_(std::move(setup.lights), judge_params_, scenario_.perception,
               scenario_.run_params.decider.forward_path_length, scenario_.v2i_channel),
-      stop_speed_(stop_planner_for(scenario_.ego)),
       outcomes_(judge_params_.stop_margin),
       stuck_(scenario_.run_params.stuck_rest_time),
       plan_watch_(route_, lateral_),
       locator_(route_, scenario_.ego.depart_pos),
-      suts_(std::move(setup.suts)) {
-  for (const LateralSegment& seg : behavior_.plan().segments)
-    if (seg.kind == LateralKind::PullOver) pull_over_goal_ = &seg;
+      suts_(std::move(setup.suts)),
+      speed_(scenario_, route_, pull_over_goal(behavior_.plan())) {
   record_.base_link_to_front = b2f_;
   record_.sumo = std::move(setup.sumo);
   record_.v2i = judge_params_.v2i.use_remaining_time;
@@ -170,7 +159,7 @@ ObservationDemand StepCore::demand(const sumo::EgoState& ego) {
   if (suts_.decider && suts_.decider->reads_sumo_signals()) want.signals = want.signals_now = true;
   if (suts_.light_judge) want.ego_parameters = suts_.light_judge->ego_parameters(demanded_lights(want));
   want.leader = outcomes_.needs_leader(row_speed) || stuck_.may_end_at(ego.time, row_speed) ||
-                ego.time + dt_ >= end_time_ - 0.5 * dt_;
+                ego.time + dt_ >= end_time_ - 0.5 * dt_ || fell_short(ego.speed);
   return want;
 }
 
@@ -194,7 +183,9 @@ StepNow StepCore::observe(const StepObservation& seen) {
   now.backing = backing();
   now.moving_back = now.backing && behavior_.engaged(now.sumo.time);
   now.ego = EgoOnRoute{s_front, s_front - b2f_, row_speed_of(now.sumo.speed, now.sumo.time)};
-  if (now.sumo.speed > kRestSpeed) departed_ = true;
+  // Autoware's start planner (updateData): has_departed once engaged and faster than its
+  // moving_velocity_threshold, 0.1 m/s (docs/behaviour.md §T8.2 "Pull out").
+  if (now.sumo.speed > kDepartedSpeed && behavior_.engaged(now.sumo.time)) departed_ = true;
   now.segment = behavior_.plan().on_edge(now.sumo.edge);
   now.lateral_offset = now.segment ? seen.lateral_offset.value() : now.sumo.lateral_offset;
   return now;
@@ -214,7 +205,28 @@ std::vector<OccupiedSpan> StepCore::target_lane_traffic(const StepObservation& s
 // One step: maneuver (the behaviour modules, docs/behaviour.md §T8, and the lane changes' phases),
 // decide (the decider takes the window of route lanelets around base_link itself, since its back
 // length depends on the roundabouts, docs/behaviour.md §T3.2), light, plan; then the commands.
+// Whether SUMO's speed now fell short of the previous step's command (the leader then explains it).
+bool StepCore::fell_short(double sumo_speed) const {
+  return !record_.rows.empty() && record_.rows.back().planned_speed &&
+         sumo_speed < *record_.rows.back().planned_speed - kSpeedShortfall;
+}
+
+// The previous row's step as SUMO executed it: its speed after the step and, when it fell short of
+// the command, SUMO's leader now (asked for by demand) or SUMO's other rules.
+void StepCore::explain_previous_row(const StepObservation& seen) {
+  if (record_.rows.empty()) return;
+  TimelineRow& previous = record_.rows.back();
+  previous.sumo_speed = seen.ego.speed;
+  if (!fell_short(seen.ego.speed)) return;
+  previous.sumo_limited_by = seen.leader ? "leader" : "sumo";
+  if (seen.leader) {
+    previous.leader = seen.leader->id;
+    previous.leader_gap = seen.leader->gap;
+  }
+}
+
 Commands StepCore::step(const StepObservation& seen) {
+  explain_previous_row(seen);
   PendingStep& p = pending_.emplace();
   p.now = observe(seen);
   const StepNow& now = p.now;
@@ -239,7 +251,16 @@ Commands StepCore::step(const StepObservation& seen) {
     }
     if (suts_.light_judge) judge_under_test(in, p.lights);
   }
-  p.plan = plan_speed(now, p.behavior, p.lights);
+  p.plan = speed_.plan({.s_front = now.ego.s_front,
+                         .s_base = now.ego.s_base,
+                         .speed = now.sumo.speed,
+                         .accel = now.sumo.accel,
+                         .backing = now.backing,
+                         .moving_back = now.moving_back,
+                         .off_plan = now.off_plan,
+                         .lights = &p.lights.steps,
+                         .stopping = p.lights.stopping,
+                         .hold = &p.behavior.hold});
   return commands(p);
 }
 
@@ -317,49 +338,6 @@ StepLights StepCore::light(const StepNow& now, const StepObservation& seen) {
   out.sumo_right_of_way = !light_decides_next_junction(route_, now.ego.s_front, out.steps);
   return out;
 }
-// plan: lane limits, and a jerk-limited stop for each stop point (planning/stop/stop_speed_planner).
-SpeedPlan StepCore::plan_speed(const StepNow& now, const BehaviorStage::Result& behavior, const StepLights& lights) {
-  SpeedPlan plan;
-  // A light the judge passes on a stop signal (pass_through_yellow: it cannot stop, and reaches the
-  // line within the yellow lamp period at its current speed) is crossed at that speed: the limits
-  // beyond its stop line apply from the line on (slowing before it for a turn would reach the line
-  // on red).
-  const double passed_line = passed_on_stop_signal(lights.steps);
-  const double limits_speed =
-      plan_speed_under_limits(route_, now.ego.s_front, now.sumo.speed, dt_, limits_, passed_line);
-  // SUMO would brake ahead of the turn's limit on its own (its safe speed looks at the next lanes'
-  // limits): while crossing such a line its lane limits are off, the planner's apply again beyond it.
-  plan.sumo_lane_limits = !std::isfinite(passed_line);
-  stop_speed_.begin_step(now.sumo.speed, now.sumo.accel, limits_speed, dt_);
-  if (lights.stopping) plan.stop_level = stop_speed_.add_stop(*lights.stopping->result.stop_point_distance);
-  // The pull-over goal: a jerk-limited stop with base_link at the goal (its level is not recorded).
-  std::optional<StopLevel> goal_level;
-  if (pull_over_goal_) goal_level = stop_speed_.add_stop(pull_over_goal_->goal_s - now.ego.s_base);
-  // A module's hold (a lane change or an avoidance waiting for approval, an avoidance holding on
-  // approval, a pull out before it starts): base_link comes to rest there (the stop constrains the
-  // speed from the step where a normal stop must begin, until the hold ends).
-  std::optional<StopLevel> hold_level;
-  if (behavior.hold) hold_level = stop_speed_.add_stop(behavior.hold->distance);
-  plan.speed = stop_speed_.speed();
-  plan.emergency_braking = plan.stop_level == StopLevel::Emergency || hold_level == StopLevel::Emergency;
-  if (now.backing) plan.speed = 0.0;  // the back-up moves the ego (apply)
-  stop_speed_.end_step(plan.speed);
-  // What of signalsim holds the ego at rest this step, if anything (the stuck rule).
-  // Off the plan, signalsim's stops are for the planned lanes, not the one SUMO drives: it holds nothing.
-  if (plan.speed < kRestSpeed && !now.off_plan) {
-    plan.held_by = now.moving_back     ? "backing up"
-                   : plan.stop_level   ? "stopped for light " + lights.stopping->light->tls_id
-                   : hold_level        ? std::string(behavior.hold->reason)
-                   : goal_level        ? "the pull-over goal"
-                                       : "its speed plan";
-  }
-  // In the queue before a red light the ego rests behind others, short of its own stop point: the
-  // stuck clock pauses while a judge asks for a stop (a red lasting longer than stuck_rest_time is
-  // no deadlock), but does not restart, so a car parked before a light is still found out.
-  plan.queued = lights.stopping != nullptr && plan.held_by.empty() && !now.off_plan;
-  return plan;
-}
-
 // The commands: SUMO's modes (right of way, lane limits, emergency braking), the blinker bits and the
 // speed (re-sent every step, docs/behaviour.md §S4), the lateral plan's offset where base_link will be
 // after the step (normal lanes of the plan's edge only), the back-up.
@@ -391,6 +369,8 @@ bool StepCore::record(const StepObservation& seen, const StepFeedback& feedback)
   TimelineRow row = timeline_row(now.sumo, now.ego, now.lateral_offset, p.planned_offset, p.blinker.blinker,
                                  p.blinker.source, p.lights.shown, p.plan.stop_level);
   row.sumo_signals = feedback.signals;  // -1 once the ego arrived
+  row.planned_speed = p.plan.speed;
+  row.speed_limited_by = p.plan.limited_by;
   if (p.reference) {
     row.ref_blinker = p.reference->blinker;
     row.ref_blinker_source = p.reference->source;

@@ -6,7 +6,8 @@
 //   demand    locate the ego's front on the route (map/route_locator); ask for the offset from the
 //             lateral plan's lane on the ego's edge, a waiting lane change's target-lane traffic,
 //             the lights of the window (light_stage), and SUMO's leader when this row may need it
-//             (a stop may begin, the stuck rule or the end may end the run: the leader at the row)
+//             (a stop may begin, the stuck rule or the end may end the run: the leader at the row;
+//             SUMO executed less than the last command: the leader explains that row)
 //   step      observe (the ego against the plans) -> maneuver -> decide -> light -> plan -> Commands
 //   record    the row with the mask SUMO showed while executing the commands; events on change;
 //             stops and red crossings; the end: arrived, stuck or out of time
@@ -18,8 +19,6 @@
 #include <vector>
 
 #include "map/route_locator.hpp"
-#include "planning/speed_limit_planner.hpp"
-#include "planning/stop/stop_speed_planner.hpp"
 #include "report/timeline.hpp"
 #include "route/approach_lights.hpp"
 #include "scenario/scenario.hpp"
@@ -27,6 +26,7 @@
 #include "step/light_outcomes.hpp"
 #include "step/light_stage.hpp"
 #include "step/plan_watch.hpp"
+#include "step/speed_stage.hpp"
 #include "step/run_core.hpp"
 #include "step/step_record.hpp"
 #include "step/stuck_watch.hpp"
@@ -83,16 +83,6 @@ struct StepLights {
 /// Sets `stopping` (the nearest stop requested, if any) and `shown` (that light, else the nearest).
 void choose_stopping_and_shown(StepLights& lights);
 
-/// plan: the speed commanded for the step, SUMO's modes for it, and what holds the ego.
-struct SpeedPlan {
-  double speed = 0.0;                   ///< [m/s] commanded (0 while backing up)
-  std::optional<StopLevel> stop_level;  ///< the constraint set of the light's stop, if braking for one
-  bool sumo_lane_limits = true;         ///< false while crossing a line passed on a stop signal
-  bool emergency_braking = false;       ///< SUMO may brake beyond the ego's decel
-  std::string held_by;                  ///< what of signalsim holds the ego at rest ("" when nothing)
-  bool queued = false;                  ///< at rest in a queue before a light asking for a stop
-};
-
 /// A step of StepCore between step() and record().
 struct PendingStep {
   StepNow now;
@@ -107,7 +97,7 @@ struct PendingStep {
 class StepCore final : public RunCore {
  public:
   explicit StepCore(CoreSetup setup);
-  StepCore(const StepCore&) = delete;  // pull_over_goal_ and the pending step point into members
+  StepCore(const StepCore&) = delete;  // the speed stage and the pending step point into members
   StepCore& operator=(const StepCore&) = delete;
 
   ObservationDemand demand(const sumo::EgoState& ego) override;
@@ -119,9 +109,10 @@ class StepCore final : public RunCore {
   bool backing() const;
   double row_speed_of(double sumo_speed, double time) const;
   StepNow observe(const StepObservation& seen);
+  bool fell_short(double sumo_speed) const;
+  void explain_previous_row(const StepObservation& seen);
   std::vector<OccupiedSpan> target_lane_traffic(const StepObservation& seen, double s_base) const;
   StepLights light(const StepNow& now, const StepObservation& seen);
-  SpeedPlan plan_speed(const StepNow& now, const BehaviorStage::Result& behavior, const StepLights& lights);
   Commands commands(const PendingStep& step);
   SutStep sut_step(const StepNow& now, const StepObservation& seen, const TurnSignalInfo& request,
                    double path_backward_length) const;
@@ -135,7 +126,6 @@ class StepCore final : public RunCore {
   const LateralPlan& lateral_;
   const double b2f_;  // base_link_to_front [m]
   const double dt_;   // step length [s]
-  const SpeedLimits limits_;
   const TrafficLightJudgeParameters judge_params_;
   const double end_time_;  // [s] SUMO time at which the run ends
 
@@ -143,8 +133,6 @@ class StepCore final : public RunCore {
   TurnSignalDecider decider_;   // the remembered desired starts
   BehaviorStage behavior_;      // the behaviour modules, the lane changes' phases
   TrafficLightStage lights_;    // one judge and perception model per light
-  StopSpeedPlanner stop_speed_;
-  const LateralSegment* pull_over_goal_ = nullptr;  // the plan's last pull over, if any
   LightOutcomes outcomes_;
   StuckWatch stuck_;
   PlanWatch plan_watch_;        // where SUMO leaves the lane plan
@@ -159,6 +147,7 @@ class StepCore final : public RunCore {
   std::optional<PendingStep> pending_;
   RunRecord record_;
   SystemsUnderTest suts_;
+  SpeedStage speed_;            // after behavior_: the pull-over goal is its plan's
 };
 
 }  // namespace signalsim

@@ -8,6 +8,8 @@
 #include <string>
 #include <utility>
 
+#include "planning/stop/jerk_limited_speed.hpp"
+
 namespace signalsim {
 
 namespace {
@@ -67,6 +69,13 @@ Motion advance(double v, double a, double target_acc, double jerk, double dt) {
   const double v2 = v1 + target_acc * rest;
   if (v2 <= 0.0) return {0.0, 0.0};
   return {v2, target_acc};
+}
+
+// The distance of the profile a step follows: with a finite jerk the deceleration is released as
+// the ego comes to rest (planning/stop/jerk_limited_speed: ramp, hold, ramp out), so the stop ends
+// without a jolt; with unbounded jerk it is held to rest.
+double ride_stop_distance(double v, double a, double target_acc, double jerk) {
+  return std::isinf(jerk) ? stopping_distance(v, a, target_acc, jerk) : slow_down_distance(v, a, 0.0, target_acc, jerk);
 }
 
 void require_finite(double value, const char* name) {
@@ -147,7 +156,7 @@ StopCommand plan_stop(const StopPlannerInput& in, const StopPlannerParameters& p
     const double ac = (vc - v) / in.dt;
     const double jerk = std::abs(params.normal.min_jerk);
     if (vc > kStoppedVelocity && is_stop_feasible(v, a, D, params.normal) &&
-        stopping_distance(vc, ac, params.brake_start_ratio * params.normal.min_acc, jerk) <=
+        ride_stop_distance(vc, ac, params.brake_start_ratio * params.normal.min_acc, jerk) <=
             D - std::max(v, vc) * in.dt) {
       cmd.level = StopLevel::Normal;
       cmd.feasible = true;
@@ -180,36 +189,52 @@ StopCommand plan_stop(const StopPlannerInput& in, const StopPlannerParameters& p
     cmd.stopping_distance = s_min;
     const double jerk = std::abs(set.min_jerk);
 
-    // Hold the speed while the normal level, less its tracking margin, can still stop after one more step.
-    if (level == StopLevel::Normal && a >= kBrakingAcceleration &&
-        stopping_distance(v, 0.0, params.brake_start_ratio * set.min_acc, jerk) <= D - v * in.dt) {
-      cmd.braking = false;
-      cmd.commanded_velocity = v;
-      cmd.commanded_acceleration = 0.0;
-      cmd.target_acceleration = 0.0;
-      return cmd;
+    // Hold the speed while the normal level, less its tracking margin, can still stop after one more
+    // step; an acceleration still on is released at the level's jerk (track_speed toward v).
+    if (level == StopLevel::Normal && a >= kBrakingAcceleration) {
+      const SpeedStep held = track_speed(v, a, v, RideLimits{kInf, -set.min_acc, jerk}, in.dt);
+      if (ride_stop_distance(held.speed, held.accel, params.brake_start_ratio * set.min_acc, jerk) <=
+          D - std::max(v, held.speed) * in.dt) {
+        cmd.braking = false;
+        cmd.commanded_velocity = held.speed;
+        cmd.commanded_acceleration = held.accel;
+        cmd.target_acceleration = 0.0;
+        return cmd;
+      }
     }
 
-    // Exact stop: the gentlest target within the set whose profile ends at D.
+    // Exact stop: the gentlest target within the set whose profile ends at D; released at rest when
+    // the distance allows it, else held to rest.
+    const bool releases = !std::isinf(jerk) && slow_down_distance(v, a, 0.0, set.min_acc, jerk) <= D;
+    const auto distance_at = [&](double target) {
+      return releases ? slow_down_distance(v, a, 0.0, target, jerk) : stopping_distance(v, a, target, jerk);
+    };
     double lo = set.min_acc;  // S(lo) <= D (+ tolerance)
     double hi = -1e-9;        // S(hi) is (practically) >= D
-    if (stopping_distance(v, a, hi, jerk) <= D) {
+    if (distance_at(hi) <= D) {
       lo = hi;
-    } else if (s_min < D) {
+    } else if (releases || s_min < D) {
       for (int i = 0; i < 200 && hi - lo > 1e-12; ++i) {
         const double mid = 0.5 * (lo + hi);
-        if (stopping_distance(v, a, mid, jerk) <= D) {
+        if (distance_at(mid) <= D) {
           lo = mid;
         } else {
           hi = mid;
         }
       }
     }
-    const Motion next = advance(v, a, lo, jerk, in.dt);
     cmd.braking = true;
+    cmd.releases = releases;
     cmd.target_acceleration = lo;
-    cmd.commanded_velocity = next.v;
-    cmd.commanded_acceleration = next.a;
+    if (releases) {
+      const SpeedStep next = slow_down_step(v, a, 0.0, lo, jerk, in.dt);
+      cmd.commanded_velocity = next.speed;
+      cmd.commanded_acceleration = next.accel;
+    } else {
+      const Motion next = advance(v, a, lo, jerk, in.dt);
+      cmd.commanded_velocity = next.v;
+      cmd.commanded_acceleration = next.a;
+    }
     return cmd;
   }
 

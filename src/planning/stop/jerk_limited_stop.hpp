@@ -20,11 +20,16 @@
 //   if v <= 1e-3:            hold 0 (braking iff distance <= 0); level Normal, feasible
 //   level := first of (normal, limit, emergency) with S_min(level) <= distance + 1 cm
 //   if none:                 level Emergency, infeasible: brake at emergency min_acc
-//   if level == normal and a >= -1e-3 (not braking yet) and
-//      S(v, 0, r * normal.min_acc, J) <= distance - v dt:
-//                            hold: commanded v (braking = false; braking can still start next step)
+//   if level == normal and a >= -1e-3 (not braking yet), and from the holding step (v_h, a_h) --
+//      the acceleration released toward 0 at J -- S(v_h, a_h, r * normal.min_acc, J) <= distance - v dt:
+//                            hold: commanded v_h (braking = false; braking can still start next step)
 //   else:                    a_t := solve S(v, a, a_t, J) = distance on [min_acc, 0)
 //                            commanded := the profile's speed and acceleration after dt
+// With a finite jerk the profile a step follows releases the deceleration at J as the ego comes to
+// rest ("ramp, hold, ramp out", planning/stop/jerk_limited_speed.hpp, docs/behaviour.md §P1.2): the
+// cruise, hold and exact-stop rules use its distance S'(v, a, a_t, J) >= S, and the exact stop falls
+// back to S (held to rest, a jolt at standstill) only when S'(min_acc) no longer fits. The level's
+// feasibility stays S_min, the judge's distance.
 // So braking starts as late as the normal level allows, less a tracking margin (like a velocity
 // smoother tracking the speed limit), also when the ego was accelerating (the cruise test uses the
 // acceleration the cruise command leads to), and at once, as gently as possible, when only a
@@ -79,6 +84,7 @@ struct StopCommand {
   StopLevel level = StopLevel::Normal;  ///< first feasible level (Emergency if none)
   bool feasible = true;   ///< false: even the emergency level overshoots the stop point
   bool braking = false;   ///< false: the stop does not constrain the speed yet (cruise or hold)
+  bool releases = false;  ///< braking on a profile that releases the deceleration as it comes to rest
   double commanded_velocity = 0.0;      ///< [m/s] speed to reach at the end of this step, >= 0
   double commanded_acceleration = 0.0;  ///< [m/s^2] plan's acceleration at the end of the step
   double target_acceleration = 0.0;     ///< [m/s^2] a_t of the plan (0 when not braking)

@@ -19,13 +19,19 @@ StopSpeedPlanner::StopSpeedPlanner(const StopPlannerParameters& params, double e
   if (!(emergency_decel_ > 0.0)) throw std::invalid_argument("StopSpeedPlanner: emergency_decel must be > 0");
 }
 
-void StopSpeedPlanner::begin_step(double measured_speed, double measured_accel, double limits_speed, double dt) {
+double StopSpeedPlanner::begin_step(double measured_speed, double measured_accel, double dt) {
   v_ = measured_speed;
   dt_ = dt;
   const bool tracked = last_command_ && std::abs(measured_speed - *last_command_) <= kTrackingTolerance;
   start_accel_ = tracked ? last_end_accel_ : measured_accel;
+  speed_ = measured_speed;
+  end_accel_ = 0.0;
+  return start_accel_;
+}
+
+void StopSpeedPlanner::set_cruise(double limits_speed, double limits_end_accel) {
   speed_ = limits_speed;
-  end_accel_ = (limits_speed - measured_speed) / dt;  // the limits change the speed at a constant rate
+  end_accel_ = limits_end_accel;
 }
 
 std::optional<StopLevel> StopSpeedPlanner::add_stop(double to_go) {
@@ -41,9 +47,10 @@ std::optional<StopLevel> StopSpeedPlanner::add_stop(double to_go) {
   // Within 2 cm: come to rest (coarse steps never settle), if the emergency deceleration can shed
   // the speed in this step; past the point faster than that, the planner's braking stands. Up to
   // twice what the normal deceleration sheds in a step, it brakes at that deceleration (two steps,
-  // under 2 cm further) rather than with a last-step jolt beyond the normal set.
+  // under 2 cm further) rather than with a last-step jolt beyond the normal set. A profile that
+  // releases its deceleration at rest settles by itself.
   const double normal_step = -params_.normal.min_acc * dt_;
-  if (to_go < kSettleDistance && v_ <= emergency_decel_ * dt_) {
+  if (to_go < kSettleDistance && v_ <= emergency_decel_ * dt_ && !stop.releases) {
     const double settle = v_ <= 2.0 * normal_step ? std::max(0.0, v_ - normal_step) : 0.0;
     if (settle < speed_) {
       speed_ = settle;

@@ -4,10 +4,10 @@
 // speed, so a far stop never holds the ego down. It owns the one piece of state the stops share:
 // the acceleration their profiles start from.
 //
-//   begin_step(v, a_measured, v_limits, dt)
+//   begin_step(v, a_measured, dt) -> a_0
 //     a_0 := the end-of-step acceleration of the previous step's command, while SUMO followed that
-//            command (|v - command| <= 1 cm/s); else a_measured
-//     speed := v_limits
+//            command (|v - command| <= 1 cm/s); else a_measured (the lane limits plan from it too)
+//   set_cruise(v_limits, a_limits): speed := v_limits, ending the step at a_limits
 //   add_stop(d), for each stop:
 //     c := plan_stop({v, a_0, d, dt, cruise = speed})
 //     if c.braking or c.commanded_velocity < speed: speed := min(speed, c.commanded_velocity);
@@ -36,8 +36,12 @@ class StopSpeedPlanner {
   /// validate(params) throws or emergency_decel is not > 0.
   StopSpeedPlanner(const StopPlannerParameters& params, double emergency_decel);
 
-  /// Starts a step from SUMO's measured speed and acceleration and the speed the lane limits allow.
-  void begin_step(double measured_speed, double measured_accel, double limits_speed, double dt);
+  /// Starts a step from SUMO's measured speed and acceleration; returns the acceleration the
+  /// step's profiles start from (see the top).
+  double begin_step(double measured_speed, double measured_accel, double dt);
+
+  /// The speed the lane limits allow this step and the acceleration it ends the step with.
+  void set_cruise(double limits_speed, double limits_end_accel);
 
   /// A stop point `to_go` [m] ahead of the reference point (negative: behind it). Returns the
   /// constraint set used when this stop lowers the speed this step, else nothing.

@@ -38,7 +38,8 @@ Trace drive(double v0, double stop_at, double after_time = 0.0,
   for (int k = 0; k < 3000; ++k) {
     const double t = k * kStepLength;
     const double limits = std::clamp(kLimit, std::max(0.0, v - kStepLength), v + kStepLength);
-    planner.begin_step(v, a, limits, kStepLength);
+    planner.begin_step(v, a, kStepLength);
+    planner.set_cruise(limits, (limits - v) / kStepLength);
     const std::optional<StopLevel> level = planner.add_stop(stop_at - x);
     double v1 = planner.speed();
     planner.end_step(v1);
@@ -120,11 +121,12 @@ TEST(StopSpeedPlanner, AtSpeedTheStopBrakesAsLateAsTheNormalLevelAllows) {
 
 TEST(StopSpeedPlanner, WithoutStopsTheLaneLimitsSpeedIsCommanded) {
   StopSpeedPlanner planner(StopPlannerParameters{}, 9.0);
-  planner.begin_step(5.0, 1.0, 5.1, kStepLength);
+  planner.begin_step(5.0, 1.0, kStepLength);
+  planner.set_cruise(5.1, 1.0);
   EXPECT_DOUBLE_EQ(planner.speed(), 5.1);
   EXPECT_DOUBLE_EQ(planner.start_acceleration(), 1.0) << "first step: the measured acceleration";
   planner.end_step(5.1);
-  planner.begin_step(5.3, 0.0, 5.4, kStepLength);  // SUMO did not follow: measured again
+  planner.begin_step(5.3, 0.0, kStepLength);  // SUMO did not follow: measured again
   EXPECT_DOUBLE_EQ(planner.start_acceleration(), 0.0);
   EXPECT_THROW(StopSpeedPlanner(StopPlannerParameters{}, 0.0), std::invalid_argument);
 }
