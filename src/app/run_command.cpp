@@ -25,6 +25,7 @@
 #include "session/interruption.hpp"
 #include "net/sumo_log.hpp"
 #include "report/run_files.hpp"
+#include "report/summary_sections.hpp"
 #include "session/sumo_session.hpp"
 #include "sim/session_setup.hpp"
 #include "sut/sut_factory.hpp"
@@ -150,7 +151,7 @@ int run(const RunOptions& options) {
     if (!options.quiet) {
       std::printf("%s%s: %s (%zu steps, %.1f s simulated, %zu events, %.2f s wall)\n", scenario->name.c_str(),
                   context.sumo_drives ? " (driven by SUMO)" : "", std::string(to_string(status)).c_str(), record.rows.size(),
-                  record.rows.empty() ? 0.0 : record.rows.back().time, record.events.size(), wall);
+                  simulated_span(record, scenario->sumo.begin), record.events.size(), wall);
       for (const auto& r : results)
         std::printf("  [%s] %s: %s\n", r.passed ? "ok" : "FAIL", r.description.c_str(), r.detail.c_str());
       for (const LawVerdict& v : law)

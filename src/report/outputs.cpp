@@ -265,7 +265,7 @@ void write_run_outputs(const std::string& dir, const Scenario& scenario, const s
                       {"lanelets", plan.map.size()},
                       {"length", as_written(plan.map.length(), 3)},
                       {"lane_changes", plan.lane_changes}};
-  summary["counts"] = counts_json(record);
+  summary["counts"] = counts_json(record, scenario.sumo.begin);
   summary["not_arrived"] = not_arrived_json(record);
   summary["off_plan"] = off_plan_json(record);
   summary["lights"] = lights_json(record);

@@ -31,12 +31,17 @@ nlohmann::ordered_json v2i_json(const RunRecord& record) {
 
 }  // namespace
 
+double simulated_span(const RunRecord& record, double begin) {
+  return record.rows.empty() ? 0.0 : record.rows.back().time - begin;
+}
+
 // The run's counts: steps and time, arrival, steps off the route or the plan, events by kind, steps
 // per blinker and where SUMO's signals differed from the blinker.
-nlohmann::ordered_json counts_json(const RunRecord& record) {
+nlohmann::ordered_json counts_json(const RunRecord& record, double begin) {
   nlohmann::ordered_json counts;
   counts["steps"] = record.rows.size();
-  counts["simulated_time"] = record.rows.empty() ? 0.0 : as_written(record.rows.back().time, 3);
+  counts["simulated_time"] = as_written(simulated_span(record, begin), 3);
+  counts["end_time"] = record.rows.empty() ? begin : as_written(record.rows.back().time, 3);
   counts["arrived"] = record.arrived;
   counts["collisions"] = record.collisions;
   counts["off_route_steps"] = record.off_route_steps;

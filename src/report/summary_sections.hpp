@@ -8,9 +8,14 @@
 
 namespace signalsim {
 
-/// "counts": steps and simulated time, arrival, collisions, steps off the route and off the plan,
-/// blinker and light events, steps per blinker, steps where SUMO's signals differed from the blinker.
-nlohmann::ordered_json counts_json(const RunRecord& record);
+/// [s] The span a run simulated: its last row's time less SUMO's begin (a sumocfg's `begin`, else 0):
+/// SUMO's clock at the end less where it started, not the clock itself.
+double simulated_span(const RunRecord& record, double begin);
+
+/// "counts": steps, the simulated span (simulated_span) and SUMO's clock at the end (end_time),
+/// arrival, collisions, steps off the route and off the plan, blinker and light events, steps per
+/// blinker, steps where SUMO's signals differed from the blinker.
+nlohmann::ordered_json counts_json(const RunRecord& record, double begin);
 
 /// "not_arrived": why the ego did not arrive (step/stuck_watch), null when it did.
 nlohmann::ordered_json not_arrived_json(const RunRecord& record);

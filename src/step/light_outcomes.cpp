@@ -4,13 +4,21 @@
 #include <algorithm>
 
 namespace signalsim {
+
+bool held_by_module(const std::string& speed_limited_by) {
+  return speed_limited_by == "lane_change_hold" || speed_limited_by == "avoidance_hold" ||
+         speed_limited_by == "pull_out_wait" || speed_limited_by == "pull_over_goal";
+}
+
 void LightOutcomes::observe(const TimelineRow& row, const std::vector<LightStep>& lights, const LightStep* stopping,
                             const std::optional<LeaderInfo>& leader, const RouteMap& route, RunRecord& record) {
   // A stop: the first step at rest while a stop is requested; a new one only after moving again.
   // The error is measured against the stop line minus stop_margin, not the judge's stop point,
   // which restart suppression moves to wherever the ego stands (docs/behaviour.md §L1.6).
+  // A rest a module's hold or the pull-over goal set (the row's speed_limited_by) is theirs, not a
+  // stop at the light ahead: a lane change waiting for a gap before a red light is recorded as such.
   const bool at_rest = row.speed < kRestSpeed;
-  if (at_rest && stopping && !resting_) {
+  if (at_rest && stopping && !resting_ && !held_by_module(row.speed_limited_by)) {
     const double stop_s = stopping->light->s_stop_line - stop_margin_;
     LightStop stop;
     stop.tl_id = stopping->light->tls_id;

@@ -27,6 +27,9 @@ inline bool crossed_on_red(double previous_front, double front, double stop_line
   return previous_front <= line && front > line && (state_at_step_start == 'r' || state_at_step_start == 'u');
 }
 
+/// Whether a row's speed_limited_by is a behaviour module's hold or the pull-over goal.
+bool held_by_module(const std::string& speed_limited_by);
+
 class LightOutcomes {
  public:
   /// `stop_margin` [m]: the judge's (a stop's error is measured against stop line - stop_margin).
@@ -35,7 +38,8 @@ class LightOutcomes {
   /// One step's row. `lights`: every light in the window this step. `stopping`: the light whose
   /// stop the ego is braking for this step, if any. `leader`: SUMO's vehicle ahead at the row (within
   /// kLeaderRange, observed when needs_leader said so), to tell a rest in the queue before a light
-  /// from the ego's own stop. Appends to record.stops and record.red_violations.
+  /// from the ego's own stop. A rest a module holds (held_by_module(row.speed_limited_by)) is no stop
+  /// at a light. Appends to record.stops and record.red_violations.
   void observe(const TimelineRow& row, const std::vector<LightStep>& lights, const LightStep* stopping,
                const std::optional<LeaderInfo>& leader, const RouteMap& route, RunRecord& record);
 

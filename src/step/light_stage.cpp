@@ -153,11 +153,17 @@ std::vector<LightStep> TrafficLightStage::step(double now, double s_front, doubl
 bool light_decides_next_junction(const RouteMap& route, double s_front, const std::vector<LightStep>& lights) {
   if (route.empty()) return false;
   const std::size_t here = route.index_at(s_front);
+  const auto stop_signal = [](char c) { return c == 'r' || c == 'u' || c == 'y' || c == 'Y'; };
+  // Within reach of the line of a light the ego stops for, whatever lanes lie between (a stub
+  // approach behind a tiny junction): SUMO's stopline gap would hold the ego 1 m short there.
+  for (const LightStep& l : lights)
+    if (stop_signal(l.own_state) && l.result.stop_point_distance && l.front_to_stop_line > 0.0 &&
+        l.front_to_stop_line <= kStoplineGapReach)
+      return true;
   if (route.at(here).is_internal) return false;  // inside a junction: its right of way is SUMO's
   for (const LightStep& l : lights) {
     if (l.light->route_index != here) continue;
-    const char c = l.own_state;
-    return c == 'r' || c == 'u' || c == 'y' || c == 'Y';
+    return stop_signal(l.own_state);
   }
   return false;
 }

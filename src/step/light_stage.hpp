@@ -101,10 +101,17 @@ class TrafficLightStage {
   bool keep_delivered_ = false;
 };
 
-/// Whether the next junction the ego enters is a light showing the ego's link red or yellow: the ego
-/// is on a normal lanelet that is the approach of a light in `lights` (no other junction lies
-/// between), and that link is r, u, y or Y. Then SUMO's right of way must not apply (docs/behaviour.md §S4:
-/// it would hold a slow ego before the red line on its own); the judge decides.
+/// [m] SUMO's own stop for a red link (jmStoplineGap, 1 m before the line, at its type's decel) binds
+/// over the judge's jerk-limited stop only in the last metre or two; this far from the line the
+/// judge's stop takes SUMO's right of way off whatever lanes lie between.
+inline constexpr double kStoplineGapReach = 5.0;
+
+/// Whether the light's judge alone decides the next junction the ego enters, its link showing r, u,
+/// y or Y: the ego is on a normal lanelet that is the approach of a light in `lights` (no other
+/// junction lies between), or a stop is requested for a light whose line is within
+/// kStoplineGapReach of the front (a stub approach behind a tiny junction). Then SUMO's right of way
+/// must not apply (docs/behaviour.md §S4: it would hold a slow ego 1 m before the red line on its
+/// own); the judge decides.
 bool light_decides_next_junction(const RouteMap& route, double s_front, const std::vector<LightStep>& lights);
 
 }  // namespace signalsim

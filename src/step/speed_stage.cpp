@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "step/stuck_watch.hpp"
 
@@ -51,11 +52,19 @@ SpeedPlan SpeedStage::plan(const SpeedInput& in) {
   plan.sumo_lane_limits = !std::isfinite(held.stop_line) && limits.feasible;
   stop_speed_.set_cruise(limits.step.speed, limits.step.accel);
   plan.limited_by = std::string(to_string(limits.by));
-  // Each stop that lowers the speed further names itself.
+  // The stop that sets the speed names it: the lowest speed any stop alone would command, and among
+  // equal ones (at rest every stop says 0) the nearest point (a hold point before a light's line).
+  std::optional<std::pair<double, double>> lowest;  // (speed alone, to_go)
   const auto add_stop = [&](double to_go, const char* what) {
-    const double before = stop_speed_.speed();
+    const double alone = stop_speed_.speed_alone(to_go);
     const std::optional<StopLevel> level = stop_speed_.add_stop(to_go);
-    if (stop_speed_.speed() < before) plan.limited_by = what;
+    if (alone < limits.step.speed || level) {
+      const std::pair<double, double> key{alone, to_go};
+      if (!lowest || alone < lowest->first - 1e-9 || (alone <= lowest->first + 1e-9 && to_go < lowest->second)) {
+        lowest = key;
+        plan.limited_by = what;
+      }
+    }
     return level;
   };
   if (in.stopping) plan.stop_level = add_stop(*in.stopping->result.stop_point_distance, "light_stop");

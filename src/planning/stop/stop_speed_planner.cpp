@@ -24,13 +24,14 @@ double StopSpeedPlanner::begin_step(double measured_speed, double measured_accel
   dt_ = dt;
   const bool tracked = last_command_ && std::abs(measured_speed - *last_command_) <= kTrackingTolerance;
   start_accel_ = tracked ? last_end_accel_ : measured_accel;
-  speed_ = measured_speed;
+  speed_ = cruise_ = measured_speed;
   end_accel_ = 0.0;
   return start_accel_;
 }
 
 void StopSpeedPlanner::set_cruise(double limits_speed, double limits_end_accel) {
   speed_ = limits_speed;
+  cruise_ = limits_speed;
   end_accel_ = limits_end_accel;
 }
 
@@ -58,6 +59,10 @@ std::optional<StopLevel> StopSpeedPlanner::add_stop(double to_go) {
     }
   }
   return level;
+}
+
+double StopSpeedPlanner::speed_alone(double to_go) const {
+  return std::min(cruise_, plan_stop({v_, start_accel_, to_go, dt_, cruise_}, params_).commanded_velocity);
 }
 
 void StopSpeedPlanner::end_step(double commanded_speed) {

@@ -47,6 +47,10 @@ class StopSpeedPlanner {
   /// constraint set used when this stop lowers the speed this step, else nothing.
   std::optional<StopLevel> add_stop(double to_go);
 
+  /// The speed this stop alone would command [m/s] (planned from the lane limits' speed, not from
+  /// the other stops): which of several stops sets the speed.
+  double speed_alone(double to_go) const;
+
   /// The speed to command for this step [m/s]: the lane limits' speed under every stop added.
   double speed() const { return speed_; }
 
@@ -64,6 +68,7 @@ class StopSpeedPlanner {
   double dt_ = 0.1;
   double start_accel_ = 0.0;
   double speed_ = 0.0;
+  double cruise_ = 0.0;     // the lane limits' speed of this step
   double end_accel_ = 0.0;  // the acceleration speed_ ends the step with
   // the previous step's command
   std::optional<double> last_command_;
