@@ -8,7 +8,10 @@ details and lane_changes, events.csv, timeline.csv, the net), the data behind:
     the required-lead marker, legend entries only for what is drawn (hazard only when used), no
     picture for a route without sections where no blinker came on
   - lateral.png: planned and measured series, lane-change phases and marks, obstacles
-  - speed.png: the jerk series from the accel column, the lane speed limit from the net
+  - speed.png: the jerk series from the accel column, the lane speed limit from the net, the planned
+    speed and what set it (a light stop among them), where SUMO fell short of the plan behind a leader
+    (named once per stretch), the speed axis fitted to the speeds drawn (not to a large max_speed),
+    and a timeline without the plan columns still drawn
   - dilemma.png: only for a light where a yellow or red was met, x range covering where it was met
   - the sweep heat map: colour normalisation centred on 0 for a lead distance, failed and errored
     cells marked, the averaged key named, the unit on the colour bar, the short file name
@@ -41,11 +44,17 @@ def setUpModule():
     WORK = tempfile.mkdtemp(prefix="plot_test.")
     # No SIGNALSIM_PLOT_TOOL: the build tree's binary finds python/signalsim-plot in its source tree.
     env = {k: v for k, v in os.environ.items() if k not in ("SIGNALSIM_PLOT_TOOL", "SIGNALSIM_DATA_DIR")}
-    for name in ("lane_change_then_left", "lane_change_approval_delay", "avoidance_left", "pull_out_backward_hazard",
-                 "tl_yellow_pass"):
+    runs = {name: (os.path.join(SRC, "scenarios", name + ".yaml"),) for name in (
+        "lane_change_then_left", "lane_change_approval_delay", "avoidance_left", "pull_out_backward_hazard",
+        "tl_yellow_pass")}
+    # a red light with a max_speed far over the lane limits; a taken-over vehicle behind SUMO's trip7
+    runs["red_light_max_speed_40"] = (os.path.join(SRC, "scenarios", "tl_red_stop_then_go.yaml"), "--set",
+                                      "ego.max_speed=40")
+    runs["take_over_flow"] = (os.path.join(SRC, "tests", "data", "user_sumo", "take_over_flow.yaml"),)
+    for name, (scenario, *extra) in runs.items():
         out = os.path.join(WORK, name)
-        p = subprocess.run([BIN, "run", os.path.join(SRC, "scenarios", name + ".yaml"), "--out", out, "--plot",
-                            "--quiet"], env=env, capture_output=True, text=True, cwd=WORK)
+        p = subprocess.run([BIN, "run", scenario, *extra, "--out", out, "--plot", "--quiet"], env=env,
+                           capture_output=True, text=True, cwd=WORK)
         assert p.returncode == 0, (name, p.returncode, p.stdout, p.stderr)
         RUNS[name] = out
     sweep = os.path.join(SRC, "tests", "data", "sweeps", "plot_heatmap.yaml")
@@ -239,6 +248,107 @@ class Speed(unittest.TestCase):
         for r in timeline:
             if r["lane"] in speed:
                 self.assertLessEqual(float(r["speed"]), speed[r["lane"]] + 0.05, r)
+
+    def test_plan_and_what_set_it(self):
+        from signalsim_plot.speed import speed_data
+        _, timeline, _, summary, metrics, inputs = load("red_light_max_speed_40")
+        data = speed_data(timeline, summary, metrics, inputs.net)
+        self.assertTrue(data["has_plan"])
+        for i, r in enumerate(timeline):  # the command for the step from row i, drawn at the row after it
+            self.assertAlmostEqual(data["planned"][i], float(r["planned_speed"]), places=9)
+            self.assertEqual(data["planned_s"][i], float(timeline[min(i + 1, len(timeline) - 1)]["s_front"]))
+            if i + 1 < len(timeline) and not r["sumo_limited_by"]:  # SUMO executed it: the next row's speed
+                self.assertAlmostEqual(data["planned"][i], float(timeline[i + 1]["speed"]), delta=0.011)
+        # max_speed 40 is over every lane limit: the lane limits and the light set the plan
+        self.assertEqual(data["limited_by_kinds"], ["lane_limit", "light_stop"])
+        self.assertEqual(sorted({r[0] for r in data["limited_by"]}),
+                         sorted({r["speed_limited_by"] for r in timeline}))
+        ((stop_light, stop_s),) = data["lights"]
+        stops = [r for r in data["limited_by"] if r[0] == "light_stop"]
+        self.assertTrue(stops)
+        self.assertTrue(all(s1 <= stop_s + 0.01 for _, _, s1, _, _ in stops), (stops, stop_s))
+        # the runs cover the rows: each row's value holds from its s and time to the next row's
+        rows = sum(1 for r in timeline if r["speed_limited_by"] == "light_stop")
+        self.assertAlmostEqual(sum(t1 - t0 for _, _, _, t0, t1 in stops), rows * 0.1, delta=0.051)
+        self.assertEqual(data["short_kinds"], [])
+        # the legend names only the values met
+        from signalsim_plot.speed import strip_legend
+        labels = [h.get_label() for h in strip_legend(data, [])]
+        self.assertEqual([lab.split(":")[0] for lab in labels], ["plan set by (strip)", "lane_limit", "light_stop"])
+        self.assertIn("speed.png", pictures("red_light_max_speed_40"))
+
+    def test_speed_axis_fits_the_speeds_not_max_speed(self):
+        from signalsim_plot.speed import HEADROOM, speed_data
+        _, timeline, _, summary, metrics, inputs = load("red_light_max_speed_40")
+        data = speed_data(timeline, summary, metrics, inputs.net)
+        self.assertEqual(data["max_speed"], 40)
+        drawn = [float(r["speed"]) for r in timeline] + [float(r["planned_speed"]) for r in timeline]
+        drawn += [seg[2] for seg in data["limits"]]
+        bottom, top = data["y_range"]
+        self.assertAlmostEqual(top, HEADROOM * max(drawn), places=9)
+        self.assertLess(top, 0.5 * data["max_speed"])
+        self.assertFalse(data["max_speed_drawn"])
+        self.assertLess(bottom, 0.0)
+        self.assertGreater(bottom, -0.05 * top)  # (nothing below 0: a margin for the rest marks)
+        # a max_speed within the speeds drawn: its line is drawn
+        _, timeline, _, summary, metrics, inputs = load("lane_change_then_left")
+        data = speed_data(timeline, summary, metrics, inputs.net)
+        self.assertLessEqual(data["max_speed"], data["y_range"][1])
+        self.assertTrue(data["max_speed_drawn"])
+
+    def test_sumo_short_of_the_plan_behind_a_leader(self):
+        from signalsim_plot.speed import MERGE_GAP, speed_data
+        _, timeline, _, summary, metrics, inputs = load("take_over_flow")
+        data = speed_data(timeline, summary, metrics, inputs.net)
+        short = [i for i, r in enumerate(timeline) if r["sumo_limited_by"]]
+        self.assertGreater(len(short), 5)
+        self.assertEqual(data["short"], [r["sumo_limited_by"] for r in timeline])
+        self.assertEqual(data["short_kinds"], ["leader"])
+        for i in short:  # SUMO's speed after the step fell short of the command by more than 0.01 m/s
+            r = timeline[i]
+            self.assertLess(float(r["sumo_speed"]), float(r["planned_speed"]) - 0.009, r)  # (3 decimals each)
+            self.assertEqual(r["leader"], "trip7")
+        stretches = data["short_stretches"]
+        self.assertLess(len(stretches), len(short) / 3)  # the leader named once per stretch, not per step
+        self.assertEqual(sum(st["steps"] for st in stretches), len(short))
+        self.assertEqual({(st["kind"], st["leader"]) for st in stretches}, {("leader", "trip7")})
+        t = data["t"]
+        for st in stretches:
+            inside = [i for i in short if st["first"] <= i <= st["last"]]
+            self.assertEqual(len(inside), st["steps"])
+            self.assertTrue(all(t[b] - t[a] < MERGE_GAP + 0.1 + 1e-9 for a, b in zip(inside, inside[1:])))
+            self.assertAlmostEqual(st["min_gap"], min(float(timeline[i]["leader_gap"]) for i in inside), places=9)
+            self.assertEqual((st["s0"], st["t0"]), (data["s"][st["first"]], t[st["first"]]))
+        for a, b in zip(stretches, stretches[1:]):
+            self.assertGreaterEqual(b["t0"] - a["t1"], MERGE_GAP)
+        # one label a stretch, in the strip's "SUMO short of plan" row, where the stretch ends
+        import matplotlib.pyplot as plt
+        from signalsim_plot.speed import label_leaders, rows_at
+        fig, ax = plt.subplots()
+        rows = rows_at(data, lambda r: (r[1], r[2]))
+        self.assertEqual([name for name, _ in rows], ["plan set by", "SUMO short of plan"])
+        texts = label_leaders(ax, rows, stretches, lambda st: st["s1"])
+        plt.close(fig)
+        self.assertEqual([(x.get_position(), x.get_text().split("(")[0].strip()) for x in texts],
+                         [((st["s1"], 1), "behind trip7") for st in stretches])
+        # the run stops for the red light C, then follows trip7 away
+        self.assertIn("light_stop", data["limited_by_kinds"])
+        self.assertTrue(data["max_speed_drawn"])
+
+    def test_timeline_without_the_plan_columns(self):
+        from signalsim_plot.speed import speed_data, speed_plot
+        _, timeline, _, summary, metrics, inputs = load("lane_change_then_left")
+        plan_columns = ("planned_speed", "speed_limited_by", "sumo_speed", "sumo_limited_by", "leader", "leader_gap")
+        old = [{k: v for k, v in r.items() if k not in plan_columns} for r in timeline]
+        data = speed_data(old, summary, metrics, inputs.net)
+        self.assertFalse(data["has_plan"])
+        self.assertTrue(all(p != p for p in data["planned"]))  # nan: nothing planned
+        self.assertEqual((data["limited_by"], data["short_runs"], data["short_stretches"]), ([], [], []))
+        top = max([float(r["speed"]) for r in timeline] + [seg[2] for seg in data["limits"]])
+        self.assertAlmostEqual(data["y_range"][1], 1.1 * top, places=9)
+        path = os.path.join(WORK, "old_timeline_speed.png")
+        self.assertEqual(speed_plot(old, summary, metrics, inputs.net, path), path)
+        self.assertGreater(os.path.getsize(path), 10000)
 
 
 class Dilemma(unittest.TestCase):
