@@ -30,6 +30,7 @@ LimitsPlan plan_speed_under_limits(const RouteMap& route, double s_front, double
     plan.by = SpeedLimitKind::HeldOnYellow;
   }
   plan.step = track_speed(speed, accel, target, ride, dt);
+  plan.releasing = plan.step.speed < speed && target >= speed;
   plan.feasible = speed <= lane_limit + 1e-6;
   // A jerk-limited slow-down from the fastest speed there can be: v^2 / 2 decel plus the ramps.
   const double fastest = std::max(limits.max_speed, speed);
@@ -45,6 +46,7 @@ LimitsPlan plan_speed_under_limits(const RouteMap& route, double s_front, double
     if (slow.binds && slow.step.speed < plan.step.speed) {
       plan.step = slow.step;
       plan.by = SpeedLimitKind::LimitAhead;
+      plan.releasing = false;
     }
   }
   return plan;

@@ -45,6 +45,9 @@ struct LimitsPlan {
   SpeedStep step;                                   ///< the speed to command and its end acceleration
   SpeedLimitKind by = SpeedLimitKind::LaneLimit;
   bool feasible = true;  ///< false: a lower limit ahead (or the lane's own) is beyond reach at -decel
+  /// Still slowing down toward a higher target: a deceleration being released at the jerk (`by`
+  /// names the target, not what the slowing is for).
+  bool releasing = false;
 };
 
 /// The speed to command for the next step of length dt, from the front at `s_front` with `speed`

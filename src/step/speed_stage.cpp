@@ -51,7 +51,8 @@ SpeedPlan SpeedStage::plan(const SpeedInput& in) {
   // at its own decel (docs/behaviour.md §P1.3).
   plan.sumo_lane_limits = !std::isfinite(held.stop_line) && limits.feasible;
   stop_speed_.set_cruise(limits.step.speed, limits.step.accel);
-  plan.limited_by = std::string(to_string(limits.by));
+  // Releasing a deceleration (jerk-limited), the slowing is still for what set the speed before.
+  plan.limited_by = limits.releasing && !last_limited_by_.empty() ? last_limited_by_ : std::string(to_string(limits.by));
   // The stop that sets the speed names it: the lowest speed any stop alone would command, and among
   // equal ones (at rest every stop says 0) the nearest point (a hold point before a light's line).
   std::optional<std::pair<double, double>> lowest;  // (speed alone, to_go)
@@ -84,9 +85,11 @@ SpeedPlan SpeedStage::plan(const SpeedInput& in) {
     plan.limited_by = "backing";
   }
   stop_speed_.end_step(plan.speed);
+  last_limited_by_ = plan.limited_by;
   // What of signalsim holds the ego at rest this step, if anything (the stuck rule).
   // Off the plan, signalsim's stops are for the planned lanes, not the one SUMO drives: it holds nothing.
-  if (plan.speed < kRestSpeed && !in.off_plan) {
+  // A command above the current speed is a start (a gentle one begins below kRestSpeed): not a hold.
+  if (plan.speed < kRestSpeed && plan.speed <= in.speed && !in.off_plan) {
     plan.held_by = in.moving_back    ? "backing up"
                    : plan.stop_level ? "stopped for light " + in.stopping->light->tls_id
                    : hold_level      ? std::string(hold->reason)

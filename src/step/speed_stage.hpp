@@ -63,6 +63,7 @@ class SpeedStage {
   const double dt_;
   const LateralSegment* pull_over_goal_;
   StopSpeedPlanner stop_speed_;
+  std::string last_limited_by_;  // the previous step's speed_limited_by
 };
 
 }  // namespace signalsim

@@ -25,6 +25,20 @@ TEST(ResultsCsv, ColumnsAreFixedAroundCanonicallyOrderedMetrics) {
   EXPECT_EQ(columns, expected);
 }
 
+TEST(ResultsCsv, ASweptKeyNamedLikeAMetricNeverHidesTheMetric) {
+  // The judge's max_jerk parameter swept: its column is swept.max_jerk, the ride's max_jerk its own.
+  EXPECT_EQ(swept_column("max_jerk"), "swept.max_jerk");
+  EXPECT_EQ(swept_column("p95_decel"), "swept.p95_decel");
+  EXPECT_EQ(swept_column("yellow_lamp_period"), "yellow_lamp_period");
+  EXPECT_EQ(swept_column("decider"), "decider") << "a swept decider shares the SUT's name column";
+  ResultRows rows;
+  rows[0] = row(0, {{"scenario", "a"}, {swept_column("max_jerk"), "-5"}, {"max_jerk", "1"}, {"status", "passed"}});
+  const std::string text = results_csv({"max_jerk"}, rows);
+  EXPECT_EQ(text, "run,scenario,file,swept.max_jerk,status,expectations_passed,expectations_total,"
+                  "failed_expectations,law_failed,run_dir,max_jerk,wall_time,error\n"
+                  "0,a,,-5,passed,,,,,,1,,\n");
+}
+
 TEST(ResultsCsv, QuotesWhatNeedsQuotingAndReadsItBack) {
   test::TempDir dir;
   ResultRows rows;

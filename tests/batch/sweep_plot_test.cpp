@@ -57,7 +57,7 @@ TEST(SweepPlot, TheMetricMustBeANumericColumnOfWhatFlattenMetricsWrites) {
   light.emergency_stop = false;
   m.lights.push_back(light);
   const auto cells = flatten_metrics(to_json(m));
-  ASSERT_EQ(cells.size(), 7u + 3u * 7u + 7u);
+  ASSERT_EQ(cells.size(), 9u + 3u * 7u + 7u);  // run-level: 9 (the ride 4, then 5 counts)
   // Accepted exactly when the cell holds a number, or is a light's true/false outcome (shown as the
   // share of runs where it is true).
   for (const auto& [column, text] : cells) {

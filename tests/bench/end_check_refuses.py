@@ -32,8 +32,8 @@ def main():
     with tempfile.TemporaryDirectory() as work:
         s = scenarios.BenchScenario("test", os.path.join(ROOT, "scenarios", "intersection_left.yaml"), work)
         s.calibrate(binary, env)
-        if abs(s.runs["full"]["end"] - 32.1) > 1e-9 or s.runs["full"]["steps"] != 320:
-            failures.append("signalsim's run: end %g, %d steps (want 32.1, 320)" % (s.runs["full"]["end"],
+        if abs(s.runs["full"]["end"] - 32.8) > 1e-9 or s.runs["full"]["steps"] != 327:
+            failures.append("signalsim's run: end %g, %d steps (want 32.8, 327)" % (s.runs["full"]["end"],
                                                                                  s.runs["full"]["steps"]))
         log = os.path.join(work, "sumo.log")
         for shift, want_refused in ((0.0, False), (-s.step_length, True)):
@@ -45,14 +45,14 @@ def main():
             controller = subprocess.run(controller_argv, env=env, check=True, capture_output=True, text=True)
             for who, message in (("sumo alone", refused(s.check_sumo, "full", log)),
                                  ("controller", refused(s.check_controller, "full", controller.stdout))):
-                if want_refused and (message is None or "t=32.0" not in message or "t=32.1" not in message):
+                if want_refused and (message is None or "t=32.7" not in message or "t=32.8" not in message):
                     failures.append("%s one step short: %s" % (who, message or "not refused"))
                 if not want_refused and message is not None:
                     failures.append("%s at signalsim's end: refused: %s" % (who, message))
     for f in failures:
         print("FAIL: " + f)
     if not failures:
-        print("ok: sumo alone and the controller at t=32.1 pass, one step short (t=32.0) refused")
+        print("ok: sumo alone and the controller at t=32.8 pass, one step short (t=32.7) refused")
     return 1 if failures else 0
 
 

@@ -359,7 +359,7 @@ TEST(ManeuverScenario, ImmediateApprovalDoesNotBrakeForTheHoldPoint) {
   EXPECT_NEAR(*lc.approval_time, *lc.blinker_on_time, 1e-9);
   for (const TimelineRow& row : r.record.rows) {
     if (row.time > *lc.approval_time) break;
-    EXPECT_GE(row.accel, 0.0) << row.time;
+    EXPECT_GE(row.accel, -1e-9) << row.time;  // no braking (SUMO's arithmetic aside)
   }
   EXPECT_NEAR(*lc.start, r.lateral.segments.front().lane_change.latest_start, 1e-9) << "cut short to fit";
   EXPECT_EQ(last_lane_on(r, "in_S"), "in_S_0");

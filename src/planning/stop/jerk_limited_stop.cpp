@@ -18,6 +18,9 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kStoppedVelocity = 1e-3;    // [m/s] at or below: standing
 constexpr double kBrakingAcceleration = -1e-3;  // [m/s^2] below: already braking
 constexpr double kDistanceTolerance = 0.01;  // [m] feasibility slack against step discretisation
+// [m] From rest, a stop nearer than this holds the ego (the judge's restart suppression keeps it
+// where it stands up to max_behind_distance_to_stop, 1.0 m short, docs/behaviour.md §L1.6).
+constexpr double kPullAwayDistance = 1.0;
 
 // Smallest t in (0, t_max] with v + a t + s t^2 / 2 = 0 (v > 0), if any.
 std::optional<double> first_stop_time(double v, double a, double s, double t_max) {
@@ -91,6 +94,37 @@ void validate_set(const StopConstraintSet& c, const char* name) {
   }
 }
 
+// Exact stop: the gentlest target within [min_acc, 0) whose profile ends at D; released at rest
+// when the distance allows it (ride_stop_distance), else held to rest.
+void exact_stop(StopCommand& cmd, double v, double a, double D, double min_acc, double jerk, double s_min, double dt) {
+  const bool releases = !std::isinf(jerk) && slow_down_distance(v, a, 0.0, min_acc, jerk) <= D;
+  const auto distance_at = [&](double target) {
+    return releases ? slow_down_distance(v, a, 0.0, target, jerk) : stopping_distance(v, a, target, jerk);
+  };
+  double lo = min_acc;  // S(lo) <= D (+ tolerance)
+  double hi = -1e-9;    // S(hi) is (practically) >= D
+  if (distance_at(hi) <= D) {
+    lo = hi;
+  } else if (releases || s_min < D) {
+    for (int i = 0; i < 200 && hi - lo > 1e-12; ++i) {
+      const double mid = 0.5 * (lo + hi);
+      (distance_at(mid) <= D ? lo : hi) = mid;
+    }
+  }
+  cmd.braking = true;
+  cmd.releases = releases;
+  cmd.target_acceleration = lo;
+  if (releases) {
+    const SpeedStep next = slow_down_step(v, a, 0.0, lo, jerk, dt);
+    cmd.commanded_velocity = next.speed;
+    cmd.commanded_acceleration = next.accel;
+  } else {
+    const Motion next = advance(v, a, lo, jerk, dt);
+    cmd.commanded_velocity = next.v;
+    cmd.commanded_acceleration = next.a;
+  }
+}
+
 }  // namespace
 
 std::string_view to_string(StopLevel level) {
@@ -155,7 +189,10 @@ StopCommand plan_stop(const StopPlannerInput& in, const StopPlannerParameters& p
     const double vc = std::max(0.0, *in.cruise_velocity);
     const double ac = (vc - v) / in.dt;
     const double jerk = std::abs(params.normal.min_jerk);
-    if (vc > kStoppedVelocity && is_stop_feasible(v, a, D, params.normal) &&
+    // From rest the ego pulls away only for a stop more than kPullAwayDistance ahead: a gentle start
+    // would otherwise creep the last centimetres to a stop point it rests just short of.
+    const bool pulls_away = v > kStoppedVelocity || D > kPullAwayDistance;
+    if (vc > kStoppedVelocity && pulls_away && is_stop_feasible(v, a, D, params.normal) &&
         ride_stop_distance(vc, ac, params.brake_start_ratio * params.normal.min_acc, jerk) <=
             D - std::max(v, vc) * in.dt) {
       cmd.level = StopLevel::Normal;
@@ -203,38 +240,7 @@ StopCommand plan_stop(const StopPlannerInput& in, const StopPlannerParameters& p
       }
     }
 
-    // Exact stop: the gentlest target within the set whose profile ends at D; released at rest when
-    // the distance allows it, else held to rest.
-    const bool releases = !std::isinf(jerk) && slow_down_distance(v, a, 0.0, set.min_acc, jerk) <= D;
-    const auto distance_at = [&](double target) {
-      return releases ? slow_down_distance(v, a, 0.0, target, jerk) : stopping_distance(v, a, target, jerk);
-    };
-    double lo = set.min_acc;  // S(lo) <= D (+ tolerance)
-    double hi = -1e-9;        // S(hi) is (practically) >= D
-    if (distance_at(hi) <= D) {
-      lo = hi;
-    } else if (releases || s_min < D) {
-      for (int i = 0; i < 200 && hi - lo > 1e-12; ++i) {
-        const double mid = 0.5 * (lo + hi);
-        if (distance_at(mid) <= D) {
-          lo = mid;
-        } else {
-          hi = mid;
-        }
-      }
-    }
-    cmd.braking = true;
-    cmd.releases = releases;
-    cmd.target_acceleration = lo;
-    if (releases) {
-      const SpeedStep next = slow_down_step(v, a, 0.0, lo, jerk, in.dt);
-      cmd.commanded_velocity = next.speed;
-      cmd.commanded_acceleration = next.accel;
-    } else {
-      const Motion next = advance(v, a, lo, jerk, in.dt);
-      cmd.commanded_velocity = next.v;
-      cmd.commanded_acceleration = next.a;
-    }
+    exact_stop(cmd, v, a, D, set.min_acc, jerk, s_min, in.dt);
     return cmd;
   }
 

@@ -10,7 +10,8 @@
 // S(v, a, min_acc, J): the level is feasible iff that is <= distance (+ 1 cm tolerance). With a > 0
 // the ramp starts from the positive acceleration (the ego still speeds up while the ramp crosses 0).
 //
-// plan_stop(in) each step (r = brake_start_ratio, margin: a normal stop that needs only r * min_acc):
+// plan_stop(in) each step (r = brake_start_ratio, margin: a normal stop that needs only r * min_acc;
+// from rest the cruise rule applies only to a stop more than 1 m ahead, as restart suppression):
 //   if a cruise speed v_c is given (what the lane limits command without the stop), the normal
 //   level is feasible from (v, a), and after one step at v_c -- state (v_c, a_c = (v_c - v) / dt),
 //   max(v, v_c) dt further on -- S(v_c, a_c, r * normal.min_acc, J) <= distance - max(v, v_c) dt:

@@ -7,6 +7,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "planning/stop/jerk_limited_speed.hpp"
 #include "planning/stop/jerk_limited_stop.hpp"
 
 namespace signalsim {
@@ -153,10 +154,12 @@ TEST(StopPlannerCruise, StandingCloseToThePointStaysAtRest) {
 
 TEST(StopPlannerCruise, TheAccelerationTheCruiseLeadsToCountsInTheStoppingDistance) {
   // D lies between what holding 12 m/s needs and what speeding up to 12.1 m/s (+1 m/s^2) needs: the
-  // jerk ramp from +1 m/s^2 down to the target adds about 21 m.
+  // jerk ramp from +1 m/s^2 down to the target adds about 21 m. The distances are the ride's stop
+  // profile, which releases the deceleration at rest (planning/stop/jerk_limited_speed).
   const StopPlannerParameters p;
-  const double hold = stopping_distance(12.0, 0.0, p.brake_start_ratio * p.normal.min_acc, 1.0) + 12.0 * kDt;
-  const double speed_up = stopping_distance(12.1, 1.0, p.brake_start_ratio * p.normal.min_acc, 1.0) + 12.1 * kDt;
+  const double target = p.brake_start_ratio * p.normal.min_acc;
+  const double hold = slow_down_distance(12.0, 0.0, 0.0, target, 1.0) + 12.0 * kDt;
+  const double speed_up = slow_down_distance(12.1, 1.0, 0.0, target, 1.0) + 12.1 * kDt;
   ASSERT_GT(speed_up, hold + 20.0);
   const double D = 0.5 * (hold + speed_up);
   const StopCommand refused = plan_stop({12.0, 0.0, D, kDt, 12.1});

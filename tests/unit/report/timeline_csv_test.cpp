@@ -19,7 +19,8 @@ namespace fs = std::filesystem;
 
 const std::string kHeader =
     "time,s_front,x,y,speed,accel,edge,lane,lateral_offset,blinker,blinker_source,sumo_signals,tl_id,tl_state,"
-    "tl_observed,tl_decision,stop_distance,judge_distance,yellow_lamp_line,zone,stop_s,stop_level,planned_offset";
+    "tl_observed,tl_decision,stop_distance,judge_distance,yellow_lamp_line,zone,stop_s,stop_level,planned_offset,"
+    "planned_speed,speed_limited_by,sumo_speed,sumo_limited_by,leader,leader_gap";
 
 std::string read_file(const fs::path& path) {
   std::ifstream in(path);
@@ -66,6 +67,12 @@ TimelineRow judged_row() {
   r.stop_s = 188.6;
   r.stop_level = StopLevel::Limit;
   r.v2i_time_to_red = 3.25;
+  r.planned_speed = 13.8;
+  r.speed_limited_by = "light_stop";
+  r.sumo_speed = 12.5;
+  r.sumo_limited_by = "leader";
+  r.leader = "car7";
+  r.leader_gap = 4.25;
   return r;
 }
 
@@ -81,8 +88,9 @@ TEST_F(TimelineCsv, EveryColumnOfAJudgedRowAndTheEmptyFieldsOfAPlainOne) {
   write_timeline_csv(path.string(), {judged_row(), plain});
   EXPECT_EQ(read_file(path), kHeader + "\n" +
                                  "12.300,118.400,1.600,-81.600,13.890,0.000,in_S,in_S_1,-0.125,left,intersection,2,C,g,"
-                                 "green,stop,71.200,30.001,41.670,stoppable,188.600,limit,0.062\n"
-                                 "0.100,0.000,0.000,0.000,0.000,0.000,e,e_0,0.000,none,none,,,,,,,,,,,,\n");
+                                 "green,stop,71.200,30.001,41.670,stoppable,188.600,limit,0.062,13.800,light_stop,"
+                                 "12.500,leader,car7,4.250\n"
+                                 "0.100,0.000,0.000,0.000,0.000,0.000,e,e_0,0.000,none,none,,,,,,,,,,,,,,,,,,\n");
 }
 
 TEST_F(TimelineCsv, TheV2iColumnOnlyWhenAskedFor) {
@@ -93,10 +101,10 @@ TEST_F(TimelineCsv, TheV2iColumnOnlyWhenAskedFor) {
   write_timeline_csv(path.string(), {judged_row(), without}, {.v2i = true});
   const std::string row =
       "12.300,118.400,1.600,-81.600,13.890,0.000,in_S,in_S_1,-0.125,left,intersection,2,C,g,green,stop,71.200,"
-      "30.001,41.670,stoppable,188.600,limit,0.062";
+      "30.001,41.670,stoppable,188.600,limit,0.062,13.800,light_stop,12.500,leader,car7,4.250";
   const std::string row_without =
       "12.300,118.400,1.600,-81.600,13.890,0.000,in_S,in_S_1,-0.125,left,intersection,0,C,g,green,stop,71.200,"
-      "30.001,41.670,stoppable,188.600,limit,0.062";
+      "30.001,41.670,stoppable,188.600,limit,0.062,13.800,light_stop,12.500,leader,car7,4.250";
   EXPECT_EQ(read_file(path), kHeader + ",v2i_time_to_red\n" + row + ",3.250\n" + row_without + ",\n");
 }
 

@@ -51,6 +51,26 @@ TEST(LaneChangeRoom, AShiftOf6point4MetresIn5MetresDoesNotFit) {
   EXPECT_TRUE(lane_change_fits(208.22, 6.4, 13.89, ego));  // two lanes in 50 m: 28.15 m needed
 }
 
+TEST(LaneChangeRoom, TheFitIsCheckedAtTheSpeedTheTurnsOnEitherSideLeave) {
+  LaneChangeEgo ego;  // accel and decel 1 m/s^2, base_link 3.7 m behind the front (defaults)
+  // A 27.7 m edge (24 m of room) between two 8 m/s turns on 13.89 m/s lanes: the lateral motion
+  // (front 8.5 .. 26.7 m) runs at most at sqrt(8^2 + 2 * 1 * 8.5 ...) < 10 m/s, where the 3.2 m
+  // shift needs 14.3 m and has 18.2 m; at the lane limit it would need 19.9 m.
+  const EdgeSpeeds turns{13.89, 8.0, 8.0};
+  const double speed = lane_change_speed(27.7, false, turns, ego);
+  EXPECT_LT(speed, 10.0);
+  EXPECT_GT(speed, 8.0);
+  EXPECT_TRUE(lane_change_fits(24.0, 3.2, speed, ego));
+  EXPECT_FALSE(lane_change_fits(24.0, 3.2, 13.89, ego)) << "checked at the lane limit it was refused";
+  // Without turns around it the lane limit (or max_speed) is the speed.
+  EXPECT_DOUBLE_EQ(lane_change_speed(27.7, false, EdgeSpeeds{13.89}, ego), 13.89);
+  ego.max_speed = 12.0;
+  EXPECT_DOUBLE_EQ(lane_change_speed(27.7, false, EdgeSpeeds{13.89}, ego), 12.0);
+  // On the first edge from the departure: 5 m/s at depart_pos 0 is still under 8 m/s 10 m on.
+  ego.depart_speed = 5.0;
+  EXPECT_LT(lane_change_speed(27.7, true, EdgeSpeeds{13.89}, ego), std::sqrt(25.0 + 2.0 * 27.7));
+}
+
 TEST(LaneChangeRoom, RoomNeededForALength) {
   EXPECT_NEAR(lane_change_room_needed(19.9), 20.9 / 0.8, 1e-9);   // lead 20 % of the room
   EXPECT_DOUBLE_EQ(lane_change_room_needed(50.0), 63.75);          // lead 12.75 m, margin 1 m

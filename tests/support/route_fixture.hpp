@@ -1,4 +1,4 @@
-// Hand-made routes for generate's unit tests: lanelets laid end to end on s (straight shapes; the
+// Hand-made routes for unit tests (generate, the step stages): lanelets laid end to end on s (straight shapes; the
 // generator's rules use positions and attributes only), with SUMO-like ids.
 #pragma once
 
