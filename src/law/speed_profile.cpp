@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/number_text.hpp"
 
@@ -15,6 +16,7 @@ SpeedProfile::SpeedProfile(const RouteMap& route, double depart_front, double de
                            double dt, std::vector<StopPoint> stops)
     : stops_(std::move(stops)), accel_(limits.accel), ramp_(limits.accel * limits.accel * limits.accel / (3.0 * limits.jerk * limits.jerk)) {
   std::sort(stops_.begin(), stops_.end(), [](const StopPoint& a, const StopPoint& b) { return a.s < b.s; });
+  for (std::size_t i = 0; i < route.size(); ++i) limits_.emplace_back(route.at(i).s_start, route.at(i).speed_limit);
   double s = depart_front, v = depart_speed, a = 0.0;
   const double end = route.length();
   s_.push_back(s);
@@ -49,6 +51,15 @@ double SpeedProfile::restart_speed(double from_rest) const {
   return std::sqrt(2.0 * kRestartShare * accel_ * std::max(0.0, from_rest - ramp_));
 }
 
+double SpeedProfile::restart_cap(double s) const {
+  double cap = std::numeric_limits<double>::infinity();
+  const double reach = s + light_braking_distance(planned(s));
+  auto it = std::upper_bound(limits_.begin(), limits_.end(), std::make_pair(s, std::numeric_limits<double>::infinity()));
+  if (it != limits_.begin()) --it;  // the lanelet s is on
+  for (; it != limits_.end() && it->first <= reach; ++it) cap = std::min(cap, it->second);
+  return cap;
+}
+
 double SpeedProfile::upper(double s) const { return planned(s) + kSpeedSlack; }
 
 const StopPoint* SpeedProfile::stop_zone_at(double s) const {
@@ -62,7 +73,7 @@ double SpeedProfile::lower(double s) const {
   double v = planned(s) - kSpeedSlack;
   // The latest stop point behind s: the ego may have restarted there from rest.
   for (const StopPoint& p : stops_)
-    if (p.s < s) v = std::min(v, restart_speed(s - p.s));
+    if (p.s < s) v = std::min(v, std::min(restart_speed(s - p.s), restart_cap(s)));
   return std::max(0.0, v);
 }
 
@@ -72,7 +83,7 @@ std::string SpeedProfile::lower_reason(double s) const {
   double v = planned(s) - kSpeedSlack;
   for (const StopPoint& p : stops_)
     if (p.s < s) {
-      const double r = restart_speed(s - p.s);
+      const double r = std::min(restart_speed(s - p.s), restart_cap(s));
       if (r < v) {
         v = r;
         restart = &p;

@@ -9,12 +9,15 @@
 //               (a light's stop line: the judge may stop it, docs/behaviour.md §L; a link where SUMO makes it
 //               yield: minor, stop, all-way stop, zipper, blinking light), and after p at most the
 //               restart from rest sqrt(2 * kRestartShare * accel * (s - p - ramp)), ramp =
-//               accel^3 / (3 jerk^2) (the jerk-limited start);
+//               accel^3 / (3 jerk^2) (the jerk-limited start), and no more than the lowest limit
+//               within a braking distance ahead (accelerating from below, the ego approaches a
+//               lower limit ahead without passing it, docs/behaviour.md §P1.3);
 //             the lesser of that and planned - kSpeedSlack, never below 0.
 // Queries are O(log n) binary searches on the rollout's samples.
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "map/route_map.hpp"
@@ -67,6 +70,8 @@ class SpeedProfile : public SpeedBounds {
   std::vector<double> s_, v_;  // rollout samples: front position and speed, s ascending
   std::vector<StopPoint> stops_;
   double restart_speed(double from_rest) const;  // the lower bound after a rest [m/s]
+  double restart_cap(double s) const;  // a restarted ego stays below the next lower limit ahead [m/s]
+  std::vector<std::pair<double, double>> limits_;  // (lanelet start s, its limit), s ascending
   double accel_ = 1.0;
   double ramp_ = 0.0;  // [m]
   double travel_time_ = 0.0;

@@ -39,7 +39,10 @@ LimitsPlan plan_speed_under_limits(const RouteMap& route, double s_front, double
   for (std::size_t i = std::max(window.first, here + 1); i < window.last; ++i) {
     const Lanelet& lanelet = route.at(i);
     if (lanelet.s_start >= held.stop_line - 1e-6) break;  // route order: the rest are beyond too
-    if (lanelet.speed_limit >= std::max(speed, plan.step.speed)) continue;
+    // A limit above the speed and above what the acceleration still adds while released does not bind.
+    const double b = std::max(0.0, plan.step.accel);
+    const double release = b * b / (2.0 * limits.jerk) + b * dt;
+    if (lanelet.speed_limit >= std::max(speed, plan.step.speed + release)) continue;
     const SlowDownStep slow =
         plan_slow_down(speed, accel, lanelet.speed_limit, lanelet.s_start - s_front, plan.step, ride, dt);
     plan.feasible = plan.feasible && slow.feasible;

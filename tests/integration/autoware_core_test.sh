@@ -28,8 +28,8 @@ python3 "$src/tools/sut_blinker_diff" "$work/out" --all > "$work/diff" || fail "
 expect() {  # run name, the line expected after it
   grep -A2 "^$1: " "$work/diff" | grep -qxF "  $2" || fail "$1: expected '$2' in: $(cat "$work/diff")"
 }
-expect 0000-close_turns "sut: left 122.203..207.319 right 207.319..260.414"
-expect 0000-close_turns "ref: left 122.203..205.719 right 205.719..260.414"
+expect 0000-close_turns "sut: left 122.203..207.319 right 207.319..260.421"
+expect 0000-close_turns "ref: left 122.203..205.719 right 205.719..260.421"
 expect 0001-roundabout_de_exit2 "sut: right 146.853..225.719 right 255.567..283.987"
 expect 0001-roundabout_de_exit2 "ref: right 272.311..283.987"
 expect 0002-lane_change_right "sut: none"

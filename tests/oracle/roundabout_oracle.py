@@ -25,9 +25,11 @@ docs/behaviour.md §S, where each blinker turns on and off:
              start is the start of the first marked lanelet (docs/behaviour.md §T5.3). "After the node" = the node's
              own internal lane is not marked: the chain starts at the ring lane leaving that node
              (the law: on having passed beside the previous exit). `--mark-node-lane` marks it too.
-  motion     the ego as signalsim drives it: each step the commanded speed is the highest from which every
+  motion     an estimate of the ego's speed: each step the commanded speed is the highest from which every
              lanelet ahead can still be entered (front) at its speed limit with `decel`, within +accel/-decel
-             per step, capped by max_speed; SUMO's Euler update s += v_next * dt. Or, with --timeline,
+             per step, capped by max_speed; SUMO's Euler update s += v_next * dt. signalsim's own plan is
+             jerk-limited (docs/behaviour.md §P) and brakes a little earlier and more gently, so a
+             speed-dependent switch predicted this way can be off by a few metres. Or, with --timeline,
              the (s_front, speed) rows of a real run, so the prediction is exact to the step.
 
 Usage:

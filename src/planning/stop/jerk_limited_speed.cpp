@@ -114,6 +114,11 @@ SpeedStep slow_down_step(double v, double a, double v_f, double a_t, double jerk
   return profile_step(v, a, slow_down_profile(v, a, v_f, a_t, jerk), dt);
 }
 
+SpeedStep release_acceleration(double v, double a, double jerk, double dt) {
+  const double a1 = a > 0.0 ? std::max(0.0, a - jerk * dt) : std::min(0.0, a + jerk * dt);
+  return {std::max(0.0, v + (a + a1) * dt / 2.0), a1};
+}
+
 // In the direction of the target (sign s): the remaining gap u = s (target - v) and the acceleration
 // toward it b = s a. The step ends at b1, and ramping b1 out at J afterwards sheds b1^2 / 2J more, so
 // u - (b + b1) dt / 2 - b1^2 / 2J >= 0: b1 is at most the positive root of that quadratic.
@@ -139,7 +144,11 @@ SlowDownStep plan_slow_down(double v, double a, double v_f, double distance, con
   const double hardest = -limits.decel;
   const double planned = kBrakeStartRatio * hardest;
   if (v <= v_f + kSpeedTolerance) {
-    if (cruise.speed <= v_f + kSpeedTolerance) return {cruise, false, true};
+    // Below the limit: the cruise stands while its acceleration can still be released before it
+    // reaches the limit (a^2 / 2J more speed); else the ego approaches the limit itself.
+    // (and one more step at that acceleration: the ramp-out starts a step after the test)
+    const double b = std::max(0.0, cruise.accel);
+    if (cruise.speed + b * b / (2.0 * J) + b * dt <= v_f + kSpeedTolerance) return {cruise, false, true};
     return {track_speed(v, a, v_f, limits, dt), true, true};
   }
   const bool feasible = slow_down_distance(v, a, v_f, hardest, J) <= distance + kLimitDistanceTolerance;
@@ -149,7 +158,7 @@ SlowDownStep plan_slow_down(double v, double a, double v_f, double distance, con
   };
   if (feasible && leaves_room(cruise)) return {cruise, false, true};
   if (!feasible) return {profile_step(v, a, slow_down_profile(v, a, v_f, hardest, J), dt), true, false};
-  const SpeedStep held = track_speed(v, a, v, limits, dt);
+  const SpeedStep held = release_acceleration(v, a, J, dt);
   if (a >= kReleasing && leaves_room(held)) return {held, held.speed < cruise.speed, true};
   // The gentlest target that still ends at the limit within the distance.
   double lo = hardest, hi = -1e-9;

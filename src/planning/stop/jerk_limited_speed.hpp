@@ -11,11 +11,12 @@
 //
 // plan_slow_down, each step (the same rules as the stop planner's plan_stop, planning/stop, with
 // the ego's decel and the ride's jerk in place of a constraint set, and r = kBrakeStartRatio):
-//   v <= v_f:                 approach v_f from below (track_speed): the limit does not bind
+//   v <= v_f:                 cruise while v_c + a_c^2 / 2J <= v_f (its acceleration can still be
+//                             released below the limit), else approach v_f from below (track_speed)
 //   the cruise step (v_c, a_c) keeps D(v_c, a_c, v_f, r * -decel, J) <= d - max(v, v_c) dt
 //                             and the slow-down is feasible from (v, a): cruise
 //   not feasible from (v, a) even at -decel: brake at -decel (jerk-limited); the ego arrives late
-//   the holding step (acceleration released toward 0) keeps the same test: hold
+//   the holding step (release_acceleration) keeps the same test: hold
 //   else:                     the gentlest a_t in [-decel, 0) with D <= d; one step along it
 // track_speed approaches a speed from either side: the acceleration moves at most J dt per step
 // toward +-sqrt(2 J |gap|) (clamped to accel / -decel), so it is back at 0 as the speed arrives.
@@ -54,6 +55,10 @@ double slow_down_distance(double v, double a, double v_f, double a_t, double jer
 /// profile's end v_f is held with no acceleration. With v_f = 0 it is a stop whose deceleration is
 /// released as the ego comes to rest (the stop planner's profile where the distance allows).
 SpeedStep slow_down_step(double v, double a, double v_f, double a_t, double jerk, double dt);
+
+/// One step of length dt that releases the acceleration a toward 0 at `jerk` (a hold of the speed
+/// that is still speeding up or slowing down: it changes a^2 / 2 jerk more).
+SpeedStep release_acceleration(double v, double a, double jerk, double dt);
 
 /// One step of length dt from (v, a) toward `target` speed (see the top).
 SpeedStep track_speed(double v, double a, double target, const RideLimits& limits, double dt);

@@ -227,9 +227,9 @@ StopCommand plan_stop(const StopPlannerInput& in, const StopPlannerParameters& p
     const double jerk = std::abs(set.min_jerk);
 
     // Hold the speed while the normal level, less its tracking margin, can still stop after one more
-    // step; an acceleration still on is released at the level's jerk (track_speed toward v).
+    // step; an acceleration still on is released at the level's jerk.
     if (level == StopLevel::Normal && a >= kBrakingAcceleration) {
-      const SpeedStep held = track_speed(v, a, v, RideLimits{kInf, -set.min_acc, jerk}, in.dt);
+      const SpeedStep held = release_acceleration(v, a, jerk, in.dt);
       if (ride_stop_distance(held.speed, held.accel, params.brake_start_ratio * set.min_acc, jerk) <=
           D - std::max(v, held.speed) * in.dt) {
         cmd.braking = false;
