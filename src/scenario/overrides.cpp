@@ -4,6 +4,7 @@
 #include "scenario/input_error.hpp"
 #include "scenario/scenario_keys.hpp"
 #include "scenario/utf8_text.hpp"
+#include "scenario/yaml_text.hpp"
 
 namespace signalsim {
 
@@ -28,6 +29,8 @@ YAML::Node apply_overrides(YAML::Node root, const ScenarioOverrides& overrides, 
   for (const std::string& item : overrides.set) {
     if (const auto bad = find_invalid_utf8(item))
       throw InputError("--set", 0, "an override is not UTF-8 text: " + describe_invalid_utf8(item, *bad));
+    if (const auto control = find_control_character(item, false))
+      throw InputError("--set", 0, "an override holds " + describe_control_character(item, *control));
     const auto eq = item.find('=');
     // key+=value appends to a list of the scenario.
     const bool append = eq != std::string::npos && eq > 0 && item[eq - 1] == '+';
@@ -42,6 +45,7 @@ YAML::Node apply_overrides(YAML::Node root, const ScenarioOverrides& overrides, 
     } catch (const YAML::Exception& e) {
       throw InputError("--set", 0, "'" + item + "': malformed value: " + e.msg);
     }
+    check_yaml_values(value, "--set", "'" + item + "'");
     // A scalar rebuilt without a parse mark carries no line, so a message about it names no line of
     // the scenario file (it came from the command line).
     if (value.IsScalar()) value = YAML::Node(value.Scalar());

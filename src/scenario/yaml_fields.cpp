@@ -10,6 +10,7 @@
 
 #include "scenario/input_error.hpp"
 #include "scenario/utf8_text.hpp"
+#include "scenario/yaml_text.hpp"
 
 namespace signalsim {
 
@@ -24,15 +25,19 @@ std::string read_yaml_text(const std::string& path, const std::string& what) {
   std::string text = bytes.str();
   // Every string of the file may end up in summary.json (UTF-8 JSON): check the text now, at its line.
   if (const auto bad = find_invalid_utf8(text)) throw InputError(path, bad->line, describe_invalid_utf8(text, *bad) + "; save the file as UTF-8");
+  check_yaml_text(text, path, what);
   return text;
 }
 
 YAML::Node parse_yaml_text(const std::string& text, const std::string& path) {
+  YAML::Node root;
   try {
-    return YAML::Load(text);
+    root = YAML::Load(text);
   } catch (const YAML::Exception& e) {
     throw InputError(path, e.mark.line + 1, "malformed YAML: " + e.msg);
   }
+  check_yaml_texts(root, text, path);
+  return root;
 }
 
 }  // namespace
