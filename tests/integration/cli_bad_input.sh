@@ -74,6 +74,19 @@ check unterminated_quote_first_line run "$bad/unterminated_quote_first_line.yaml
 check escaped_control_character run "$bad/escaped_control_character.yaml" -- "escaped_control_character.yaml:1: a text holds a control character (U+001B)"
 check raw_control_character run "$bad/raw_control_character.yaml" -- "raw_control_character.yaml:1: a control character (U+001B at column 10)"
 
+# check: a --golden folder that is missing, not a folder or holds none of the scenarios' golden files,
+# and a folder --update or --junit cannot write into: one line before any run (no results.csv).
+left=$src/scenarios/intersection_left.yaml
+check golden_missing check "$left" --golden "$work/nowhere" -- "--golden: folder '$work/nowhere' not found"
+check golden_not_a_folder check "$left" --golden "$bad/unknown_key.yaml" -- "--golden: '$bad/unknown_key.yaml' is not a folder"
+mkdir -p "$work/golden_empty"
+check golden_empty check "$left" --golden "$work/golden_empty" -- "--golden: folder '$work/golden_empty' does not hold the scenario's golden file (intersection_left.events.csv)"
+check update_unwritable check "$left" --golden "$bad/unknown_key.yaml/golden" --update -- "--update: cannot create the folder '$bad/unknown_key.yaml/golden'"
+check junit_unwritable check "$left" --golden "$src/tests/golden" --junit "$bad/unknown_key.yaml/check.xml" -- "--junit: cannot create the folder '$bad/unknown_key.yaml'"
+for name in golden_missing golden_not_a_folder golden_empty update_unwritable junit_unwritable; do
+  [ -e "$work/$name/results.csv" ] && { echo "FAIL $name: runs were made"; failures=$((failures + 1)); }
+done
+
 # The user's SUMO files: a missing or net-less sumocfg, ego ids, contradicting keys, refused options.
 check missing_sumocfg run "$bad/missing_sumocfg.yaml" -- "missing_sumocfg.yaml:2" "key 'sumocfg'" "nowhere.sumocfg' not found"
 check sumocfg_without_net run "$bad/sumocfg_without_net.yaml" -- "sumocfg_without_net.yaml:2" "no_net.sumocfg' names no net-file"
