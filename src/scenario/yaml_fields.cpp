@@ -65,6 +65,21 @@ YAML::Node load_shared_yaml_file(const std::string& path, const std::string& wha
   return root;
 }
 
+std::optional<double> yaml_number(const YAML::Node& node, std::string& reason) {
+  double value = 0.0;
+  if (!node.IsScalar() || !YAML::convert<double>::decode(node, value) || !std::isfinite(value)) {
+    reason = "expected a number, got '" + (node.IsScalar() ? node.Scalar() : std::string("a list or map")) + "'";
+    return std::nullopt;
+  }
+  // SUMO reads numbers with strtod and refuses one that underflows (a subnormal such as 1e-308):
+  // such a value would pass here and fail in SUMO with its own two-line message.
+  if (value != 0.0 && std::abs(value) < std::numeric_limits<double>::min()) {
+    reason = "value " + node.Scalar() + " is too small to be a number SUMO can read (below 2.2e-308); write 0";
+    return std::nullopt;
+  }
+  return value;
+}
+
 int yaml_line(const YAML::Node& node) { return node && node.Mark().line >= 0 ? node.Mark().line + 1 : 0; }
 
 YamlFields::YamlFields(const YAML::Node& mapping, std::string file, std::string where)
@@ -152,14 +167,11 @@ double YamlFields::required_number(const std::string& key, double min, double ma
   (void)spec(key, KeyType::Number);
   const YAML::Node n = node(key);
   if (!n) throw InputError(file_, yaml_line(mapping_), "missing required key '" + qualified(key) + "'");
-  double value = 0.0;
   if (n.IsNull()) fail(key, "empty value (expected a number)");
-  if (!n.IsScalar() || !YAML::convert<double>::decode(n, value) || !std::isfinite(value))
-    fail(key, "expected a number, got '" + (n.IsScalar() ? n.Scalar() : std::string("a list or map")) + "'");
-  // SUMO reads numbers with strtod and refuses one that underflows (a subnormal such as 1e-308):
-  // such a value would pass here and fail in SUMO with its own two-line message.
-  if (value != 0.0 && std::abs(value) < std::numeric_limits<double>::min())
-    fail(key, "value " + n.Scalar() + " is too small to be a number SUMO can read (below 2.2e-308); write 0");
+  std::string reason;
+  const std::optional<double> number = yaml_number(n, reason);
+  if (!number) fail(key, reason);
+  const double value = *number;
   if (value < min || value > max) {
     std::ostringstream out;
     out << "value " << n.Scalar() << " is out of range [" << min << ", " << max << "]";

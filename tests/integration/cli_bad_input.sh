@@ -74,6 +74,14 @@ check unterminated_quote_first_line run "$bad/unterminated_quote_first_line.yaml
 check escaped_control_character run "$bad/escaped_control_character.yaml" -- "escaped_control_character.yaml:1: a text holds a control character (U+001B)"
 check raw_control_character run "$bad/raw_control_character.yaml" -- "raw_control_character.yaml:1: a control character (U+001B at column 10)"
 
+# The number rule (finite, no subnormal) wherever a number is read: light_offsets, parameter values
+# (params.set, --set), perception intervals.
+check subnormal_light_offset run "$bad/subnormal_light_offset.yaml" -- "subnormal_light_offset.yaml:3: key 'light_offsets.C': value 1e-310 is too small to be a number SUMO can read (below 2.2e-308); write 0"
+check subnormal_parameter run "$bad/subnormal_parameter.yaml" -- "subnormal_parameter.yaml:7: parameter 'turn_signal_search_time': value 1e-310 is too small"
+check subnormal_parameter_set run "$bad/unknown_edge.yaml" --set turn_signal_search_time=4e-320 -- "--set: parameter 'turn_signal_search_time': value 4e-320 is too small"
+check subnormal_blackout run "$bad/subnormal_blackout.yaml" -- "subnormal_blackout.yaml:8: key 'perception.blackouts': value 1e-320 is too small"
+check infinite_v2i_blackout run "$bad/infinite_v2i_blackout.yaml" -- "infinite_v2i_blackout.yaml:6: key 'perception.v2i.blackouts': expected a number, got '.inf'"
+
 # check: a --golden folder that is missing, not a folder or holds none of the scenarios' golden files,
 # and a folder --update or --junit cannot write into: one line before any run (no results.csv).
 left=$src/scenarios/intersection_left.yaml
