@@ -15,6 +15,7 @@
 #include "scenario/scenario_keys.hpp"
 #include "scenario/signal_reading.hpp"
 #include "scenario/sumo_inputs.hpp"
+#include "scenario/utf8_text.hpp"
 #include "scenario/yaml_fields.hpp"
 #include "core/file_paths.hpp"
 #include "net/net_file.hpp"
@@ -93,6 +94,7 @@ Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrid
   s.path = path;
   YamlFields top(root, path, "", scenario_keys());
   s.name = top.text("name");
+  if (const std::string problem = name_problem(s.name, false); !problem.empty()) top.fail("name", problem);
   s.description = top.text_or("description");
   read_simulation_keys(top, path, s);
   // The timeline is kept in memory: cap the number of steps (about 0.5 kB each).

@@ -81,4 +81,12 @@ std::string describe_control_character(std::string_view text, const ControlChara
   return buf;
 }
 
+std::string name_problem(std::string_view name, bool names_a_folder) {
+  if (name.find_first_not_of(" \t\n") == std::string_view::npos) return "the name is empty";
+  if (!names_a_folder) return "";
+  if (name.find('/') != std::string_view::npos || name == "." || name == "..")
+    return "'" + std::string(name) + "' is not a folder name (it names the output folder out/<name>: no '/', not . or ..)";
+  return "";
+}
+
 }  // namespace signalsim

@@ -36,4 +36,9 @@ std::optional<ControlCharacter> find_control_character(std::string_view text, bo
 /// "a control character (U+001B at column 7)" for messages (the column counts bytes).
 std::string describe_control_character(std::string_view text, const ControlCharacter& found);
 
+/// What is wrong with a name a user gives (a scenario's or a sweep's `name`), "" when nothing: it may
+/// not be empty or blank. A name that `names_a_folder` (a sweep's: its default output folder
+/// out/<name>) is one folder name: no '/' and not "." or "..", so the output stays in out/.
+std::string name_problem(std::string_view name, bool names_a_folder);
+
 }  // namespace signalsim

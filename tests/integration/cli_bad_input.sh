@@ -82,6 +82,15 @@ check subnormal_parameter_set run "$bad/unknown_edge.yaml" --set turn_signal_sea
 check subnormal_blackout run "$bad/subnormal_blackout.yaml" -- "subnormal_blackout.yaml:8: key 'perception.blackouts': value 1e-320 is too small"
 check infinite_v2i_blackout run "$bad/infinite_v2i_blackout.yaml" -- "infinite_v2i_blackout.yaml:6: key 'perception.v2i.blackouts': expected a number, got '.inf'"
 
+# Names: a scenario's may not be empty, a sweep's is one folder name (its output stays in out/);
+# generate writes into no folder that holds what it did not write (left as it was).
+check empty_name run "$bad/empty_name.yaml" -- "empty_name.yaml:1: key 'name': the name is empty"
+check sweep_name_escapes sweep "$bad/sweep_name_escapes.yaml" -- "sweep_name_escapes.yaml:1: key 'name': '../../x' is not a folder name"
+mkdir -p "$work/generate_foreign/notes" && echo mine > "$work/generate_foreign/notes.txt"
+check generate_foreign generate "$src/sumo_nets/cross/cross.net.xml" --count 2 -- "generate_foreign/notes[.a-z]*: not written by signalsim generate"
+[ "$(ls "$work/generate_foreign")" = "$(printf 'notes\nnotes.txt')" ] ||
+  { echo "FAIL generate_foreign: the folder changed: $(ls "$work/generate_foreign")"; failures=$((failures + 1)); }
+
 # check: a --golden folder that is missing, not a folder or holds none of the scenarios' golden files,
 # and a folder --update or --junit cannot write into: one line before any run (no results.csv).
 left=$src/scenarios/intersection_left.yaml
