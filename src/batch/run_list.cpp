@@ -19,6 +19,10 @@ std::string describe_values(const RunSpec& run) {
   return out;
 }
 
+// An error of a run's scenario as a sweep message says it: a value the sweep gave (an override, named
+// "--set <item>") by its reason alone, the sweep's line naming the value.
+std::string sweep_detail(const InputError& e) { return e.file().rfind("--set ", 0) == 0 ? e.reason() : e.what(); }
+
 }  // namespace
 
 std::vector<RunSpec> expand_sweep(const Sweep& sweep) {
@@ -78,7 +82,7 @@ void check_sweep_runs(const Sweep& sweep, std::vector<RunSpec>& runs) {
       (void)load_scenario(file, ScenarioOverrides{set});
       return true;
     } catch (const InputError& e) {
-      if (error) *error = e.what();
+      if (error) *error = sweep_detail(e);
       return false;
     }
   };
@@ -102,7 +106,7 @@ void check_sweep_runs(const Sweep& sweep, std::vector<RunSpec>& runs) {
       continue;
     } catch (const InputError& e) {
       // Find what is at fault: the scenario with the fixed set, one value alone, or the combination.
-      std::string error = e.what();
+      std::string error = sweep_detail(e);
       if (!good_scenarios.count(run.scenario)) {
         if (!loads(run.scenario, sweep.set, &error)) {
           const int line = sweep.set.empty() ? sweep.scenarios_line : sweep.set_lines.front();
@@ -122,7 +126,7 @@ void check_sweep_runs(const Sweep& sweep, std::vector<RunSpec>& runs) {
         good_values.insert(run.scenario + "\n" + item);
       }
       throw InputError(sweep.path, sweep.zips.empty() ? sweep.grid_line : sweep.zip_line,
-                       "run " + std::to_string(run.index) + " (" + describe_values(run) + "): " + e.what());
+                       "run " + std::to_string(run.index) + " (" + describe_values(run) + "): " + sweep_detail(e));
     }
   }
 }

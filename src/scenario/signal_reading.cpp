@@ -19,14 +19,15 @@ std::vector<PerceptionModelParameters::Blackout> parse_intervals(YamlFields& f, 
   if (!intervals.IsSequence()) f.fail(name, "expected a list of [start, end] pairs");
   for (const auto& pair : intervals) {
     const auto refuse = [&] {
-      throw InputError(file, yaml_line(pair), "key '" + key + "': each entry is [start, end] with start <= end");
+      throw InputError(file, yaml_line(pair), "key '" + key + "': each entry is [start, end] with start <= end", key);
     };
     if (!pair.IsSequence() || pair.size() != 2) refuse();
     std::string reason;
     std::optional<double> ends[2];
     for (int k = 0; k < 2; ++k)
       if (!(ends[k] = yaml_number(pair[k], reason)))
-        throw InputError(file, yaml_line(pair[k]) > 0 ? yaml_line(pair[k]) : yaml_line(pair), "key '" + key + "': " + reason);
+        throw InputError(file, yaml_line(pair[k]) > 0 ? yaml_line(pair[k]) : yaml_line(pair), "key '" + key + "': " + reason,
+                         key);
     if (!(*ends[0] <= *ends[1])) refuse();
     out.push_back({*ends[0], *ends[1]});
   }
@@ -79,7 +80,7 @@ void read_signal_inputs(const YamlFields& top, const std::string& path, Scenario
       const std::optional<double> value = yaml_number(entry.second, reason);
       if (!value)
         throw InputError(path, yaml_line(entry.first),
-                         "key 'light_offsets." + entry.first.Scalar() + "': " + reason);
+                         "key 'light_offsets." + entry.first.Scalar() + "': " + reason, "light_offsets." + entry.first.Scalar());
       s.light_offsets[entry.first.Scalar()] = *value;
     }
   }

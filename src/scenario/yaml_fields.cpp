@@ -8,6 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "core/file_paths.hpp"
 #include "scenario/input_error.hpp"
 #include "scenario/utf8_text.hpp"
 #include "scenario/yaml_text.hpp"
@@ -17,7 +18,8 @@ namespace signalsim {
 namespace {
 
 std::string read_yaml_text(const std::string& path, const std::string& what) {
-  if (!std::filesystem::is_regular_file(path)) throw InputError(path, 0, what + " not found");
+  if (const std::string problem = input_file_problem(path); !problem.empty())
+    throw InputError(path, 0, what + " " + problem);
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, 0, "cannot read the " + what);
   std::stringstream bytes;
@@ -86,7 +88,8 @@ YamlFields::YamlFields(const YAML::Node& mapping, std::string file, std::string 
     : mapping_(mapping), file_(std::move(file)), where_(std::move(where)) {
   if (!mapping_.IsMap())
     throw InputError(file_, yaml_line(mapping_),
-                     (where_.empty() ? std::string("the file") : "'" + where_ + "'") + " must be a mapping of key: value");
+                     (where_.empty() ? std::string("the file") : "'" + where_ + "'") + " must be a mapping of key: value",
+                     where_);
   reject_duplicate_keys(mapping_, file_, where_);
 }
 
@@ -115,7 +118,7 @@ void reject_duplicate_keys(const YAML::Node& mapping, const std::string& file, c
     const std::string key = entry.first.Scalar();
     if (!seen.insert(key).second)
       throw InputError(file, yaml_line(entry.first),
-                       "duplicate key '" + (where.empty() ? key : where + "." + key) + "'");
+                       "duplicate key '" + (where.empty() ? key : where + "." + key) + "'", where.empty() ? key : where + "." + key);
   }
 }
 
@@ -128,7 +131,7 @@ int YamlFields::line_of(const std::string& key) const {
 }
 
 void YamlFields::fail(const std::string& key, const std::string& reason) const {
-  throw InputError(file_, line_of(key), "key '" + qualified(key) + "': " + reason);
+  throw InputError(file_, line_of(key), "key '" + qualified(key) + "': " + reason, qualified(key));
 }
 
 bool YamlFields::has(const std::string& key) const {
@@ -145,7 +148,7 @@ YAML::Node YamlFields::node(const std::string& key) const {
 std::string YamlFields::text(const std::string& key) const {
   (void)spec(key, KeyType::Text);
   const YAML::Node n = node(key);
-  if (!n) throw InputError(file_, yaml_line(mapping_), "missing required key '" + qualified(key) + "'");
+  if (!n) throw InputError(file_, yaml_line(mapping_), "missing required key '" + qualified(key) + "'", where_);
   if (!n.IsScalar()) fail(key, "expected a text value");
   return n.Scalar();
 }
@@ -166,7 +169,7 @@ double YamlFields::number(const std::string& key, double fallback, double min, d
 double YamlFields::required_number(const std::string& key, double min, double max) const {
   (void)spec(key, KeyType::Number);
   const YAML::Node n = node(key);
-  if (!n) throw InputError(file_, yaml_line(mapping_), "missing required key '" + qualified(key) + "'");
+  if (!n) throw InputError(file_, yaml_line(mapping_), "missing required key '" + qualified(key) + "'", where_);
   if (n.IsNull()) fail(key, "empty value (expected a number)");
   std::string reason;
   const std::optional<double> number = yaml_number(n, reason);
@@ -216,7 +219,7 @@ void YamlFields::finish() const {
   for (const auto& entry : mapping_) {
     const std::string key = entry.first.Scalar();
     if (!read_.count(key) || (keys_ && !keys_->find(key)))
-      throw InputError(file_, yaml_line(entry.first), "unknown key '" + qualified(key) + "'");
+      throw InputError(file_, yaml_line(entry.first), "unknown key '" + qualified(key) + "'", qualified(key));
   }
 }
 
