@@ -255,7 +255,6 @@ struct Scenario {
   std::optional<PullOutManeuver> pull_out;        ///< from `maneuvers` (at most one)
   std::optional<PullOverManeuver> pull_over;      ///< from `maneuvers` (at most one)
   std::vector<Expectation> expect;
-  std::vector<int> expect_lines;  ///< the scenario file's line of each expectation (0: unknown)
   /// `decider:` / `light_judge:` the implementations under test (docs/decider.md); the reference
   /// (signalsim's own) by default, which then decides alone.
   SutSpec decider;

@@ -131,7 +131,7 @@ void read_simulation_keys(const YamlFields& top, const std::string& path, Scenar
                                " s is not a whole number of milliseconds (SUMO would round it to " +
                                short_number(std::max(1.0, std::round(ms)) / 1000.0) + " s)";
     if (top.has("step_length")) top.fail("step_length", reason);
-    throw InputError(s.sumo.sumocfg, 0, "step-length " + reason);
+    throw InputError(s.sumo.sumocfg, cfg ? cfg->step_length_line : 0, "step-length " + reason);
   }
   s.seed = cfg && cfg->seed ? top.integer("seed", *cfg->seed) : top.integer("seed");
   if (cfg && cfg->step_length) {

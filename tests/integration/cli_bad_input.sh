@@ -103,6 +103,17 @@ check missing_parameter_file run "$bad/missing_parameter_file.yaml" -- "missing_
 check missing_vehicle_info run "$bad/missing_vehicle_info.yaml" -- "missing_vehicle_info.yaml:5: key 'ego.vehicle_info': vehicle_info file '.*nowhere/vehicle_info.param.yaml' not found"
 check edge_without_lanes run "$bad/edge_without_lanes.yaml" -- "edge_without_lanes.net.xml:37: edge 'ab': the edge has no <lane> (a route edge) in ego.route of"
 
+# Input files that are folders, named pipes or devices say what they are (and a pipe never blocks);
+# a gzip net that inflates beyond the limit (a bomb: 600 MiB of zeros in 0.6 MB) stops at the limit.
+mkfifo "$work/pipe.yaml"
+check scenario_fifo run "$work/pipe.yaml" -- "pipe.yaml: scenario file is a named pipe (FIFO), not a file"
+check net_folder run "$bad/unknown_edge.yaml" --set "net=$src/sumo_nets" -- "key 'net': net file '$src/sumo_nets' is a folder, not a file"
+check params_device run "$bad/unknown_edge.yaml" --params /dev/zero -- "^signalsim: /dev/zero: parameter file is a device, not a file$"
+head -c 600M /dev/zero | gzip -1 > "$work/bomb.net.xml.gz"
+printf 'name: bomb\nnet: bomb.net.xml.gz\nego:\n  route: [a]\n' > "$work/bomb.yaml"
+check net_gzip_bomb run "$work/bomb.yaml" -- "bomb.net.xml.gz: inflates to more than 512 MiB, the most a net"
+rm -f "$work/bomb.net.xml.gz"
+
 # A value --set gave is named as the command line's, not as a line of the scenario file.
 check set_net_missing run "$bad/unknown_edge.yaml" --set net=nowhere.net.xml -- "^signalsim: --set net=nowhere.net.xml: key 'net': net file '.*nowhere.net.xml' not found$"
 check set_out_of_range run "$bad/unknown_edge.yaml" --set ego.max_speed=500 -- "^signalsim: --set ego.max_speed=500: key 'ego.max_speed': value 500 is out of range"
