@@ -31,6 +31,7 @@
 #include "batch/run_list.hpp"
 #include "batch/run_outputs.hpp"
 #include "batch/scenario_files.hpp"
+#include "core/file_paths.hpp"
 #include "core/number_text.hpp"
 #include "report/atomic_file.hpp"
 #include "report/run_files.hpp"
@@ -146,8 +147,10 @@ JUnitCase check_one(const RunSpec& run, const ResultRow* row, const CheckOptions
     write_golden_suts(golden, suts);
     return matched(format_text("updated %s (%zu events)", golden.c_str(), events.size()));
   }
-  if (!fs::is_regular_file(golden))
+  if (const std::string problem = input_file_problem(golden); problem == "not found")
     return verdict(JUnitCase::Result::Failed, "no golden file " + golden + " (create it with --update)");
+  else if (!problem.empty())
+    return verdict(JUnitCase::Result::Error, golden + ": " + problem);  // a folder, a named pipe: never opened
   std::vector<TimelineEvent> expected;
   GoldenSuts golden_suts;
   try {
