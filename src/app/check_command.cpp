@@ -27,6 +27,7 @@
 #include "app/sut_flags.hpp"
 #include "batch/golden.hpp"
 #include "batch/golden_suts.hpp"
+#include "batch/interrupt_guard.hpp"
 #include "batch/junit_xml.hpp"
 #include "batch/run_list.hpp"
 #include "batch/run_outputs.hpp"
@@ -242,6 +243,7 @@ Command add_check_command(CLI::App& app) {
   add_batch_options(sub, o->batch, "out/check", false);
   add_sut_flags(sub, o->set, o->suts);
   return {sub, [o]() -> int {
+            const InterruptGuard signals;  // Ctrl-C or SIGTERM while the scenarios load: exit 130, nothing ran
             try {
               hold_notes();  // until every scenario loaded: a bad --set or --params is one line
               const std::vector<std::string> files = scenario_files(o->paths);
@@ -280,6 +282,8 @@ Command add_check_command(CLI::App& app) {
               }
               if (errors > 0) return kExitRunErrors;
               return failed > 0 ? kExitFailed : 0;
+            } catch (const BatchInterrupted& e) {
+              return report_interrupted(e.what());
             } catch (const std::exception& e) {
               return report_bad_input(e.what());
             }
