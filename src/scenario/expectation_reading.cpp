@@ -63,7 +63,11 @@ Expectation parse_expectation(const YAML::Node& item, const std::string& file, s
     YamlFields fields(wrapped, file, where + "." + kind, blinker_never_keys());
     if (!body.IsScalar())
       throw InputError(file, yaml_line(body), where + ".blinker_never: expected left, right or hazard", where);
-    return ExpectBlinkerNever{parse_blinker(fields, "blinker")};
+    try {
+      return ExpectBlinkerNever{parse_blinker(fields, "blinker")};
+    } catch (const InputError& e) {  // the wrapping mapping has no lines: the value's
+      throw InputError(file, yaml_line(body), e.reason(), e.key());
+    }
   }
   if (!kinds.find(kind)) {
     (void)YamlFields(body, file, where + "." + kind);  // a body that is no mapping is reported first
