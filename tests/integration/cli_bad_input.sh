@@ -101,6 +101,7 @@ check depart_lane_missing run "$bad/depart_lane_missing.yaml" -- "depart_lane_mi
 check sumo_rejects_option run "$bad/sumo_rejects_option.yaml" -- "sumo_rejects_option.yaml:8: key 'sumo_args': --lateral-resolution wide: SUMO could not load the simulation: While processing option 'lateral-resolution': 'wide' is not a valid float"
 check missing_parameter_file run "$bad/missing_parameter_file.yaml" -- "missing_parameter_file.yaml:6: key 'params.files': parameter file '.*nowhere.param.yaml' not found"
 check missing_vehicle_info run "$bad/missing_vehicle_info.yaml" -- "missing_vehicle_info.yaml:5: key 'ego.vehicle_info': vehicle_info file '.*nowhere/vehicle_info.param.yaml' not found"
+check blinker_never_bad run "$bad/blinker_never_bad.yaml" -- "blinker_never_bad.yaml:6: key 'expect\[0\].blinker_never.blinker': 'sideways' is not one of"
 check edge_without_lanes run "$bad/edge_without_lanes.yaml" -- "edge_without_lanes.net.xml:37: edge 'ab': the edge has no <lane> (a route edge) in ego.route of"
 
 # Input files that are folders, named pipes or devices say what they are (and a pipe never blocks);
