@@ -7,6 +7,7 @@
 #include "app/command.hpp"
 #include "app/override_flags.hpp"
 #include "app/sut_flags.hpp"
+#include "batch/interrupt_guard.hpp"
 #include "batch/run_list.hpp"
 #include "batch/scenario_files.hpp"
 #include "scenario/input_error.hpp"
@@ -30,6 +31,7 @@ Command add_batch_command(CLI::App& app) {
   add_sut_flags(sub, o->set, o->suts);
   add_backend_options(sub, o->backend);
   return {sub, [o]() -> int {
+            const InterruptGuard signals;  // Ctrl-C or SIGTERM while the scenarios load: exit 130, nothing ran
             try {
               hold_notes();  // until every scenario loaded: a bad --set or --params is one line
               const std::vector<RunSpec> runs = suite_runs(scenario_files(o->paths), o->set);
@@ -37,6 +39,8 @@ Command add_batch_command(CLI::App& app) {
               const BatchSettings settings = to_settings(o->batch, "out/batch", 300.0);
               const BackendRun run = run_with_backend(runs, settings, o->batch, o->backend);
               return run.merged ? run.result.exit_code() : 0;
+            } catch (const BatchInterrupted& e) {
+              return report_interrupted(e.what());
             } catch (const std::exception& e) {
               return report_bad_input(e.what());
             }

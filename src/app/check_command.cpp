@@ -9,11 +9,14 @@
 // judge under test (--decider, --light-judge or the scenario's keys) the golden file must have been made
 // with the same ones (batch/golden_suts.hpp), else the case fails. --set, --params and --strict-params
 // change every scenario as for batch, so a candidate parameter set is checked against the golden files.
+// A --golden folder that is missing or holds none of the scenarios' golden files, and a folder --update
+// or --junit cannot write into, are bad input before any run.
 #include <unistd.h>
 
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <memory>
 
@@ -24,10 +27,12 @@
 #include "app/sut_flags.hpp"
 #include "batch/golden.hpp"
 #include "batch/golden_suts.hpp"
+#include "batch/interrupt_guard.hpp"
 #include "batch/junit_xml.hpp"
 #include "batch/run_list.hpp"
 #include "batch/run_outputs.hpp"
 #include "batch/scenario_files.hpp"
+#include "core/file_paths.hpp"
 #include "core/number_text.hpp"
 #include "report/atomic_file.hpp"
 #include "report/run_files.hpp"
@@ -143,8 +148,10 @@ JUnitCase check_one(const RunSpec& run, const ResultRow* row, const CheckOptions
     write_golden_suts(golden, suts);
     return matched(format_text("updated %s (%zu events)", golden.c_str(), events.size()));
   }
-  if (!fs::is_regular_file(golden))
+  if (const std::string problem = input_file_problem(golden); problem == "not found")
     return verdict(JUnitCase::Result::Failed, "no golden file " + golden + " (create it with --update)");
+  else if (!problem.empty())
+    return verdict(JUnitCase::Result::Error, golden + ": " + problem);  // a folder, a named pipe: never opened
   std::vector<TimelineEvent> expected;
   GoldenSuts golden_suts;
   try {
@@ -174,6 +181,45 @@ JUnitCase check_one(const RunSpec& run, const ResultRow* row, const CheckOptions
   return matched(format_text("%zu events match %s", events.size(), golden.c_str()));
 }
 
+// The golden folder of a comparison (not --update): a folder holding the golden file of at least one
+// of the scenarios; else every case would fail alike on a path mistyped in CI.
+void check_golden_folder(const std::string& dir, const std::vector<std::string>& files) {
+  std::error_code ec;
+  const fs::file_status status = fs::status(dir, ec);
+  if (!fs::exists(status)) throw InputError("--golden", 0, "folder '" + dir + "' not found");
+  if (!fs::is_directory(status)) throw InputError("--golden", 0, "'" + dir + "' is not a folder");
+  for (const std::string& f : files)
+    if (fs::exists(fs::path(dir) / (fs::path(f).stem().string() + ".events.csv"), ec)) return;
+  const std::string which = files.size() == 1 ? "the scenario's golden file (" + fs::path(files[0]).stem().string() + ".events.csv)"
+                                              : "the golden file (<scenario>.events.csv) of any of the " +
+                                                    std::to_string(files.size()) + " scenarios";
+  throw InputError("--golden", 0, "folder '" + dir + "' does not hold " + which + "; make golden files with --update");
+}
+
+// A folder `check` writes into after the runs (--update's golden folder, --junit's): created and
+// written to now, so that one that cannot be is bad input before the runs rather than after them.
+void check_writable_folder(const std::string& dir, const std::string& flag) {
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec || !fs::is_directory(dir, ec))
+    throw InputError(flag, 0, "cannot create the folder '" + dir + "'" + (ec ? ": " + ec.message() : std::string()));
+  const fs::path probe = fs::path(dir) / (".signalsim-check-" + std::to_string(getpid()));
+  const bool written = static_cast<bool>(std::ofstream(probe) << "");
+  fs::remove(probe, ec);
+  if (!written) throw InputError(flag, 0, "cannot write into the folder '" + dir + "'");
+}
+
+// Where check writes after the runs, checked before them.
+void check_destinations(const CheckOptions& o, const std::vector<std::string>& files) {
+  if (o.update) check_writable_folder(o.golden_dir, "--update");
+  else check_golden_folder(o.golden_dir, files);
+  if (o.junit.empty()) return;
+  std::error_code ec;
+  if (fs::is_directory(o.junit, ec)) throw InputError("--junit", 0, "'" + o.junit + "' is a folder, not a file");
+  const fs::path parent = fs::path(o.junit).parent_path();
+  check_writable_folder(parent.empty() ? "." : parent.string(), "--junit");
+}
+
 }  // namespace
 
 Command add_check_command(CLI::App& app) {
@@ -197,6 +243,7 @@ Command add_check_command(CLI::App& app) {
   add_batch_options(sub, o->batch, "out/check", false);
   add_sut_flags(sub, o->set, o->suts);
   return {sub, [o]() -> int {
+            const InterruptGuard signals;  // Ctrl-C or SIGTERM while the scenarios load: exit 130, nothing ran
             try {
               hold_notes();  // until every scenario loaded: a bad --set or --params is one line
               const std::vector<std::string> files = scenario_files(o->paths);
@@ -207,6 +254,7 @@ Command add_check_command(CLI::App& app) {
                   throw InputError(f, 0, "same golden name '" + it->first + "' as " + it->second + " (file names must differ)");
               }
               const std::vector<RunSpec> runs = suite_runs(files, o->set);
+              check_destinations(*o, files);  // after the overrides' own errors, before any run
               release_notes();
               BatchSettings settings = to_settings(o->batch, "out/check", 300.0);
               settings.quiet = settings.quiet || isatty(STDOUT_FILENO) != 1;  // the verdicts below say it all
@@ -234,6 +282,8 @@ Command add_check_command(CLI::App& app) {
               }
               if (errors > 0) return kExitRunErrors;
               return failed > 0 ? kExitFailed : 0;
+            } catch (const BatchInterrupted& e) {
+              return report_interrupted(e.what());
             } catch (const std::exception& e) {
               return report_bad_input(e.what());
             }

@@ -20,6 +20,9 @@ struct Command {
 std::string single_line(const std::string& message);
 /// Prints "signalsim: <message>" (on one line) to stderr and returns kExitBadInput.
 int report_bad_input(const std::string& message);
+/// Prints "signalsim: <message>" (on one line) to stderr and returns kExitInterrupted: a batch
+/// command stopped by SIGINT or SIGTERM before its runs started (batch/interrupt_guard.hpp).
+int report_interrupted(const std::string& message);
 
 Command add_run_command(CLI::App& app);
 Command add_inspect_command(CLI::App& app);

@@ -28,6 +28,11 @@ int report_bad_input(const std::string& message) {
   return kExitBadInput;
 }
 
+int report_interrupted(const std::string& message) {
+  std::cerr << "signalsim: " << single_line(message) << "\n";
+  return kExitInterrupted;
+}
+
 }  // namespace signalsim::app
 
 int main(int argc, char** argv) {

@@ -19,6 +19,7 @@
 #include "report/outputs.hpp"
 #include "step/route_planning.hpp"
 #include "scenario/scenario.hpp"
+#include "scenario/sumo_inputs.hpp"
 #include "sim/step_loop.hpp"
 #include "net/net_index.hpp"
 #include "route/route_builder.hpp"
@@ -33,6 +34,9 @@
 namespace signalsim::app {
 namespace {
 
+
+// How an embedded SUMO's failed start begins its message (session_embedded.cpp).
+constexpr const char* kSumoLoadFailure = "SUMO could not load the simulation: ";
 
 struct RunOptions {
   std::string scenario_path;
@@ -167,7 +171,11 @@ int run(const RunOptions& options) {
   } catch (const sumo::NetError& e) {
     return fail(options, scenario, e.what());
   } catch (const sumo::SumoError& e) {
-    return fail(options, scenario, options.scenario_path + ": " + e.what());
+    // A SUMO that did not start because of an option the scenario passed on: that option's line.
+    const std::string message = e.what();
+    if (scenario && message.rfind(kSumoLoadFailure, 0) == 0)
+      if (const std::optional<InputError> at = sumo_option_error(*scenario, message)) return fail(options, scenario, at->what());
+    return fail(options, scenario, options.scenario_path + ": " + message);
   } catch (const std::exception& e) {
     return fail(options, scenario, options.scenario_path + ": " + e.what());
   }

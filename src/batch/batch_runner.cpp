@@ -37,6 +37,12 @@ void count(BatchResult& result) {
   }
 }
 
+// Whether a finished run's files are still there: its summary.json in its run folder.
+bool run_files_kept(const std::string& out_dir, const std::string& run_dir) {
+  std::error_code ec;
+  return fs::is_regular_file(fs::path(out_dir) / run_dir / run_files::kSummary, ec);
+}
+
 }  // namespace
 
 int BatchResult::exit_code() const {
@@ -75,8 +81,9 @@ BatchStart start_batch(const std::vector<RunSpec>& runs, const BatchSettings& se
                          "--resume: run " + std::to_string(index) +
                              " was not this run of this batch (other scenarios or values); use another --out");
       const auto status = row.cells.find("status");
-      if (status != row.cells.end() && is_finished_status(status->second))
-        result.rows[index] = std::move(row);  // error rows are run again
+      // Error rows are run again, and so is a finished run whose files are gone (its folder deleted).
+      if (status != row.cells.end() && is_finished_status(status->second) && run_files_kept(settings.out_dir, batch.run_dirs[index]))
+        result.rows[index] = std::move(row);
     }
     // A run finished by a back-end that leaves a row file in its run directory (Slurm) but whose
     // row never reached results.csv (the merge did not happen: --no-wait, Ctrl-C) is done too.

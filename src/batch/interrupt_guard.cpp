@@ -5,12 +5,13 @@ namespace signalsim {
 namespace {
 
 volatile std::sig_atomic_t g_interrupted = 0;
+int g_depth = 0;  // guards alive (one thread: the batch's)
 extern "C" void on_interrupt(int) { g_interrupted = 1; }
 
 }  // namespace
 
 InterruptGuard::InterruptGuard() {
-  g_interrupted = 0;
+  if (g_depth++ == 0) g_interrupted = 0;
   struct sigaction sa {};
   sa.sa_handler = on_interrupt;
   sigemptyset(&sa.sa_mask);
@@ -29,6 +30,7 @@ InterruptGuard::InterruptGuard() {
 }
 
 InterruptGuard::~InterruptGuard() {
+  --g_depth;
   sigaction(SIGINT, &old_int_, nullptr);
   sigaction(SIGTERM, &old_term_, nullptr);
   sigaction(SIGPIPE, &old_pipe_, nullptr);
@@ -36,5 +38,9 @@ InterruptGuard::~InterruptGuard() {
 }
 
 bool InterruptGuard::interrupted() { return g_interrupted != 0; }
+
+void InterruptGuard::throw_if_interrupted() {
+  if (interrupted()) throw BatchInterrupted();
+}
 
 }  // namespace signalsim

@@ -1,135 +1,94 @@
-// The runs of a sweep (grid x zip expansion, checked against the scenarios) and of a suite (see run_list.hpp).
+// The runs of a sweep (grid x zip expansion, one run at a time) and of a suite (see run_list.hpp).
 #include "batch/run_list.hpp"
 
 #include <filesystem>
-#include <set>
 #include <utility>
 
+#include "batch/interrupt_guard.hpp"
 #include "scenario/input_error.hpp"
 #include "scenario/overrides.hpp"
 #include "scenario/scenario.hpp"
 
 namespace signalsim {
 namespace fs = std::filesystem;
-namespace {
 
-std::string describe_values(const RunSpec& run) {
-  std::string out = fs::path(run.scenario).filename().string();
-  for (const auto& [key, value] : run.values) out += " " + key + "=" + value;
-  return out;
-}
-
-}  // namespace
-
-std::vector<RunSpec> expand_sweep(const Sweep& sweep) {
-  // Factors: each grid axis, then each zip group; an option is a list of (key, value).
-  using Option = std::vector<std::pair<std::string, std::string>>;
-  std::vector<std::vector<Option>> factors;
+SweepRuns::SweepRuns(const Sweep& sweep, std::vector<std::string> extra) : sweep_(sweep), extra_(std::move(extra)) {
   for (const SweepAxis& a : sweep.grid) {
     std::vector<Option> options;
     for (const std::string& v : a.values) options.push_back({{a.key, v}});
-    factors.push_back(std::move(options));
+    factors_.push_back(std::move(options));
   }
   for (const auto& group : sweep.zips) {
     std::vector<Option> options(group.front().values.size());
     for (std::size_t i = 0; i < options.size(); ++i)
       for (const SweepAxis& a : group) options[i].emplace_back(a.key, a.values[i]);
-    factors.push_back(std::move(options));
+    factors_.push_back(std::move(options));
   }
   double count = static_cast<double>(sweep.scenarios.size());
-  for (const auto& options : factors) count *= static_cast<double>(options.size());
+  for (const auto& options : factors_) count *= static_cast<double>(options.size());
   if (count > 1e6)
     throw InputError(sweep.path, sweep.grid_line, "the sweep has " + std::to_string(static_cast<long long>(count)) +
                                                       " runs, more than 1000000");
-  std::vector<RunSpec> runs;
-  for (const std::string& scenario : sweep.scenarios) {
-    std::vector<std::size_t> at(factors.size(), 0);
-    while (true) {
-      RunSpec run;
-      run.index = runs.size();
-      run.scenario = scenario;
-      run.set = sweep.set;
-      for (std::size_t f = 0; f < factors.size(); ++f)
-        for (const auto& [key, value] : factors[f][at[f]]) {
-          run.values.emplace_back(key, value);
-          run.set.push_back(sweep_set_argument(sweep, key, value));
-        }
-      runs.push_back(std::move(run));
-      // Odometer: the last factor turns fastest; done when the first one wraps around.
-      std::size_t f = factors.size();
-      bool wrapped = true;
-      while (f > 0) {
-        --f;
-        if (++at[f] < factors[f].size()) {
-          wrapped = false;
-          break;
-        }
-        at[f] = 0;
-      }
-      if (wrapped) break;
-    }
-  }
-  return runs;
+  for (const auto& options : factors_) per_scenario_ *= options.size();
 }
 
-void check_sweep_runs(const Sweep& sweep, std::vector<RunSpec>& runs) {
-  auto loads = [](const std::string& file, const std::vector<std::string>& set, std::string* error) {
-    try {
-      (void)load_scenario(file, ScenarioOverrides{set});
-      return true;
-    } catch (const InputError& e) {
-      if (error) *error = e.what();
-      return false;
-    }
-  };
-  auto line_of_value = [&](const std::string& key, const std::string& value) {
-    for (const SweepAxis& a : sweep.grid)
-      if (a.key == key)
-        for (std::size_t i = 0; i < a.values.size(); ++i)
-          if (a.values[i] == value) return std::make_pair(std::string("grid"), a.lines[i]);
-    for (const auto& group : sweep.zips)
-      for (const SweepAxis& a : group)
-        if (a.key == key)
-          for (std::size_t i = 0; i < a.values.size(); ++i)
-            if (a.values[i] == value) return std::make_pair(std::string("zip"), a.lines[i]);
-    return std::make_pair(std::string("grid"), sweep.grid_line);
-  };
-  std::set<std::string> good_scenarios;  // scenario files that load with the fixed set alone
-  std::set<std::string> good_values;     // "key=value" that load alone (with the fixed set)
-  for (RunSpec& run : runs) {
-    try {
-      run.name = load_scenario(run.scenario, ScenarioOverrides{run.set}).name;
-      continue;
-    } catch (const InputError& e) {
-      // Find what is at fault: the scenario with the fixed set, one value alone, or the combination.
-      std::string error = e.what();
-      if (!good_scenarios.count(run.scenario)) {
-        if (!loads(run.scenario, sweep.set, &error)) {
-          const int line = sweep.set.empty() ? sweep.scenarios_line : sweep.set_lines.front();
-          throw InputError(sweep.path, line, (sweep.set.empty() ? "scenarios: " : "set: ") + error);
-        }
-        good_scenarios.insert(run.scenario);
-      }
-      for (const auto& [key, value] : run.values) {
-        const std::string item = key + "=" + value;
-        if (good_values.count(run.scenario + "\n" + item)) continue;
-        std::vector<std::string> set = sweep.set;
-        set.push_back(set_argument(key, value));
-        if (!loads(run.scenario, set, &error)) {
-          const auto [where, line] = line_of_value(key, value);
-          throw InputError(sweep.path, line, where + "." + key + ": value " + value + ": " + error);
-        }
-        good_values.insert(run.scenario + "\n" + item);
-      }
-      throw InputError(sweep.path, sweep.zips.empty() ? sweep.grid_line : sweep.zip_line,
-                       "run " + std::to_string(run.index) + " (" + describe_values(run) + "): " + e.what());
-    }
+RunSpec SweepRuns::at(std::size_t index) const {
+  RunSpec run;
+  run.index = index;
+  run.scenario = sweep_.scenarios[index / per_scenario_];
+  // The choice of each factor: the digits of the index within the scenario, the last factor fastest.
+  std::vector<std::size_t> choice(factors_.size());
+  std::size_t rest = index % per_scenario_;
+  for (std::size_t f = factors_.size(); f-- > 0;) {
+    choice[f] = rest % factors_[f].size();
+    rest /= factors_[f].size();
   }
+  std::vector<std::string> items;
+  for (std::size_t f = 0; f < factors_.size(); ++f)
+    for (const auto& [key, value] : factors_[f][choice[f]]) {
+      run.values.emplace_back(key, value);
+      items.push_back(sweep_set_argument(sweep_, key, value));
+    }
+  run.set = overrides(items);
+  return run;
+}
+
+std::size_t SweepRuns::stride(std::size_t f) const {
+  std::size_t out = 1;
+  for (std::size_t g = f + 1; g < factors_.size(); ++g) out *= factors_[g].size();
+  return out;
+}
+
+std::size_t SweepRuns::index_of(std::size_t scenario, std::size_t f, std::size_t c) const {
+  return scenario * per_scenario_ + c * stride(f);
+}
+
+std::size_t SweepRuns::choice_of(std::size_t index, std::size_t f) const {
+  return (index % per_scenario_) / stride(f) % factors_[f].size();
+}
+
+std::vector<std::string> SweepRuns::overrides(const std::vector<std::string>& items) const {
+  std::vector<std::string> out = sweep_.set;
+  out.insert(out.end(), items.begin(), items.end());
+  out.insert(out.end(), extra_.begin(), extra_.end());
+  return out;
+}
+
+std::vector<RunSpec> expand_sweep(const Sweep& sweep) {
+  const SweepRuns runs(sweep);
+  std::vector<RunSpec> out;
+  out.reserve(runs.size());
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    if (i % 4096 == 0) InterruptGuard::throw_if_interrupted();
+    out.push_back(runs.at(i));
+  }
+  return out;
 }
 
 std::vector<RunSpec> suite_runs(const std::vector<std::string>& files, const std::vector<std::string>& set) {
   std::vector<RunSpec> runs;
   for (const std::string& file : files) {
+    InterruptGuard::throw_if_interrupted();
     RunSpec run;
     run.index = runs.size();
     run.scenario = file;

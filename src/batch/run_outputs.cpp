@@ -1,5 +1,6 @@
 #include "batch/run_outputs.hpp"
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -29,6 +30,13 @@ double number(const std::string& text, const std::string& path, std::size_t line
   } catch (const std::exception&) {
   }
   throw std::runtime_error(path + ":" + std::to_string(line) + ": '" + text + "' is not a number");
+}
+
+// An event's time and position: a golden file edited to nan or inf would compare as no number does.
+double finite_number(const std::string& text, const std::string& path, std::size_t line) {
+  const double v = number(text, path, line);
+  if (!std::isfinite(v)) throw std::runtime_error(path + ":" + std::to_string(line) + ": '" + text + "' is not a finite number");
+  return v;
 }
 
 Blinker parse_blinker(const std::string& text) {
@@ -88,8 +96,8 @@ std::vector<TimelineEvent> read_events_csv(const std::string& path) {
     if (row.size() != table.front().size())
       throw std::runtime_error(path + ":" + std::to_string(r + 1) + ": wrong number of fields");
     TimelineEvent e;
-    e.time = number(row[header.at("time")], path, r + 1);
-    e.s_front = number(row[header.at("s_front")], path, r + 1);
+    e.time = finite_number(row[header.at("time")], path, r + 1);
+    e.s_front = finite_number(row[header.at("s_front")], path, r + 1);
     e.kind = row[header.at("kind")];
     e.from = row[header.at("from")];
     e.to = row[header.at("to")];

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "core/file_paths.hpp"
 #include "scenario/input_error.hpp"
 
 namespace signalsim {
@@ -23,10 +24,10 @@ std::vector<std::string> scenario_files(const std::vector<std::string>& paths, c
       if (found.empty()) throw InputError(where, at, "directory '" + path + "' holds no scenario (*.yaml)");
       std::sort(found.begin(), found.end());
       out.insert(out.end(), found.begin(), found.end());
-    } else if (fs::is_regular_file(path)) {
+    } else if (const std::string problem = input_file_problem(path); problem.empty()) {
       out.push_back(path);
     } else {
-      throw InputError(where, at, "scenario path '" + path + "' not found");
+      throw InputError(where, at, "scenario path '" + path + "' " + problem);
     }
   }
   return out;

@@ -12,6 +12,7 @@
 #include "batch/sweep_plot_check.hpp"
 #include "scenario/input_error.hpp"
 #include "scenario/sut_spec.hpp"
+#include "scenario/utf8_text.hpp"
 #include "scenario/yaml_fields.hpp"
 #include "core/file_paths.hpp"
 
@@ -187,6 +188,10 @@ Sweep load_sweep(const std::string& path) {
   Sweep s;
   s.path = path;  // first: read_set's sweep_set_argument resolves beside it
   s.name = top.text_or("name", fs::path(path).stem().string());
+  if (const std::string problem = name_problem(s.name, true); !problem.empty()) {
+    if (top.has("name")) top.fail("name", problem);
+    throw InputError(path, 0, "the file's name gives the sweep's name: " + problem);
+  }
   s.description = top.text_or("description", "");
   s.scenarios = read_scenarios(top, path);
   s.scenarios_line = top.line_of("scenarios");

@@ -8,6 +8,8 @@
 #include <memory>
 #include <optional>
 
+#include "batch/interrupt_guard.hpp"
+#include "batch/sweep_check.hpp"
 #include "report/metrics.hpp"
 #include "scenario/input_error.hpp"
 #include "scenario/scenario.hpp"
@@ -124,11 +126,12 @@ void check_plot_axes(const Sweep& s, const SweepPlot& plot) {
                          ": x and y must differ");
 }
 
-void check_sweep_plot(const Sweep& sweep, const std::vector<RunSpec>& runs) {
-  for (const SweepPlot& plot : sweep.plots) check_plot_metric(sweep, plot, runs);
+void check_sweep_plot(const SweepRuns& runs) {
+  for (const SweepPlot& plot : runs.sweep().plots) check_plot_metric(plot, runs);
 }
 
-void check_plot_metric(const Sweep& sweep, const SweepPlot& plot, const std::vector<RunSpec>& runs) {
+void check_plot_metric(const SweepPlot& plot, const SweepRuns& runs) {
+  const Sweep& sweep = runs.sweep();
   const std::optional<MetricColumn> column = parse_metric_column(plot.metric);
   if (!column) return;  // empty (signalsim-plot chooses) or a run-level column every run has
   // Sections and lights per route, from the same code that computes the metrics (an empty record:
@@ -142,7 +145,10 @@ void check_plot_metric(const Sweep& sweep, const SweepPlot& plot, const std::vec
   std::map<std::string, RouteCounts> by_route;
   std::map<std::string, int> most;
   bool planned = false;
-  for (const RunSpec& run : runs) {
+  for (std::size_t index = 0; index < runs.size(); ++index) {
+    if (index == kCombinationsChecked) return;  // a huge sweep: undecided, not refused
+    InterruptGuard::throw_if_interrupted();
+    const RunSpec run = runs.at(index);
     try {
       Scenario scenario = load_scenario(run.scenario, ScenarioOverrides{run.set});
       resolve_route_file_ego(scenario);  // a taken-over vehicle's route is in the route files

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "batch/run_list.hpp"
 #include "batch/run_spec.hpp"
 #include "batch/sweep_file.hpp"
 
@@ -24,12 +25,14 @@ std::string plot_metric_problem(const std::string& metric);
 void check_plot_axes(const Sweep& sweep, const SweepPlot& plot);
 
 /// Checks every plot's metric (check_plot_metric) before any run starts.
-void check_sweep_plot(const Sweep& sweep, const std::vector<RunSpec>& runs);
+void check_sweep_plot(const SweepRuns& runs);
 
 /// Checks one plot: metric against the runs before any of them starts: a section or light metric
 /// (`roundabout_exit1.lead_distance`, `light2.stop_position_error`) needs a run whose route has that
 /// section or light (routes built from the nets as the runs build them; no SUMO). Runs whose route
-/// cannot be built are left to fail on their own. Throws InputError at the line of plot.metric.
-void check_plot_metric(const Sweep& sweep, const SweepPlot& plot, const std::vector<RunSpec>& runs);
+/// cannot be built are left to fail on their own. Looks at the first kCombinationsChecked runs at
+/// most (sweep_check.hpp): beyond them the metric is not refused. Throws InputError at the line of
+/// plot.metric.
+void check_plot_metric(const SweepPlot& plot, const SweepRuns& runs);
 
 }  // namespace signalsim

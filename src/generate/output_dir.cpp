@@ -32,28 +32,31 @@ std::string joined(const std::vector<std::string>& items, const std::string& emp
 
 namespace {
 
-// What an earlier generate wrote in `dir`; throws GenerateError for anything else that batch would read.
+// Whether `p`, a file in the --out folder, is one an earlier generate wrote: a scenario or the index
+// beginning with its marker (or their .tmp while being written), the candidate.
+bool written_by_generate(const fs::directory_entry& entry) {
+  if (!entry.is_regular_file() || entry.is_symlink()) return false;
+  const fs::path& p = entry.path();
+  std::string name = p.filename().string();
+  if (name == kCandidateFile || name == std::string(kCandidateFile) + ".tmp") return true;
+  if (name.size() > 4 && name.ends_with(".tmp")) name.resize(name.size() - 4);
+  if (fs::path(name).extension() == ".yaml") return starts_with(first_line(p), kScenarioMarker);
+  if (name == kIndexFile) return starts_with(first_line(p), kIndexMarker);
+  return false;
+}
+
+// What an earlier generate wrote in `dir`; throws GenerateError for anything else (a file or folder
+// generate did not write would be mixed into `batch DIR`, or replaced).
 std::vector<fs::path> earlier_outputs(const std::string& dir) {
   std::vector<fs::path> ours;
   std::error_code ec;
   if (!fs::exists(dir, ec)) return ours;
   if (!fs::is_directory(dir, ec)) throw GenerateError(dir + ": --out is not a folder");
   for (const auto& entry : fs::directory_iterator(dir)) {
-    if (!entry.is_regular_file()) continue;
-    const fs::path& p = entry.path();
-    const std::string name = p.filename().string();
-    if (name == kCandidateFile || name == std::string(kCandidateFile) + ".tmp") {
-      ours.push_back(p);
-    } else if (p.extension() == ".yaml") {
-      if (!starts_with(first_line(p), kScenarioMarker))
-        throw GenerateError(p.string() + ": not written by signalsim generate; give --out an empty folder (or one "
-                                         "generate wrote: its files are replaced)");
-      ours.push_back(p);
-    } else if (name == kIndexFile) {
-      if (!starts_with(first_line(p), kIndexMarker))
-        throw GenerateError(p.string() + ": not written by signalsim generate; give --out an empty folder");
-      ours.push_back(p);
-    }
+    if (!written_by_generate(entry))
+      throw GenerateError(entry.path().string() + ": not written by signalsim generate; give --out an empty folder (or "
+                                                  "one generate wrote: its files are replaced)");
+    ours.push_back(entry.path());
   }
   std::sort(ours.begin(), ours.end());
   return ours;

@@ -13,6 +13,8 @@
 
 #include <pugixml.hpp>
 
+#include "core/file_paths.hpp"
+
 #include "net/net_index.hpp"
 #include "net/net_xml_reading.hpp"
 
@@ -30,24 +32,34 @@ bool has_gzip_magic(const std::string& path) {
   return static_cast<unsigned char>(magic[0]) == 0x1f && static_cast<unsigned char>(magic[1]) == 0x8b;
 }
 
-std::string read_plain(const std::string& path) {
+// The reason for refusing a text larger than `max_text`.
+std::string too_large(const char* what, std::size_t max_text) {
+  const std::string limit = max_text >= (std::size_t{1} << 20) ? std::to_string(max_text >> 20) + " MiB"
+                                                               : std::to_string(max_text) + " bytes";
+  return std::string(what) + " more than " + limit + ", the most a net (or sumocfg) may hold; a real city's net "
+                                                     "holds a few tens of MiB";
+}
+
+std::string read_plain(const std::string& path, std::size_t max_text) {
   std::ifstream in(path, std::ios::binary);
   if (!in) fail(path, std::string("cannot open file: ") + std::strerror(errno));
   // One read of the size the file has (a char-by-char append would copy a 100 MB net several times
   // as it grows); then whatever follows, should the file have grown meanwhile.
   std::error_code ec;
   const auto size = std::filesystem::file_size(path, ec);
+  if (!ec && size > max_text) fail(path, too_large("holds", max_text));
   std::string bytes(ec ? 0 : static_cast<std::size_t>(size), '\0');
   in.read(bytes.data(), static_cast<std::streamsize>(bytes.size()));
   bytes.resize(static_cast<std::size_t>(in.gcount()));
   if (in) bytes.append(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
   if (in.bad()) fail(path, "read error");
+  if (bytes.size() > max_text) fail(path, too_large("holds", max_text));
   return bytes;
 }
 
 constexpr unsigned kChunk = 1u << 20;
 
-std::string read_gzip(const std::string& path) {
+std::string read_gzip(const std::string& path, std::size_t max_text) {
   struct GzClose {
     void operator()(gzFile_s* file) const { gzclose(file); }
   };
@@ -60,9 +72,11 @@ std::string read_gzip(const std::string& path) {
   // pages are touched only as they are filled.
   std::error_code ec;
   const auto compressed = std::filesystem::file_size(path, ec);
-  if (!ec) bytes.reserve(static_cast<std::size_t>(std::min<std::uintmax_t>(compressed * 8 + kChunk, 1u << 30)));
+  if (!ec) bytes.reserve(static_cast<std::size_t>(std::min<std::uintmax_t>(compressed * 8 + kChunk, max_text + kChunk)));
   for (;;) {
     const std::size_t old_size = bytes.size();
+    if (bytes.capacity() < old_size + kChunk)  // grown by doubling, but never past the limit
+      bytes.reserve(std::min(std::max(2 * bytes.capacity(), old_size + kChunk), max_text + kChunk));
     bytes.resize(old_size + kChunk);
     const int n = gzread(file.get(), bytes.data() + old_size, kChunk);
     if (n < 0) {
@@ -71,6 +85,8 @@ std::string read_gzip(const std::string& path) {
       fail(path, std::string("corrupt gzip data: ") + (message != nullptr ? message : "unknown error"));
     }
     bytes.resize(old_size + static_cast<std::size_t>(n));
+    // A gzip bomb (1 MB inflating to 1 GB) stops here, not when memory runs out.
+    if (bytes.size() > max_text) fail(path, too_large("inflates to", max_text));
     if (n == 0) break;
   }
   // A stream cut short reads as end of file; gzclose reports it (Z_BUF_ERROR).
@@ -113,12 +129,10 @@ std::optional<bool> read_net_lefthand(const std::string& path) {
   return std::nullopt;
 }
 
-std::string read_net_file(const std::string& path) {
-  std::error_code ec;
-  const auto status = std::filesystem::status(path, ec);
-  if (ec || !std::filesystem::exists(status)) fail(path, "no such file");
-  if (std::filesystem::is_directory(status)) fail(path, "is a directory, not a net file");
-  return has_gzip_magic(path) ? read_gzip(path) : read_plain(path);
+std::string read_net_file(const std::string& path, std::size_t max_text) {
+  // Before any open: a named pipe would block it.
+  if (const std::string problem = input_file_problem(path); !problem.empty()) fail(path, problem);
+  return has_gzip_magic(path) ? read_gzip(path, max_text) : read_plain(path, max_text);
 }
 
 }  // namespace signalsim::sumo

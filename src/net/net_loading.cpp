@@ -145,6 +145,8 @@ void NetLoader::edge(pugi::xml_node node) {
     nodes.push_back(lane_node);
     edge.lanes.push_back(lane(lane_node, edge, self));
   }
+  // SUMO refuses a normal edge without lanes; recorded against the edge, so that a route on it names this line.
+  if (edge.lanes.empty() && !edge.is_internal) e.defect("the edge has no <lane>");
   const std::vector<std::size_t> order = lane_order(e, edge, indices);
   if (!std::is_sorted(order.begin(), order.end())) {  // netconvert writes them in order
     std::vector<NetLane> lanes;
@@ -266,16 +268,24 @@ void NetLoader::tl_logic(pugi::xml_node node) {
 
 namespace {
 
-void read_root(const std::string& path, std::string_view name, const std::optional<std::string>& lefthand,
+// `line`: the root element's line in the file.
+void read_root(const std::string& path, std::string_view name, const std::optional<std::string>& lefthand, int line,
                NetData& net) {
-  if (name != "net") throw NetError(path + ": no <net> root element (found <" + std::string(name) + ">)");
+  const std::string at = path + ":" + std::to_string(line) + ": ";
+  if (name != "net") throw NetError(at + "no <net> root element (found <" + std::string(name) + ">)");
   net.path = path;
   // The driving side changes every route: a value that is not a boolean is fatal (as in SUMO).
   if (lefthand) {
     const auto value = parse_sumo_bool(*lefthand);
-    if (!value) throw NetError(path + ": <net>: attribute 'lefthand' is not a boolean: '" + *lefthand + "'");
+    if (!value) throw NetError(at + "<net>: attribute 'lefthand' is not a boolean: '" + *lefthand + "'");
     net.lefthand = *value;
   }
+}
+
+// The 1-based line of byte `offset`, given the offsets of the text's newlines.
+int line_of_offset(const std::vector<std::size_t>& newlines, std::ptrdiff_t offset) {
+  const auto at = static_cast<std::size_t>(std::max<std::ptrdiff_t>(offset, 0));
+  return 1 + static_cast<int>(std::lower_bound(newlines.begin(), newlines.end(), at) - newlines.begin());
 }
 
 }  // namespace
@@ -288,14 +298,15 @@ NetIndex NetIndex::load(const std::string& path, NetReading reading) {
     std::vector<std::size_t> newlines = newline_offsets(text);
     auto source = std::make_unique<NetSource>(std::move(text));
     if (const pugi::xml_parse_result parsed = source->parse_in_place(); !parsed) {
-      throw NetError(path + ": not XML: " + parsed.description() + " at offset " + std::to_string(parsed.offset));
+      throw NetError(path + ":" + std::to_string(line_of_offset(newlines, parsed.offset)) + ": not XML: " +
+                     parsed.description());
     }
     const pugi::xml_node root = source->root();
     std::optional<std::string> lefthand;
     if (const pugi::xml_attribute a = root.attribute("lefthand")) lefthand = a.value();
     NetIndex index;
     NetData& net = *index.data_;
-    read_root(path, root.name(), lefthand, net);
+    read_root(path, root.name(), lefthand, line_of_offset(newlines, root.offset_debug()), net);
     net.log = DefectLog(std::move(newlines));
     net.source = std::move(source);
     NetLoader loader(net);
@@ -318,7 +329,10 @@ NetIndex NetIndex::load(const std::string& path, NetReading reading) {
   if (!source->scan()) return load_whole(std::move(*source).take_text());
   NetIndex index;
   NetData& net = *index.data_;
-  read_root(path, source->root_name, source->root_lefthand, net);
+  const std::string& text = source->text();
+  const auto before_root = text.begin() + static_cast<std::ptrdiff_t>(std::min(source->root_offset, text.size()));
+  read_root(path, source->root_name, source->root_lefthand, 1 + static_cast<int>(std::count(text.begin(), before_root, '\n')),
+            net);
   net.log = DefectLog(&source->text());
   net.source = std::move(source);
   // Few and read whole by their users (approach lights, generate): read now.

@@ -194,6 +194,7 @@ class NetSource::TagVisitor : public StartTagVisitor {
 
   void root(const StartTag& tag) {
     s_.root_name = std::string(tag.name);
+    s_.root_offset = tag.begin;
     if (raw_attribute(tag, "lefthand")) s_.root_lefthand = std::string(value(tag, "lefthand"));
   }
 

@@ -135,9 +135,11 @@ class NetSource {
   /// is (ids only, nothing else read), and the root's name and `lefthand`. False when the tag scan
   /// declines the text: then it must be read whole.
   bool scan();
-  /// The root element's name and its `lefthand` attribute (nullopt: none), after scan.
+  /// The root element's name, its `lefthand` attribute (nullopt: none) and where its start tag
+  /// begins, after scan.
   std::string root_name;
   std::optional<std::string> root_lefthand;
+  std::size_t root_offset = 0;
 
   /// Keys are views into the text or the IdStore. An entry may have no <edge> (connections from an edge the
   /// net lacks): see `edge_count`.

@@ -99,7 +99,8 @@ SumoConfigFile read_sumocfg(const std::string& path) {
     };
     const auto existing = [&](const std::string& file) {
       const std::string resolved = resolve(file);
-      if (!fs::is_regular_file(resolved)) fail("option '" + name + "': file '" + resolved + "' not found");
+      if (const std::string problem = input_file_problem(resolved); !problem.empty())
+        fail("option '" + name + "': file '" + resolved + "' " + problem);
       return resolved;
     };
     if (name == "net-file") {
@@ -115,6 +116,7 @@ SumoConfigFile read_sumocfg(const std::string& path) {
       cfg.end_line = line;
     } else if (name == "step-length") {
       cfg.step_length = number();
+      cfg.step_length_line = line;
     } else if (name == "seed") {
       const auto seed = parse_int(value);
       if (!seed) fail("option 'seed' is not an integer: '" + value + "'");

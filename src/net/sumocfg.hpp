@@ -19,6 +19,7 @@ struct SumoConfigFile {
   std::vector<std::string> additional;      ///< additional-files, resolved, in order
   std::optional<double> begin, end, step_length;
   int end_line = 0;                         ///< the line of `end`
+  int step_length_line = 0;                 ///< the line of `step-length`
   std::optional<int> seed;
   /// Every other option, in file order (input file names still relative to `dir`), with its line.
   struct Other {
@@ -30,7 +31,7 @@ struct SumoConfigFile {
 
 /// Reads `path` (plain or gzip). Throws NetError "<path>:<line>: <reason>" for a missing or unreadable
 /// file, XML that is not a SUMO configuration, a number that does not parse, or a listed input file
-/// (net, route or additional file) that does not exist.
+/// (net, route or additional file) that is not a file (core/file_paths.hpp input_file_problem).
 SumoConfigFile read_sumocfg(const std::string& path);
 
 }  // namespace signalsim::sumo

@@ -215,21 +215,20 @@ ExpectationResult check(const ExpectArrives&, const RouteMap& route, const RunRe
 
 void check_expectations_apply(const Scenario& scenario, const RouteMap& route) {
   for (std::size_t i = 0; i < scenario.expect.size(); ++i) {
-    const int line = i < scenario.expect_lines.size() ? scenario.expect_lines[i] : 0;  // the expectation's
     std::string light;
     if (const auto* e = std::get_if<ExpectStopsBeforeLight>(&scenario.expect[i])) light = e->light;
     if (const auto* e = std::get_if<ExpectPassesLight>(&scenario.expect[i])) light = e->light;
     if (const auto* e = std::get_if<ExpectEmergencyStopAtLight>(&scenario.expect[i])) light = e->light;
     if (const auto* e = std::get_if<ExpectNeverInDilemmaZone>(&scenario.expect[i])) light = e->light;
     if (const auto* e = std::get_if<ExpectV2iStopAtLight>(&scenario.expect[i])) light = e->light;
+    const std::string key = "expect[" + std::to_string(i) + "]";
     if (!light.empty() && !stop_line_of(light, route))
-      throw InputError(scenario.path, line,
-                       "expect[" + std::to_string(i) + "]: traffic light '" + light + "' is not on the ego's route");
+      throw key_error(scenario, key, key + ": traffic light '" + light + "' is not on the ego's route");
     const auto* through = std::get_if<ExpectBlinkerThrough>(&scenario.expect[i]);
     if (!through || span_of(*through, route)) continue;
     const std::string what = through->junction.empty() ? "lanelet '" + through->lanelet + "'"
                                                         : "junction '" + through->junction + "'";
-    throw InputError(scenario.path, line, "expect[" + std::to_string(i) + "]: " + what + " is not on the ego's route");
+    throw key_error(scenario, key, key + ": " + what + " is not on the ego's route");
   }
 }
 

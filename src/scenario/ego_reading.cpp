@@ -50,7 +50,7 @@ bool strict_params(const YAML::Node& root, const std::string& path) {
   if (params_node && params_node.IsMap() && params_node["strict"]) {
     const YAML::Node given = params_node["strict"];
     if (!(given.IsScalar() && YAML::convert<bool>::decode(given, strict)))
-      throw InputError(path, yaml_line(given), "key 'params.strict': expected true or false");
+      throw InputError(path, yaml_line(given), "key 'params.strict': expected true or false", "params.strict");
   }
   return strict;
 }
@@ -75,9 +75,13 @@ void read_ego(const YamlFields& top, const YAML::Node& root, const std::string& 
   s.ego.width = ego.number("width");
   s.ego.base_link_to_front = ego.number("base_link_to_front", vehicle_defaults::kBaseLinkShare * s.ego.length);
   s.strict_params = strict_params(root, path);
-  if (ego.has("vehicle_info"))
-    apply_vehicle_info(load_vehicle_info(resolve_beside(path, ego.text("vehicle_info")), s.strict_params),
-                       ego.line_of("vehicle_info"), path, s.ego, s.notes, s.warnings);
+  if (ego.has("vehicle_info")) {
+    const std::string file = resolve_beside(path, ego.text("vehicle_info"));
+    if (const std::string problem = input_file_problem(file); !problem.empty())
+      ego.fail("vehicle_info", "vehicle_info file '" + file + "' " + problem);
+    apply_vehicle_info(load_vehicle_info(file, s.strict_params), ego.line_of("vehicle_info"), path, s.ego, s.notes,
+                       s.warnings);
+  }
   if (s.ego.base_link_to_front > s.ego.length) {
     if (s.ego.from_vehicle_info.count("base_link_to_front"))
       ego.fail("length", short_number(s.ego.length) + " m is shorter than base_link_to_front " +

@@ -47,27 +47,32 @@ Expectation parse_expectation(const YAML::Node& item, const std::string& file, s
   const std::string where = "expect[" + std::to_string(index) + "]";
   if (!item.IsMap() || item.size() != 1)
     throw InputError(file, yaml_line(item), where + ": each expectation is a one-key mapping, e.g. "
-                                                    "'- blinker_never: right'");
+                                                    "'- blinker_never: right'", where);
   const std::string kind = item.begin()->first.Scalar();
   const YAML::Node body = item.begin()->second;
   const KeyTable& kinds = expectation_kinds();
   if (kind == "blinker_never" || kind == "never_runs_red" || kind == "arrives") {
     if (kind != "blinker_never") {
       if (!body.IsScalar() || body.Scalar() != "true")
-        throw InputError(file, yaml_line(body), where + "." + kind + ": write '" + kind + ": true'");
+        throw InputError(file, yaml_line(body), where + "." + kind + ": write '" + kind + ": true'", where);
       if (kind == "arrives") return ExpectArrives{};
       return ExpectNeverRunsRed{};
     }
     YAML::Node wrapped;
     wrapped["blinker"] = body;
     YamlFields fields(wrapped, file, where + "." + kind, blinker_never_keys());
-    if (!body.IsScalar()) throw InputError(file, yaml_line(body), where + ".blinker_never: expected left, right or hazard");
-    return ExpectBlinkerNever{parse_blinker(fields, "blinker")};
+    if (!body.IsScalar())
+      throw InputError(file, yaml_line(body), where + ".blinker_never: expected left, right or hazard", where);
+    try {
+      return ExpectBlinkerNever{parse_blinker(fields, "blinker")};
+    } catch (const InputError& e) {  // the wrapping mapping has no lines: the value's
+      throw InputError(file, yaml_line(body), e.reason(), e.key());
+    }
   }
   if (!kinds.find(kind)) {
     (void)YamlFields(body, file, where + "." + kind);  // a body that is no mapping is reported first
     throw InputError(file, yaml_line(item.begin()->first),
-                     where + ": unknown expectation '" + kind + "' (known: " + kinds.names() + ")");
+                     where + ": unknown expectation '" + kind + "' (known: " + kinds.names() + ")", where);
   }
   YamlFields fields(body, file, where + "." + kind, kinds.table_of(kind));
   if (kind == "blinker_through_junction" || kind == "blinker_through_lanelet") {
@@ -109,10 +114,7 @@ void read_expectations(const YamlFields& top, const std::string& path, Scenario&
   const YAML::Node expect = top.node("expect");
   if (!expect || expect.IsNull()) return;
   if (!expect.IsSequence()) top.fail("expect", "expected a list of expectations");
-  for (std::size_t i = 0; i < expect.size(); ++i) {
-    s.expect.push_back(parse_expectation(expect[i], path, i));
-    s.expect_lines.push_back(yaml_line(expect[i]));
-  }
+  for (std::size_t i = 0; i < expect.size(); ++i) s.expect.push_back(parse_expectation(expect[i], path, i));
 }
 
 std::string_view to_string(Blinker b) {

@@ -8,8 +8,8 @@
 
 namespace signalsim {
 
-/// Reads `expect:` of the top-level mapping `top` of scenario file `path` into s.expect and
-/// s.expect_lines. Throws InputError: not a list, an item that is not a one-key mapping, an unknown
+/// Reads `expect:` of the top-level mapping `top` of scenario file `path` into s.expect (the line of
+/// each is in s.origins, "expect[i]"). Throws InputError: not a list, an item that is not a one-key mapping, an unknown
 /// kind, a bad key or value.
 void read_expectations(const YamlFields& top, const std::string& path, Scenario& s);
 

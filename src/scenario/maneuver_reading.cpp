@@ -81,29 +81,33 @@ void read_maneuvers(const YamlFields& top, const std::string& path, Scenario& s)
     const std::string where = "maneuvers[" + std::to_string(i) + "]";
     if (!item.IsMap() || item.size() != 1)
       throw InputError(path, yaml_line(item), where + ": each maneuver is a one-key mapping, e.g. "
-                                                      "'- lane_change: {at: 40, length: 50}'");
+                                                      "'- lane_change: {at: 40, length: 50}'", where);
     const std::string kind = item.begin()->first.Scalar();
     const YAML::Node body = item.begin()->second;
     if (!kinds.find(kind))
       throw InputError(path, yaml_line(item.begin()->first),
-                       where + ": unknown maneuver '" + kind + "' (known: " + kinds.names() + ")");
+                       where + ": unknown maneuver '" + kind + "' (known: " + kinds.names() + ")", where);
     if ((kind == "pull_out" && s.pull_out) || (kind == "pull_over" && s.pull_over))
-      throw InputError(path, yaml_line(item), where + ": at most one " + kind);
+      throw InputError(path, yaml_line(item), where + ": at most one " + kind, where);
     const YamlFields fields(body, path, where + "." + kind, kinds.table_of(kind));
     if (kind == "avoid") {
       s.avoids.push_back(read_avoid(fields));
+      s.avoids.back().key = where;
     } else if (kind == "pull_out") {
       s.pull_out = read_pull_out(fields);
       s.pull_out->line = yaml_line(item);
+      s.pull_out->key = where;
     } else if (kind == "pull_over") {
       s.pull_over = read_pull_over(fields);
+      s.pull_over->key = where;
     } else {
-      const LaneChangeManeuver m = read_lane_change(fields);
+      LaneChangeManeuver m = read_lane_change(fields);
+      m.key = where;
       for (const LaneChangeManeuver& other : s.lane_changes)
         if (other.edge == m.edge)
           throw InputError(path, yaml_line(item), where + ": a second lane_change on " +
                                                       (m.edge.empty() ? std::string("the first edge") : "edge '" + m.edge + "'") +
-                                                      " (at most one per edge)");
+                                                      " (at most one per edge)", where);
       s.lane_changes.push_back(m);
     }
   }

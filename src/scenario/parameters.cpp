@@ -46,7 +46,9 @@ ParameterValue convert(const ParameterSpec& spec, const std::string& key_as_writ
   if (std::holds_alternative<double>(spec.default_value)) {
     double value = 0.0;
     if (node.Tag() == "!" || !YAML::convert<double>::decode(node, value)) fail_type("a number");
-    check_range(value);
+    check_range(value);  // NaN and infinities are out of every range
+    std::string reason;
+    if (!yaml_number(node, reason)) throw InputError(file, line, key + ": " + reason);  // a subnormal
     return value;
   }
   if (!spec.choices.empty() &&

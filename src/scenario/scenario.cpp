@@ -15,6 +15,7 @@
 #include "scenario/scenario_keys.hpp"
 #include "scenario/signal_reading.hpp"
 #include "scenario/sumo_inputs.hpp"
+#include "scenario/utf8_text.hpp"
 #include "scenario/yaml_fields.hpp"
 #include "core/file_paths.hpp"
 #include "net/net_file.hpp"
@@ -34,8 +35,15 @@ void read_parameters(const YamlFields& top, const std::string& path, const YAML:
     YamlFields params(top.node("params"), path, "params", params_keys());
     // strict: every key of a parameter file must be one signalsim uses (else they are listed).
     (void)params.node("strict");  // read with the ego (it applies to ego.vehicle_info too)
-    for (const std::string& file : params.text_list("files"))
-      s.params.apply_file(resolve_beside(path, file), s.strict_params);
+    const std::vector<std::string> files = params.text_list("files");
+    for (std::size_t i = 0; i < files.size(); ++i) {
+      const std::string file = resolve_beside(path, files[i]);
+      // One the scenario names is refused at its line; a --params file (an override) names itself.
+      const std::string key = "params.files[" + std::to_string(i) + "]";
+      if (const std::string problem = input_file_problem(file); !problem.empty() && !s.origins.set.count(key))
+        throw key_error(s, key, "key 'params.files': parameter file '" + file + "' " + problem);
+      s.params.apply_file(file, s.strict_params);
+    }
     const YAML::Node given = params.node("set");
     if (given) set.reset(given);  // (assigning an absent node would throw)
     params.finish();
@@ -80,19 +88,11 @@ void read_systems_under_test(const YamlFields& top, const std::string& path, Sce
   s.sut_timeout = top.number("sut_timeout");
 }
 
-}  // namespace
-
-Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrides) {
-  YAML::Node root = load_yaml_file(path, "scenario file");
-  // Before the overrides walk it (fuzzing: a scalar file and --set threw yaml-cpp's own "operator[]
-  // call on a scalar"; yaml-cpp turned a list file into a mapping). An empty file stays empty.
-  if (root && !root.IsNull() && !root.IsMap()) YamlFields(root, path, "");
-  YAML::Node parameter_overrides;
-  root = apply_overrides(root, overrides, parameter_overrides);
-  Scenario s;
-  s.path = path;
+// Every part of the scenario, read from its tree (the overrides applied) in a fixed order.
+void read_scenario(const YAML::Node& root, const std::string& path, const YAML::Node& parameter_overrides, Scenario& s) {
   YamlFields top(root, path, "", scenario_keys());
   s.name = top.text("name");
+  if (const std::string problem = name_problem(s.name, false); !problem.empty()) top.fail("name", problem);
   s.description = top.text_or("description");
   read_simulation_keys(top, path, s);
   // The timeline is kept in memory: cap the number of steps (about 0.5 kB each).
@@ -110,6 +110,25 @@ Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrid
   read_systems_under_test(top, path, s);
   top.finish();
   if (country) check_driving_side(*country, s);
+}
+
+}  // namespace
+
+Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrides) {
+  YAML::Node root = load_yaml_file(path, "scenario file");
+  // Before the overrides walk it (fuzzing: a scalar file and --set threw yaml-cpp's own "operator[]
+  // call on a scalar"; yaml-cpp turned a list file into a mapping). An empty file stays empty.
+  if (root && !root.IsNull() && !root.IsMap()) YamlFields(root, path, "");
+  YAML::Node parameter_overrides;
+  Scenario s;
+  s.path = path;
+  root = apply_overrides(root, overrides, parameter_overrides, &s.origins.set);
+  s.origins.lines = key_lines(root);
+  try {
+    read_scenario(root, path, parameter_overrides, s);
+  } catch (const InputError& e) {
+    throw attributed(e, path, s.origins);  // a value --set gave is the command line's, not the file's
+  }
   // The scenario loaded: say what it ignored and what may not do what was meant.
   for (const std::string& note : s.notes) note_once(note);
   for (const std::string& warning : s.warnings) warn_once(warning);

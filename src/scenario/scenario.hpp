@@ -12,6 +12,7 @@
 
 #include "core/blinker_signals.hpp"  // Blinker
 #include "core/vehicle_defaults.hpp"
+#include "scenario/key_origins.hpp"
 #include "scenario/sut_spec.hpp"
 #include "scenario/parameters.hpp"
 #include "route/lane_change_room.hpp"
@@ -60,6 +61,7 @@ struct SumoInputs {
   std::vector<std::string> route_files;       ///< SUMO -r: the sumocfg's, then `routes:`
   std::vector<std::string> sumo_args;         ///< `sumo_args:` tokens as written (checked at load)
   std::vector<sumo::SumoOption> cfg_options;  ///< the sumocfg's other options, passed on to SUMO
+  std::vector<int> cfg_option_lines;          ///< the sumocfg's line of each of cfg_options
   std::string cfg_dir;                        ///< the sumocfg's folder (its relative file names)
   std::string scenario_dir;                   ///< the scenario's folder (relative names in sumo_args)
   double begin = 0.0;                         ///< the sumocfg's begin [s]
@@ -88,6 +90,7 @@ struct LaneChangeManeuver {
                          ///< with `edge`); < 0: default
   double length = 50.0;  ///< [m] of route s over which the ego shifts one lane
   double approval_delay = 0.0;  ///< [s] after the blinker came on (an operator's RTC approval)
+  std::string key;  ///< where it is in the file, "maneuvers[2]" (key_error)
 };
 // The defaults are the lane plan's own (one rule for the plan and the lateral planner).
 inline constexpr double kDefaultLaneChangeLead = sumo::kLaneChangeLead;      ///< [m]
@@ -114,6 +117,7 @@ struct AvoidManeuver {
   std::string side = "auto"; ///< auto (left), left, right
   double length = 0.0;       ///< > 0: each shift is this long [m]; 0: from jerk/accel limits at max_speed
   double approval_delay = 0.0;  ///< [s] after the module began to wait (an operator's RTC approval)
+  std::string key;  ///< where it is in the file, "maneuvers[2]" (key_error)
 };
 
 /// `maneuvers: [{pull_out: {offset, length, at, backward, engage_delay}}]`: the ego departs `offset` metres beside its lane's
@@ -130,6 +134,7 @@ struct PullOutManeuver {
   /// until then (planning/pull_out_departure.hpp).
   double engage_delay = 0.0;
   int line = 0;  ///< the scenario file's line of the maneuver (0: unknown)
+  std::string key;  ///< where it is in the file, "maneuvers[2]" (key_error)
 };
 inline constexpr double kBackwardSpeed = 1.0;  ///< [m/s] emulated backing-up speed
 
@@ -141,6 +146,7 @@ struct PullOverManeuver {
   double pos = 0.0;      ///< lane position of the front bumper at the goal [m]
   double offset = -0.7;  ///< [m], left positive, from the planned lane's centre
   double length = 30.0;  ///< [m]
+  std::string key;  ///< where it is in the file, "maneuvers[2]" (key_error)
 };
 
 /// Every step on a normal lane while a lateral plan is driven, |lateral_offset - planned_offset|
@@ -249,13 +255,20 @@ struct Scenario {
   std::optional<PullOutManeuver> pull_out;        ///< from `maneuvers` (at most one)
   std::optional<PullOverManeuver> pull_over;      ///< from `maneuvers` (at most one)
   std::vector<Expectation> expect;
-  std::vector<int> expect_lines;  ///< the scenario file's line of each expectation (0: unknown)
   /// `decider:` / `light_judge:` the implementations under test (docs/decider.md); the reference
   /// (signalsim's own) by default, which then decides alone.
   SutSpec decider;
   SutSpec light_judge;
-  double sut_timeout = 5.0;       ///< `sut_timeout:` [s] a SUT's answer to one step at most  ///< the scenario file's line of each expectation (0: unknown)
+  double sut_timeout = 5.0;       ///< `sut_timeout:` [s] a SUT's answer to one step at most
+  /// Where each key came from: its line, or the --set item that gave it (key_error below).
+  KeyOrigins origins;
 };
+
+/// The error `reason` about key `key` of the scenario ("ego.route", "obstacles[1].pos",
+/// "light_offsets.C"): at that key's line, or at the --set item that gave it (key_origins.hpp).
+inline InputError key_error(const Scenario& scenario, const std::string& key, const std::string& reason) {
+  return key_error(scenario.path, scenario.origins, key, reason);
+}
 
 /// Reads and checks a scenario file. Throws InputError naming the file, line and key for a missing
 /// file, malformed YAML, an unknown or missing key, a wrong type or an out-of-range value.

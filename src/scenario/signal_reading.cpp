@@ -2,6 +2,7 @@
 #include "scenario/signal_reading.hpp"
 
 #include <cmath>
+#include <optional>
 
 #include "scenario/input_error.hpp"
 #include "scenario/scenario_keys.hpp"
@@ -17,11 +18,18 @@ std::vector<PerceptionModelParameters::Blackout> parse_intervals(YamlFields& f, 
   if (!intervals || intervals.IsNull()) return out;
   if (!intervals.IsSequence()) f.fail(name, "expected a list of [start, end] pairs");
   for (const auto& pair : intervals) {
-    double a = 0.0, b = 0.0;
-    if (!pair.IsSequence() || pair.size() != 2 || !YAML::convert<double>::decode(pair[0], a) ||
-        !YAML::convert<double>::decode(pair[1], b) || !std::isfinite(a) || !std::isfinite(b) || !(a <= b))
-      throw InputError(file, yaml_line(pair), "key '" + key + "': each entry is [start, end] with start <= end");
-    out.push_back({a, b});
+    const auto refuse = [&] {
+      throw InputError(file, yaml_line(pair), "key '" + key + "': each entry is [start, end] with start <= end", key);
+    };
+    if (!pair.IsSequence() || pair.size() != 2) refuse();
+    std::string reason;
+    std::optional<double> ends[2];
+    for (int k = 0; k < 2; ++k)
+      if (!(ends[k] = yaml_number(pair[k], reason)))
+        throw InputError(file, yaml_line(pair[k]) > 0 ? yaml_line(pair[k]) : yaml_line(pair), "key '" + key + "': " + reason,
+                         key);
+    if (!(*ends[0] <= *ends[1])) refuse();
+    out.push_back({*ends[0], *ends[1]});
   }
   return out;
 }
@@ -66,12 +74,14 @@ void read_signal_inputs(const YamlFields& top, const std::string& path, Scenario
   if (top.has("light_offsets")) {
     YAML::Node offsets = top.node("light_offsets");
     if (!offsets.IsMap()) top.fail("light_offsets", "expected a mapping of light id: seconds");
+    reject_duplicate_keys(offsets, path, "light_offsets");
     for (const auto& entry : offsets) {
-      double value = 0.0;
-      if (!entry.second.IsScalar() || !YAML::convert<double>::decode(entry.second, value) || !std::isfinite(value))
-        throw InputError(path, yaml_line(entry.second),
-                         "key 'light_offsets." + entry.first.Scalar() + "': expected a number of seconds");
-      s.light_offsets[entry.first.Scalar()] = value;
+      std::string reason;
+      const std::optional<double> value = yaml_number(entry.second, reason);
+      if (!value)
+        throw InputError(path, yaml_line(entry.first),
+                         "key 'light_offsets." + entry.first.Scalar() + "': " + reason, "light_offsets." + entry.first.Scalar());
+      s.light_offsets[entry.first.Scalar()] = *value;
     }
   }
 }

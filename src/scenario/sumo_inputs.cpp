@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 #include <sstream>
 
 #include "scenario/input_error.hpp"
@@ -21,12 +22,54 @@ std::vector<std::string> read_sumo_args(const YamlFields& top, const std::string
     // Owned options are refused here; paths are resolved later, against the run's --out.
     (void)sumo::sumo_tokens(sumo::parse_sumo_tokens(tokens), "sumo_args", "", "", true);
   } catch (const sumo::SumoOptionError& e) {
-    throw InputError(path, top.line_of("sumo_args"), e.what());
+    throw InputError(path, top.line_of("sumo_args"), e.what(), "sumo_args");
   }
   return tokens;
 }
 
+// Whether SUMO's message `reason` is about `option`: it names the option ("option '--name'", "option
+// 'name'") or quotes its value ('x'), or ends with it, or names a file the value was resolved to.
+bool names_option(const std::string& reason, const sumo::SumoOption& option) {
+  const std::string name = sumo::canonical_option(option.name);
+  for (const std::string& form : {"option '--" + name + "'", "option '" + name + "'", "option '--" + option.name + "'",
+                                  "option '" + option.name + "'"})
+    if (reason.find(form) != std::string::npos) return true;
+  if (option.value.empty()) return false;
+  const std::string& v = option.value;
+  if (reason.find("'" + v + "'") != std::string::npos || reason.find("/" + v + "'") != std::string::npos) return true;
+  return reason.size() >= v.size() + 1 && reason.compare(reason.size() - v.size() - 1, std::string::npos, " " + v) == 0;
+}
+
+// The index of the sumo_args token that gives `option` (its name, or --name=value).
+std::size_t token_of(const std::vector<std::string>& tokens, const sumo::SumoOption& option) {
+  for (std::size_t i = 0; i < tokens.size(); ++i) {
+    const std::size_t start = tokens[i].find_first_not_of('-');
+    if (start == 0 || start == std::string::npos) continue;
+    const std::string name = tokens[i].substr(start, tokens[i].find('=') - start);
+    if (sumo::canonical_option(name) == sumo::canonical_option(option.name)) return i;
+  }
+  return 0;
+}
+
 }  // namespace
+
+std::optional<InputError> sumo_option_error(const Scenario& s, const std::string& message) {
+  try {
+    const std::vector<sumo::SumoOption> own = sumo::parse_sumo_tokens(s.sumo.sumo_args);
+    for (const sumo::SumoOption& option : own)
+      if (names_option(message, option)) {
+        const std::string key = "sumo_args[" + std::to_string(token_of(s.sumo.sumo_args, option)) + "]";
+        return key_error(s, key, "key 'sumo_args': --" + option.name + (option.has_value ? " " + option.value : "") +
+                                     ": " + message);
+      }
+  } catch (const sumo::SumoOptionError&) {  // checked when the scenario was read
+  }
+  for (std::size_t i = 0; i < s.sumo.cfg_options.size(); ++i)
+    if (names_option(message, s.sumo.cfg_options[i]))
+      return InputError(s.sumo.sumocfg, i < s.sumo.cfg_option_lines.size() ? s.sumo.cfg_option_lines[i] : 0,
+                        "option '" + s.sumo.cfg_options[i].name + "': " + message);
+  return std::nullopt;
+}
 
 void read_simulation_keys(const YamlFields& top, const std::string& path, Scenario& s) {
   const std::string dir = fs::path(path).parent_path().string();
@@ -34,7 +77,8 @@ void read_simulation_keys(const YamlFields& top, const std::string& path, Scenar
   std::optional<sumo::SumoConfigFile> cfg;
   if (top.has("sumocfg")) {
     s.sumo.sumocfg = resolve_beside(path, top.text("sumocfg"));
-    if (!fs::is_regular_file(s.sumo.sumocfg)) top.fail("sumocfg", "file '" + s.sumo.sumocfg + "' not found");
+    if (const std::string problem = input_file_problem(s.sumo.sumocfg); !problem.empty())
+      top.fail("sumocfg", "file '" + s.sumo.sumocfg + "' " + problem);
     cfg = sumo::read_sumocfg(s.sumo.sumocfg);  // NetError "<cfg>:<line>: ..." for a bad file
     s.sumo.cfg_dir = cfg->dir;
   }
@@ -48,7 +92,8 @@ void read_simulation_keys(const YamlFields& top, const std::string& path, Scenar
   // The net: the scenario's own key wins over the sumocfg's net-file.
   if (top.has("net")) {
     s.net = resolve_beside(path, top.text("net"));
-    if (!fs::is_regular_file(s.net)) top.fail("net", "net file '" + s.net + "' not found");
+    if (const std::string problem = input_file_problem(s.net); !problem.empty())
+      top.fail("net", "net file '" + s.net + "' " + problem);
     if (cfg && cfg->net) overridden("net-file", *cfg->net, "net", s.net);
   } else if (cfg && cfg->net) {
     s.net = *cfg->net;
@@ -68,11 +113,13 @@ void read_simulation_keys(const YamlFields& top, const std::string& path, Scenar
   }
   for (const std::string& r : top.text_list("routes")) {
     in.route_files.push_back(resolve_beside(path, r));
-    if (!fs::is_regular_file(in.route_files.back())) top.fail("routes", "file '" + in.route_files.back() + "' not found");
+    if (const std::string problem = input_file_problem(in.route_files.back()); !problem.empty())
+      top.fail("routes", "file '" + in.route_files.back() + "' " + problem);
   }
   for (const std::string& a : top.text_list("additional")) {
     s.additional.push_back(resolve_beside(path, a));
-    if (!fs::is_regular_file(s.additional.back())) top.fail("additional", "file '" + s.additional.back() + "' not found");
+    if (const std::string problem = input_file_problem(s.additional.back()); !problem.empty())
+      top.fail("additional", "file '" + s.additional.back() + "' " + problem);
   }
 
   // Step length, seed, begin and end.
@@ -84,7 +131,7 @@ void read_simulation_keys(const YamlFields& top, const std::string& path, Scenar
                                " s is not a whole number of milliseconds (SUMO would round it to " +
                                short_number(std::max(1.0, std::round(ms)) / 1000.0) + " s)";
     if (top.has("step_length")) top.fail("step_length", reason);
-    throw InputError(s.sumo.sumocfg, 0, "step-length " + reason);
+    throw InputError(s.sumo.sumocfg, cfg ? cfg->step_length_line : 0, "step-length " + reason);
   }
   s.seed = cfg && cfg->seed ? top.integer("seed", *cfg->seed) : top.integer("seed");
   if (cfg && cfg->step_length) {
@@ -118,6 +165,7 @@ void read_simulation_keys(const YamlFields& top, const std::string& path, Scenar
         continue;
       }
       in.cfg_options.push_back(o.option);
+      in.cfg_option_lines.push_back(o.line);
     }
   }
   in.sumo_args = read_sumo_args(top, path);

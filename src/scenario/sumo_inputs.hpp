@@ -4,6 +4,7 @@
 // `seed:`, `duration:` and `sumo_args:` (SUMO options passed through; those signalsim sets are refused).
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "scenario/scenario.hpp"
@@ -15,5 +16,11 @@ namespace signalsim {
 /// (file, line, key) for a missing file, a sumocfg without a net, a refused or malformed sumo_args
 /// option, an out-of-range value; sumo::NetError for a malformed sumocfg ("<cfg>:<line>: ...").
 void read_simulation_keys(const YamlFields& top, const std::string& path, Scenario& s);
+
+/// The error of a SUMO that did not start because of one of the options the scenario passed on
+/// (`message` is SUMO's, e.g. "While processing option 'lateral-resolution': 'x' is not a valid float"
+/// or "Invalid Number Format (double) abc"): at the line of that `sumo_args` item (or the --set item
+/// that gave it), or of that option in the sumocfg. nullopt when the message names none of them.
+std::optional<InputError> sumo_option_error(const Scenario& s, const std::string& message);
 
 }  // namespace signalsim

@@ -11,12 +11,6 @@ namespace {
 
 std::string where(const sumo::RouteFileVehicle& v) { return v.file + ":" + std::to_string(v.line); }
 
-// The scenario file's line of an ego key (0 when it came from --set or is not given).
-int line_of(const Scenario& s, const std::string& key) {
-  const auto it = s.ego.lines.find(key);
-  return it == s.ego.lines.end() ? 0 : it->second;
-}
-
 }  // namespace
 
 std::optional<sumo::RouteFileVehicle> resolve_route_file_ego(Scenario& scenario) {
@@ -25,7 +19,7 @@ std::optional<sumo::RouteFileVehicle> resolve_route_file_ego(Scenario& scenario)
   const std::string& id = scenario.ego.id;
   if (files.empty()) {
     if (!id.empty())
-      throw InputError(scenario.path, line_of(scenario, "id"),
+      throw key_error(scenario, "ego.id",
                        "ego.id '" + id + "': the scenario loads no route files (routes: or a sumocfg with "
                        "route-files) that could define it");
     return std::nullopt;
@@ -40,7 +34,7 @@ std::optional<sumo::RouteFileVehicle> resolve_route_file_ego(Scenario& scenario)
   }
   const std::optional<sumo::RouteFileVehicle> v = sumo::find_route_file_vehicle(files, id);
   if (!v)
-    throw InputError(scenario.path, line_of(scenario, "id"),
+    throw key_error(scenario, "ego.id",
                      "ego.id '" + id + "': no <vehicle>, <trip> or <flow> of the route files defines it (" +
                          edges_text(files) + ")");
   if (v->edges.empty())
@@ -64,7 +58,7 @@ std::optional<sumo::RouteFileVehicle> resolve_route_file_ego(Scenario& scenario)
                      "<" + v->kind + "> '" + v->id + "' (ego.id) departs at " + v->depart + " s, at or after the end of "
                      "the simulation (" + short_number(*scenario.sumo.end) + " s)");
   if (scenario.ego.given.count("route") && scenario.ego.route != v->edges)
-    throw InputError(scenario.path, line_of(scenario, "route"),
+    throw key_error(scenario, "ego.route",
                      "ego.route [" + edges_text(scenario.ego.route) + "] contradicts the route of '" + id + "' in " +
                          where(*v) + " [" + edges_text(v->edges) + "]");
   scenario.ego.route = v->edges;
@@ -79,7 +73,7 @@ Scenario with_taken_over_ego(const Scenario& scenario, const sumo::EgoVehicle& v
   // A given key must repeat SUMO's value (to 1 mm, 1 mm/s); otherwise SUMO's value is the ego's.
   const auto take = [&](const char* key, double& field, double sumo_value) {
     if (ego.given.count(key) && std::abs(field - sumo_value) > 1e-3)
-      throw InputError(scenario.path, line_of(scenario, key), std::string("ego.") + key + " " + short_number(field) + " contradicts vehicle '" +
+      throw key_error(scenario, std::string("ego.") + key, std::string("ego.") + key + " " + short_number(field) + " contradicts vehicle '" +
                                              vehicle.id + "' of " + where(definition) + ": its vType '" + vehicle.type +
                                              "' has " + short_number(sumo_value));
     field = sumo_value;
@@ -91,7 +85,7 @@ Scenario with_taken_over_ego(const Scenario& scenario, const sumo::EgoVehicle& v
   take("emergency_decel", ego.emergency_decel, vehicle.emergency_decel);
   if (!ego.given.count("base_link_to_front")) ego.base_link_to_front = vehicle_defaults::kBaseLinkShare * ego.length;
   if (ego.base_link_to_front > ego.length)
-    throw InputError(scenario.path, 0, "ego.base_link_to_front " + short_number(ego.base_link_to_front) +
+    throw key_error(scenario, "ego.base_link_to_front", "ego.base_link_to_front " + short_number(ego.base_link_to_front) +
                                            " m is longer than vehicle '" + vehicle.id + "' (" + short_number(ego.length) + " m)");
   ego.vclass = vehicle.vclass.empty() ? ego.vclass : vehicle.vclass;
   ego.sumo_decel = vehicle.decel;

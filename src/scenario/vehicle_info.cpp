@@ -47,10 +47,10 @@ VehicleInfo load_vehicle_info(const std::string& path, bool strict) {
         info.unused.push_back(entry.name);
       continue;
     }
-    double value = 0.0;
-    if (!entry.value.IsScalar() || entry.value.Tag() == "!" || !YAML::convert<double>::decode(entry.value, value) ||
-        !std::isfinite(value))
-      throw InputError(path, entry.line, "'" + entry.name + "': expected a number of metres");
+    std::string reason = "expected a number, got '" + entry.value.Scalar() + "'";  // a quoted one
+    const std::optional<double> number = entry.value.Tag() == "!" ? std::nullopt : yaml_number(entry.value, reason);
+    if (!number) throw InputError(path, entry.line, "'" + entry.name + "': " + reason);
+    const double value = *number;
     const bool must_be_positive = entry.name == "wheel_base" || entry.name == "wheel_tread";
     if (value < 0.0 || (must_be_positive && value <= 0.0) || value > kMaxDimension)
       throw InputError(path, entry.line, "'" + entry.name + "': " + entry.value.Scalar() + " m is out of range " +

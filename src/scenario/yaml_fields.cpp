@@ -8,15 +8,18 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "core/file_paths.hpp"
 #include "scenario/input_error.hpp"
 #include "scenario/utf8_text.hpp"
+#include "scenario/yaml_text.hpp"
 
 namespace signalsim {
 
 namespace {
 
 std::string read_yaml_text(const std::string& path, const std::string& what) {
-  if (!std::filesystem::is_regular_file(path)) throw InputError(path, 0, what + " not found");
+  if (const std::string problem = input_file_problem(path); !problem.empty())
+    throw InputError(path, 0, what + " " + problem);
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, 0, "cannot read the " + what);
   std::stringstream bytes;
@@ -24,15 +27,19 @@ std::string read_yaml_text(const std::string& path, const std::string& what) {
   std::string text = bytes.str();
   // Every string of the file may end up in summary.json (UTF-8 JSON): check the text now, at its line.
   if (const auto bad = find_invalid_utf8(text)) throw InputError(path, bad->line, describe_invalid_utf8(text, *bad) + "; save the file as UTF-8");
+  check_yaml_text(text, path, what);
   return text;
 }
 
 YAML::Node parse_yaml_text(const std::string& text, const std::string& path) {
+  YAML::Node root;
   try {
-    return YAML::Load(text);
+    root = YAML::Load(text);
   } catch (const YAML::Exception& e) {
     throw InputError(path, e.mark.line + 1, "malformed YAML: " + e.msg);
   }
+  check_yaml_texts(root, text, path);
+  return root;
 }
 
 }  // namespace
@@ -60,13 +67,29 @@ YAML::Node load_shared_yaml_file(const std::string& path, const std::string& wha
   return root;
 }
 
+std::optional<double> yaml_number(const YAML::Node& node, std::string& reason) {
+  double value = 0.0;
+  if (!node.IsScalar() || !YAML::convert<double>::decode(node, value) || !std::isfinite(value)) {
+    reason = "expected a number, got '" + (node.IsScalar() ? node.Scalar() : std::string("a list or map")) + "'";
+    return std::nullopt;
+  }
+  // SUMO reads numbers with strtod and refuses one that underflows (a subnormal such as 1e-308):
+  // such a value would pass here and fail in SUMO with its own two-line message.
+  if (value != 0.0 && std::abs(value) < std::numeric_limits<double>::min()) {
+    reason = "value " + node.Scalar() + " is too small to be a number SUMO can read (below 2.2e-308); write 0";
+    return std::nullopt;
+  }
+  return value;
+}
+
 int yaml_line(const YAML::Node& node) { return node && node.Mark().line >= 0 ? node.Mark().line + 1 : 0; }
 
 YamlFields::YamlFields(const YAML::Node& mapping, std::string file, std::string where)
     : mapping_(mapping), file_(std::move(file)), where_(std::move(where)) {
   if (!mapping_.IsMap())
     throw InputError(file_, yaml_line(mapping_),
-                     (where_.empty() ? std::string("the file") : "'" + where_ + "'") + " must be a mapping of key: value");
+                     (where_.empty() ? std::string("the file") : "'" + where_ + "'") + " must be a mapping of key: value",
+                     where_);
   reject_duplicate_keys(mapping_, file_, where_);
 }
 
@@ -95,7 +118,7 @@ void reject_duplicate_keys(const YAML::Node& mapping, const std::string& file, c
     const std::string key = entry.first.Scalar();
     if (!seen.insert(key).second)
       throw InputError(file, yaml_line(entry.first),
-                       "duplicate key '" + (where.empty() ? key : where + "." + key) + "'");
+                       "duplicate key '" + (where.empty() ? key : where + "." + key) + "'", where.empty() ? key : where + "." + key);
   }
 }
 
@@ -108,7 +131,7 @@ int YamlFields::line_of(const std::string& key) const {
 }
 
 void YamlFields::fail(const std::string& key, const std::string& reason) const {
-  throw InputError(file_, line_of(key), "key '" + qualified(key) + "': " + reason);
+  throw InputError(file_, line_of(key), "key '" + qualified(key) + "': " + reason, qualified(key));
 }
 
 bool YamlFields::has(const std::string& key) const {
@@ -125,7 +148,7 @@ YAML::Node YamlFields::node(const std::string& key) const {
 std::string YamlFields::text(const std::string& key) const {
   (void)spec(key, KeyType::Text);
   const YAML::Node n = node(key);
-  if (!n) throw InputError(file_, yaml_line(mapping_), "missing required key '" + qualified(key) + "'");
+  if (!n) throw InputError(file_, yaml_line(mapping_), "missing required key '" + qualified(key) + "'", where_);
   if (!n.IsScalar()) fail(key, "expected a text value");
   return n.Scalar();
 }
@@ -146,15 +169,12 @@ double YamlFields::number(const std::string& key, double fallback, double min, d
 double YamlFields::required_number(const std::string& key, double min, double max) const {
   (void)spec(key, KeyType::Number);
   const YAML::Node n = node(key);
-  if (!n) throw InputError(file_, yaml_line(mapping_), "missing required key '" + qualified(key) + "'");
-  double value = 0.0;
+  if (!n) throw InputError(file_, yaml_line(mapping_), "missing required key '" + qualified(key) + "'", where_);
   if (n.IsNull()) fail(key, "empty value (expected a number)");
-  if (!n.IsScalar() || !YAML::convert<double>::decode(n, value) || !std::isfinite(value))
-    fail(key, "expected a number, got '" + (n.IsScalar() ? n.Scalar() : std::string("a list or map")) + "'");
-  // SUMO reads numbers with strtod and refuses one that underflows (a subnormal such as 1e-308):
-  // such a value would pass here and fail in SUMO with its own two-line message.
-  if (value != 0.0 && std::abs(value) < std::numeric_limits<double>::min())
-    fail(key, "value " + n.Scalar() + " is too small to be a number SUMO can read (below 2.2e-308); write 0");
+  std::string reason;
+  const std::optional<double> number = yaml_number(n, reason);
+  if (!number) fail(key, reason);
+  const double value = *number;
   if (value < min || value > max) {
     std::ostringstream out;
     out << "value " << n.Scalar() << " is out of range [" << min << ", " << max << "]";
@@ -199,7 +219,7 @@ void YamlFields::finish() const {
   for (const auto& entry : mapping_) {
     const std::string key = entry.first.Scalar();
     if (!read_.count(key) || (keys_ && !keys_->find(key)))
-      throw InputError(file_, yaml_line(entry.first), "unknown key '" + qualified(key) + "'");
+      throw InputError(file_, yaml_line(entry.first), "unknown key '" + qualified(key) + "'", qualified(key));
   }
 }
 

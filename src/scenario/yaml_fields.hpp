@@ -66,6 +66,12 @@ class YamlFields {
 
 int yaml_line(const YAML::Node& node);
 
+/// The number rule of every YAML file (docs/scenario.md "Rules for every key"): a scalar that reads as
+/// a finite double, and none of magnitude between 0 and 2.2e-308 (a subnormal such as 1e-308, which
+/// SUMO's parser refuses: write 0). Else nullopt, and `reason` says why: "expected a number, got
+/// '<text>'" or "value <text> is too small to be a number SUMO can read (below 2.2e-308); write 0".
+std::optional<double> yaml_number(const YAML::Node& node, std::string& reason);
+
 /// Reads a YAML file. Throws InputError: "<what> not found" for a missing file, "malformed YAML:
 /// <reason>" at the parser's line for a syntax error.
 YAML::Node load_yaml_file(const std::string& path, const std::string& what);

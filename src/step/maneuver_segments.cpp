@@ -11,13 +11,14 @@
 namespace signalsim {
 namespace {
 
-[[noreturn]] void refuse(const Scenario& scenario, const std::string& message) {
-  throw InputError(scenario.path, 0, message);
+// `message` at the line of the scenario key `key` (or the --set item that gave it).
+[[noreturn]] void refuse(const Scenario& scenario, const std::string& key, const std::string& message) {
+  throw key_error(scenario, key, message);
 }
 
 // A plan must start and end while base_link and the front are on the segment's edge.
 void check_within_edge(const Scenario& scenario, const LateralSegment& seg, const Lanelet& lanelet,
-                       const std::string& what) {
+                       const std::string& what, const std::string& key) {
   const double b2f = scenario.ego.base_link_to_front;
   const double first_s = seg.plan.lines().front().s_start;
   const double last_s = seg.plan.lines().back().s_end;
@@ -26,7 +27,7 @@ void check_within_edge(const Scenario& scenario, const LateralSegment& seg, cons
     out << "maneuvers: " << what << " (base_link " << first_s << " to " << last_s << " m) must start and end while "
         << "the ego is on edge '" << seg.edge << "' (route s " << lanelet.s_start << " to " << lanelet.s_end()
         << " m, front bumper included)";
-    refuse(scenario, out.str());
+    refuse(scenario, key, out.str());
   }
 }
 
@@ -48,7 +49,7 @@ void check_pull_out(const Scenario& scenario, const Lanelet& first) {
   else if ((m.engage_delay > 0.0 || p.prepare_time_before_start > 0.0) && scenario.ego.depart_speed > 0.0)
     out << "pull_out waits at its start (engage_delay " << m.engage_delay << " s, prepare_time_before_start "
         << p.prepare_time_before_start << " s): it needs ego.depart_speed 0";
-  if (!out.str().empty()) throw InputError(scenario.path, m.line, "maneuvers: " + out.str());
+  if (!out.str().empty()) refuse(scenario, m.key, "maneuvers: " + out.str());
 }
 
 }  // namespace
@@ -59,15 +60,15 @@ LateralSegment avoid_segment(const Scenario& scenario, const sumo::RoutePlan& pl
   const ObstacleSpec* obstacle = nullptr;
   for (const ObstacleSpec& o : scenario.obstacles)
     if (o.id == avoid.obstacle) obstacle = &o;
-  if (obstacle == nullptr) refuse(scenario, where + "no such obstacle in 'obstacles'");
+  if (obstacle == nullptr) refuse(scenario, avoid.key + ".avoid.obstacle", where + "no such obstacle in 'obstacles'");
   const auto route_index = plan.map.find_edge(obstacle->edge);
-  if (!route_index) refuse(scenario, where + "edge '" + obstacle->edge + "' is not on the ego's route");
+  if (!route_index) refuse(scenario, avoid.key, where + "edge '" + obstacle->edge + "' is not on the ego's route");
   const Lanelet& lanelet = plan.map.at(*route_index);
   const std::string lane_id = obstacle->edge + "_" + std::to_string(obstacle->lane);
   if (lanelet.lane_id != lane_id)
-    refuse(scenario, where + "it stands on " + lane_id + ", not on the ego's planned lane " + lanelet.lane_id);
+    refuse(scenario, avoid.key, where + "it stands on " + lane_id + ", not on the ego's planned lane " + lanelet.lane_id);
   if (obstacle->pos > lanelet.length || obstacle->pos < obstacle->length)
-    refuse(scenario, where + "its position must lie between its length and the lane length");
+    refuse(scenario, avoid.key, where + "its position must lie between its length and the lane length");
   const double b2f = scenario.ego.base_link_to_front;
   AvoidanceRequest request;
   request.s_object_start = lanelet.s_start + obstacle->pos - obstacle->length;
@@ -99,7 +100,7 @@ LateralSegment avoid_segment(const Scenario& scenario, const sumo::RoutePlan& pl
     out << where << "the avoidance (base_link " << first_s << " to " << last_s << " m) must start and end while the "
         << "ego is on edge '" << seg.edge << "' (route s " << lanelet.s_start << " to " << lanelet.s_end()
         << " m, front bumper included); move the obstacle or shorten the shifts (length)";
-    refuse(scenario, out.str());
+    refuse(scenario, avoid.key, out.str());
   }
   return seg;
 }
@@ -117,7 +118,7 @@ LateralSegment pull_out_segment(const Scenario& scenario, const sumo::RoutePlan&
   const double depart_base = scenario.ego.depart_pos - scenario.ego.base_link_to_front;
   const double at = m.at < 0.0 ? std::max(0.0, depart_base - m.backward) : m.at;
   seg.plan = plan_pull_out(at, m.offset, m.length);
-  check_within_edge(scenario, seg, first, "pull_out");
+  check_within_edge(scenario, seg, first, "pull_out", m.key);
   // The module runs while base_link is before the shift's end: a wait at the start (engagement,
   // prepare_time_before_start) behind it would never be held (docs/behaviour.md §T8.2 "Pull out").
   const bool waits = m.engage_delay > 0.0 || scenario.run_params.behavior.prepare_time_before_start > 0.0;
@@ -125,7 +126,7 @@ LateralSegment pull_out_segment(const Scenario& scenario, const sumo::RoutePlan&
     std::ostringstream out;
     out << "maneuvers: pull_out waits at its start, but its shift ends at s " << at + m.length
         << " m, behind the ego's base_link at departure (" << depart_base << " m)";
-    throw InputError(scenario.path, m.line, out.str());
+    refuse(scenario, m.key, out.str());
   }
   return seg;
 }
@@ -135,7 +136,7 @@ LateralSegment pull_out_segment(const Scenario& scenario, const sumo::RoutePlan&
 LateralSegment pull_over_segment(const Scenario& scenario, const sumo::RoutePlan& plan) {
   const PullOverManeuver& m = *scenario.pull_over;
   const auto index = plan.map.find_edge(m.edge);
-  if (!index) refuse(scenario, "maneuvers: pull_over: edge '" + m.edge + "' is not on the ego's route");
+  if (!index) refuse(scenario, m.key + ".pull_over.edge", "maneuvers: pull_over: edge '" + m.edge + "' is not on the ego's route");
   const Lanelet& lanelet = plan.map.at(*index);
   LateralSegment seg;
   seg.kind = LateralKind::PullOver;
@@ -145,7 +146,7 @@ LateralSegment pull_over_segment(const Scenario& scenario, const sumo::RoutePlan
   seg.left_half_width = seg.right_half_width = 0.5 * lanelet.width;
   seg.goal_s = lanelet.s_start + m.pos - scenario.ego.base_link_to_front;
   seg.plan = plan_pull_over(seg.goal_s, m.offset, m.length);
-  check_within_edge(scenario, seg, lanelet, "pull_over");
+  check_within_edge(scenario, seg, lanelet, "pull_over", m.key);
   return seg;
 }
 

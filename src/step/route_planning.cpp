@@ -65,8 +65,9 @@ std::string no_room_message(const sumo::RoutePlan& plan) {
 
 namespace {
 
-[[noreturn]] void fail(const Scenario& scenario, const std::string& message) {
-  throw InputError(scenario.path, 0, message);
+// `message` at the line of scenario key `key` (or the --set item that gave it).
+[[noreturn]] void fail(const Scenario& scenario, const std::string& key, const std::string& message) {
+  throw key_error(scenario, key, message);
 }
 
 // The lane the ego enters route edge `i` on: ego.depart_lane on the first edge (one it may drive),
@@ -81,7 +82,7 @@ int entry_lane(const Scenario& scenario, const sumo::RoutePlan& plan, const sumo
     std::ostringstream out_msg;
     out_msg << "ego.depart_lane: edge '" << edge.id << "' has no lane " << entry << " the ego may drive ("
             << edge.lanes.size() << " lanes)";
-    fail(scenario, out_msg.str());
+    fail(scenario, "ego.depart_lane", out_msg.str());
   }
   return entry;
 }
@@ -92,7 +93,7 @@ const LaneChangeManeuver* requested_lane_change(const Scenario& scenario, std::s
   const LaneChangeManeuver* requested = nullptr;
   for (const LaneChangeManeuver& m : scenario.lane_changes)
     if (m.edge.empty() ? i == 0 : m.edge == edge) {
-      if (requested) fail(scenario, "maneuvers: two lane_change maneuvers on the first edge '" + edge + "'");
+      if (requested) fail(scenario, m.key, "maneuvers: two lane_change maneuvers on the first edge '" + edge + "'");
       requested = &m;
     }
   return requested;
@@ -104,7 +105,7 @@ void check_crossed_lanes(const Scenario& scenario, const sumo::NetEdge& edge, in
                          const Lanelet& lanelet) {
   for (int k = std::min(entry, planned) + 1; k < std::max(entry, planned); ++k)
     if (!sumo::lane_permits(edge.lanes[static_cast<std::size_t>(k)], scenario.ego.vclass))
-      fail(scenario, "ego.depart_lane: the lane change from lane " + std::to_string(entry) + " to the planned lane " +
+      fail(scenario, "ego.depart_lane", "ego.depart_lane: the lane change from lane " + std::to_string(entry) + " to the planned lane " +
                          lanelet.lane_id + " crosses lane '" + edge.lanes[static_cast<std::size_t>(k)].id + "', which " +
                          (scenario.ego.vclass == "passenger" ? std::string("a passenger car")
                                                             : "vClass '" + scenario.ego.vclass + "'") +
@@ -117,22 +118,23 @@ void check_crossed_lanes(const Scenario& scenario, const sumo::NetEdge& edge, in
 void check_lane_change(const Scenario& scenario, const LaneChangeManeuver& m, const sumo::NetEdge& edge,
                        const Lanelet& lanelet, double shift, double speed, double earliest, bool first) {
   const double needed = sumo::min_lane_change_length(shift, speed, lane_change_ego(scenario));
+  const std::string key = m.key.empty() ? "ego.depart_lane" : m.key;  // the default one: depart_lane's
   std::ostringstream out_msg;
   if (m.length < needed - 1e-9) {
     out_msg << std::fixed << std::setprecision(2) << "maneuvers: lane_change on '" << edge.id << "': a " << shift
             << " m shift in " << m.length << " m is sharper than the ego can drive at " << speed
             << " m/s; it needs at least " << needed << " m";
-    fail(scenario, out_msg.str());
+    fail(scenario, key, out_msg.str());
   }
   if (m.at < earliest - 1e-9) {
     out_msg << "maneuvers: lane_change.at " << m.at << " m is behind base_link's "
             << (first ? "depart position " : "entry ") << earliest << " m";
-    fail(scenario, out_msg.str());
+    fail(scenario, key, out_msg.str());
   }
   if (m.at + m.length + scenario.ego.base_link_to_front > lanelet.s_end()) {
     out_msg << "maneuvers: the lane change on '" << edge.id << "' (base_link " << m.at << " + " << m.length
             << " m) must end while the front bumper is still on the edge (" << lanelet.length << " m)";
-    fail(scenario, out_msg.str());
+    fail(scenario, key, out_msg.str());
   }
 }
 
@@ -151,7 +153,7 @@ std::optional<LateralSegment> lane_change_on_edge(const Scenario& scenario, cons
   const LaneChangeManeuver* requested = requested_lane_change(scenario, i);
   if (entry == planned) {
     if (requested)
-      fail(scenario, first && requested->edge.empty()
+      fail(scenario, requested->key, first && requested->edge.empty()
                          ? "maneuvers: lane_change: the ego departs on the planned lane " + lanelet.lane_id +
                                " of the first edge; set ego.depart_lane to another lane"
                          : "maneuvers: lane_change on '" + scenario.ego.route[i] + "': the ego already enters it on lane " +
@@ -179,7 +181,7 @@ std::optional<LateralSegment> lane_change_on_edge(const Scenario& scenario, cons
     m.at = earliest + timing.lead;
     m.length = timing.length;
     if (!sumo::lane_change_fits(room.room, shift, room.speed, lane_change_ego(scenario)))
-      fail(scenario, "ego.route: " + no_room_message(plan));
+      fail(scenario, "ego.route", "ego.route: " + no_room_message(plan));
   }
   check_lane_change(scenario, m, *edge, lanelet, shift, room.speed, earliest, first);
   LateralSegment seg;
@@ -211,7 +213,7 @@ std::vector<LateralSegment> plan_lane_changes(const Scenario& scenario, const su
   const auto& edges = scenario.ego.route;
   for (const LaneChangeManeuver& m : scenario.lane_changes)
     if (!m.edge.empty() && std::find(edges.begin(), edges.end(), m.edge) == edges.end())
-      fail(scenario, "maneuvers: lane_change: edge '" + m.edge + "' is not on the ego's route");
+      fail(scenario, m.key + ".lane_change.edge", "maneuvers: lane_change: edge '" + m.edge + "' is not on the ego's route");
   const BehaviorSignalParameters module_params = behavior_parameters(scenario);
   std::vector<LateralSegment> out;
   for (std::size_t i = 0; i < edges.size() && i < plan.lane_per_edge.size(); ++i)
@@ -224,16 +226,19 @@ std::vector<LateralSegment> plan_lane_changes(const Scenario& scenario, const su
 LateralPlan plan_lateral(const Scenario& scenario, const sumo::RoutePlan& plan, const sumo::NetIndex& net) {
   LateralPlan lateral;
   for (LateralSegment& seg : plan_lane_changes(scenario, plan, net)) lateral.segments.push_back(std::move(seg));
-  for (const ObstacleSpec& o : scenario.obstacles) {
+  for (std::size_t i = 0; i < scenario.obstacles.size(); ++i) {
+    const ObstacleSpec& o = scenario.obstacles[i];
+    const std::string key = "obstacles[" + std::to_string(i) + "]";
     const sumo::NetEdge* edge = net.edge(o.edge);
-    if (edge == nullptr || edge->is_internal) fail(scenario, "obstacles: '" + o.id + "': no edge '" + o.edge + "'");
+    if (edge == nullptr || edge->is_internal) fail(scenario, key + ".edge", "obstacles: '" + o.id + "': no edge '" + o.edge + "'");
     if (o.lane >= static_cast<int>(edge->lanes.size()))
-      fail(scenario, "obstacles: '" + o.id + "': edge '" + o.edge + "' has no lane " + std::to_string(o.lane));
+      fail(scenario, key + ".lane", "obstacles: '" + o.id + "': edge '" + o.edge + "' has no lane " + std::to_string(o.lane));
     if (o.pos > edge->lanes[static_cast<std::size_t>(o.lane)].length)
-      fail(scenario, "obstacles: '" + o.id + "': pos is beyond the end of its lane");
+      fail(scenario, key + ".pos", "obstacles: '" + o.id + "': pos is beyond the end of its lane");
   }
   if (scenario.pull_out) {
-    if (lateral.on_edge(plan.map.at(0).edge_id)) fail(scenario, "maneuvers: pull_out and a lane change on the first edge");
+    if (lateral.on_edge(plan.map.at(0).edge_id))
+      fail(scenario, scenario.pull_out->key, "maneuvers: pull_out and a lane change on the first edge");
     lateral.segments.push_back(pull_out_segment(scenario, plan));
     lateral.depart_offset = scenario.pull_out->offset;
     lateral.backward = scenario.pull_out->backward;
@@ -241,13 +246,14 @@ LateralPlan plan_lateral(const Scenario& scenario, const sumo::RoutePlan& plan, 
   }
   if (scenario.pull_over) {
     LateralSegment seg = pull_over_segment(scenario, plan);
-    if (lateral.on_edge(seg.edge)) fail(scenario, "maneuvers: at most one maneuver per edge ('" + seg.edge + "' has two)");
+    if (lateral.on_edge(seg.edge))
+      fail(scenario, scenario.pull_over->key, "maneuvers: at most one maneuver per edge ('" + seg.edge + "' has two)");
     lateral.segments.push_back(std::move(seg));
   }
   for (std::size_t i = 0; i < scenario.avoids.size(); ++i) {
     LateralSegment seg = avoid_segment(scenario, plan, scenario.avoids[i], i);
     if (lateral.on_edge(seg.edge))
-      fail(scenario, "maneuvers: at most one maneuver per edge ('" + seg.edge + "' has two)");
+      fail(scenario, scenario.avoids[i].key, "maneuvers: at most one maneuver per edge ('" + seg.edge + "' has two)");
     lateral.segments.push_back(std::move(seg));
   }
   std::sort(lateral.segments.begin(), lateral.segments.end(), [](const LateralSegment& a, const LateralSegment& b) {
@@ -284,7 +290,7 @@ sumo::RoutePlan plan_route(const Scenario& scenario, const sumo::NetIndex& net) 
         hint += (hint.empty() ? " (with the requested lane change to lane " : "; to lane ") + std::to_string(m.to_lane) +
                 " on '" + m.edge + "'";
     if (!hint.empty()) hint += ": each must be reachable from another lane and lead on)";
-    throw InputError(scenario.path, 0, std::string("ego.route: ") + e.what() + hint);
+    throw key_error(scenario, "ego.route", std::string("ego.route: ") + e.what() + hint);
   }
   // What SUMO would otherwise clamp or reject only after it started.
   const Lanelet& first = plan.map.at(0);
@@ -292,13 +298,12 @@ sumo::RoutePlan plan_route(const Scenario& scenario, const sumo::NetIndex& net) 
     std::ostringstream out;
     out << "ego.depart_pos: " << scenario.ego.depart_pos << " m is beyond the end of edge '" << first.edge_id
         << "' (" << first.length << " m)";
-    const auto line = scenario.ego.lines.find("depart_pos");
-    throw InputError(scenario.path, line == scenario.ego.lines.end() ? 0 : line->second, out.str());
+    throw key_error(scenario, "ego.depart_pos", out.str());
   }
   plan_lateral(scenario, plan, net);  // checks the depart lane and the maneuvers
   for (const auto& [tls, offset] : scenario.light_offsets)
     if (!net.tl_logic(tls))
-      throw InputError(scenario.path, 0, "light_offsets: '" + tls + "' is not a traffic light of the net");
+      throw key_error(scenario, "light_offsets." + tls, "light_offsets: '" + tls + "' is not a traffic light of the net");
   return plan;
 }
 

@@ -20,7 +20,7 @@ std::shared_ptr<Adapter> exec_adapter(const Scenario& scenario, const SutSpec& s
   try {
     return std::make_shared<Adapter>(spec);
   } catch (const SutProcessError& e) {
-    throw InputError(scenario.path, 0, std::string("key '") + key + "': " + spec.text + ": " + e.what());
+    throw key_error(scenario, key, std::string("key '") + key + "': " + spec.text + ": " + e.what());
   }
 }
 
@@ -35,7 +35,7 @@ std::shared_ptr<const PluginLibrary> load(const Scenario& scenario, const char* 
     if (spec.kind == SutSpec::Kind::AutowareCore) path = bundled_plugin(kAutowareCorePlugin);
     return std::make_shared<const PluginLibrary>(path, role);
   } catch (const PluginLoadError& e) {
-    throw InputError(scenario.path, 0, std::string(key) + " '" + spec.text + "': " + e.what());
+    throw key_error(scenario, key, std::string(key) + " '" + spec.text + "': " + e.what());
   }
 }
 
@@ -49,7 +49,7 @@ std::shared_ptr<BlinkerSut> make_decider(const Scenario& scenario) {
     return std::make_shared<LibraryDecider>(load(scenario, "decider", spec, PluginRole::Decider), spec.text);
   if (spec.kind == SutSpec::Kind::Exec) return exec_adapter<ExecDecider>(scenario, spec, "decider");
   if (spec.kind == SutSpec::Kind::Traci) return std::make_shared<TraciDecider>();
-  throw InputError(scenario.path, 0, "decider '" + spec.text + "' is not available in this build");
+  throw key_error(scenario, "decider", "decider '" + spec.text + "' is not available in this build");
 }
 
 std::shared_ptr<LightJudgeSut> make_light_judge(const Scenario& scenario) {
@@ -58,7 +58,7 @@ std::shared_ptr<LightJudgeSut> make_light_judge(const Scenario& scenario) {
     return std::make_shared<LibraryLightJudge>(load(scenario, "light_judge", spec, PluginRole::LightJudge), spec.text);
   if (spec.kind == SutSpec::Kind::Exec) return exec_adapter<ExecLightJudge>(scenario, spec, "light_judge");
   if (spec.kind == SutSpec::Kind::Traci) return std::make_shared<TraciLightJudge>();
-  throw InputError(scenario.path, 0, "light_judge '" + spec.text + "' is not available in this build");
+  throw key_error(scenario, "light_judge", "light_judge '" + spec.text + "' is not available in this build");
 }
 
 }  // namespace

@@ -70,7 +70,7 @@ python3 - "$work/bad/results.csv" <<'PY' || exit 1
 import csv, sys
 rows = list(csv.DictReader(open(sys.argv[1])))
 assert len(rows) == 2 and all(r["status"] == "error" for r in rows), rows
-assert "nowhere" in rows[0]["error"] and rows[0]["error"].startswith(rows[0]["file"]), rows[0]["error"]
+assert "nowhere" in rows[0]["error"] and rows[0]["error"].startswith("--set ego.route=[in_S, nowhere]: ego.route: "), rows[0]["error"]
 PY
 echo "ok   a timed-out run and a rejected run are error rows"
 

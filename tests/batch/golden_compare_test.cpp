@@ -1,7 +1,14 @@
-// signalsim check's event comparison: tolerance, moved/missing/extra events (JUnit XML: junit_xml_test.cpp).
+// signalsim check's event comparison: tolerance, moved/missing/extra events (JUnit XML: junit_xml_test.cpp);
+// a golden file's times and positions are finite numbers.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+#include <unistd.h>
+
 #include "batch/golden.hpp"
+#include "batch/run_outputs.hpp"
 
 namespace signalsim {
 namespace {
@@ -51,6 +58,30 @@ TEST(GoldenCompare, ShiftedMissingAndExtraEvents) {
   run = golden;
   run[0].source = "lane_change";
   EXPECT_EQ(count_differences(compare_events(golden, run, 0.5, 0.1)), 2u);
+}
+
+// The message of reading `text` as an events.csv ("" when it reads).
+std::string events_error(const std::string& text) {
+  const std::string path = (std::filesystem::temp_directory_path() / ("golden_" + std::to_string(::getpid()) + ".events.csv")).string();
+  std::ofstream(path) << text;
+  std::string message;
+  try {
+    (void)read_events_csv(path);
+  } catch (const std::runtime_error& e) {
+    message = e.what();
+  }
+  std::filesystem::remove(path);
+  return message.empty() ? "" : message.substr(message.find(".events.csv") + 11);
+}
+
+TEST(GoldenCompare, AGoldenTimeOrPositionThatIsNotFiniteIsRefused) {
+  const std::string header = "time,s_front,kind,from,to,source\n";
+  EXPECT_EQ(events_error(header + "0.100,0.000,light,none,pass,C\n"), "");
+  EXPECT_EQ(events_error(header + "0.100,0.000,light,none,pass,C\nnan,118.164,blinker,none,left,intersection\n"),
+            ":3: 'nan' is not a finite number");
+  EXPECT_EQ(events_error(header + "9.7,inf,blinker,none,left,intersection\n"), ":2: 'inf' is not a finite number");
+  EXPECT_EQ(events_error(header + "9.7,-infinity,blinker,none,left,intersection\n"),
+            ":2: '-infinity' is not a finite number");
 }
 
 }  // namespace

@@ -20,6 +20,8 @@ bad=$'b<&"\x02'
 sed -e "s#\.\./\.\./\.\./#$src/#" "$src/tests/batch/data/turns.yaml" > "$dir/$good.yaml"
 echo "  - blinker_never: left" >> "$dir/$good.yaml"
 printf 'name: x\nnet: [\n' > "$dir/$bad.yaml"
+# The golden folder holds a golden file of one of them (check refuses one that holds none).
+mkdir -p "$work/golden" && printf 'time,s_front,kind,from,to,source\n' > "$work/golden/$bad.events.csv"
 
 "$bin" check "$dir" --golden "$work/golden" --out "$work/c" --junit "$work/c.xml" > "$work/c.log" 2>&1
 code=$?

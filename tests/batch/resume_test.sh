@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Killing a worker mid-run leaves an error row and the sweep goes on; Ctrl-C (SIGINT) stops it
-# cleanly with every finished row kept (exit 130); --resume runs the error row and the rest.
+# cleanly with every finished row kept (exit 130); --resume runs the error row and the rest, and again
+# a finished run whose folder was deleted.
 # The resumed results.csv equals a fresh sweep's (wall_time aside). The first sweep runs one process
 # per run (--isolate: its workers are found by their command line); the persistent workers' own
 # crashes and interruptions are workers_isolation_test.sh's.
@@ -69,4 +70,13 @@ cmp -s <(strip "$work/out/results.csv") <(strip "$work/fresh/results.csv") || {
   fail "the resumed results.csv differs from a fresh one"
 }
 echo "ok   resumed results.csv == fresh results.csv"
+
+# A passed row whose run folder was deleted is run again (its files come back), the others kept.
+run0=$(ls -d "$work/out/runs/0000-"*) || fail "no run folder of run 0"
+rm -rf "$run0"
+"$bin" sweep "$sweep" --out "$work/out" --jobs 2 --resume > "$work/again.log" 2>&1 || true
+grep -q "resuming: 4 of 5 runs already done, 1 to run" "$work/again.log" || fail "resume after a deleted run folder: $(head -3 "$work/again.log")"
+[ -f "$run0/summary.json" ] || fail "run 0 was not run again: no $run0/summary.json"
+cmp -s <(strip "$work/out/results.csv") <(strip "$work/fresh/results.csv") || fail "results.csv differs after rerunning run 0"
+echo "ok   --resume reruns a finished run whose folder was deleted"
 echo "resume_test passed"

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "batch/run_list.hpp"
+#include "batch/sweep_check.hpp"
 #include "batch/sweep_file.hpp"
 #include "scenario/input_error.hpp"
 #include "test_files.hpp"
@@ -149,6 +150,36 @@ TEST(SweepFile, RunsAreCheckedAgainstTheScenarioAndPointAtTheValue) {
   auto runs = expand_sweep(sweep);
   check_sweep_runs(sweep, runs);
   EXPECT_EQ(runs[1].name, "turns");
+}
+
+// Above kCombinationsChecked runs each value is checked in a run of its own (the other factors at
+// their first values), not every run: a bad value is still named at its line, zipped values are
+// checked together, and a swept name names its runs.
+TEST(SweepFile, ALargeGridIsCheckedValueByValue) {
+  TempDir dir;
+  std::string seeds, times;
+  for (int i = 1; i <= 200; ++i) seeds += (i > 1 ? ", " : "") + std::to_string(i);
+  for (int i = 1; i <= 60; ++i) times += (i > 1 ? ", " : "") + std::to_string(i * 0.5);
+  const std::string head = "scenarios: " + data_dir() + "/turns.yaml\ngrid:\n  seed: [" + seeds + "]\n";
+  const auto check = [&](const std::string& rest) {
+    const std::string path = dir.write("large.yaml", head + rest);
+    return error_of([&] {
+      const Sweep sweep = load_sweep(path);
+      const SweepRuns runs(sweep);
+      ASSERT_GT(runs.size(), kCombinationsChecked);
+      (void)SweepCheck(runs);
+    });
+  };
+  EXPECT_EQ(check("  turn_signal_search_time: [" + times + ", 99]\n").rfind(dir.path() + "/large.yaml:4: grid.turn_signal_search_time: value 99: ", 0), 0u);
+  EXPECT_EQ(check("  turn_signal_search_time: [" + times + "]\nzip:\n  ego.max_speed: [13.89, 0.15]\n  ego.depart_speed: [8.33, 0.15]\n"), "");
+  const std::string path = dir.write("named.yaml", head + "  turn_signal_search_time: [" + times + "]\n  name: [a, b]\n");
+  const Sweep sweep = load_sweep(path);
+  const SweepRuns runs(sweep);
+  const SweepCheck check_names(runs);
+  EXPECT_EQ(check_names.name_of(runs.at(0)), "a");
+  EXPECT_EQ(check_names.name_of(runs.at(runs.size() - 1)), "b");
+  EXPECT_EQ(runs.at(runs.size() - 1).values, (std::vector<std::pair<std::string, std::string>>{
+                                                 {"seed", "200"}, {"turn_signal_search_time", "30.000000"}, {"name", "b"}}));
 }
 
 TEST(SweepFile, ListValuesAreGivenToSetInFlowStyle) {

@@ -6,6 +6,7 @@
 
 #include "batch/run_list.hpp"
 #include "batch/sweep_file.hpp"
+#include "batch/sweep_check.hpp"
 #include "batch/sweep_plot_check.hpp"
 #include "report/metric_columns.hpp"
 #include "report/metrics.hpp"
@@ -141,9 +142,9 @@ TEST(SweepPlot, ManeuverSectionsAreCountedPerRunNotPerRoute) {
                                 "lane_change_right.yaml]\ngrid: {seed: [1, 2]}\nplot:\n  metric: " + metric + "\n");
     return error_of([&] {
       const Sweep sweep = load_sweep(path);
-      auto runs = expand_sweep(sweep);
-      check_sweep_runs(sweep, runs);
-      check_sweep_plot(sweep, runs);
+      const SweepRuns runs(sweep);
+      const SweepCheck checked(runs);
+      check_sweep_plot(runs);
     });
   };
   EXPECT_EQ(check("lane_change1.lead_time"), "");  // both run in_S -> out_N; only the second changes lanes
@@ -156,9 +157,9 @@ TEST(SweepPlot, AMetricNoRunsRouteHasIsRefusedBeforeAnyRun) {
     const std::string path = dir.write("s.yaml", "scenarios: [" + scenarios + "]\ngrid: {seed: [1, 2]}\nplot:\n  metric: " + metric + "\n");
     return error_of([&] {
       const Sweep sweep = load_sweep(path);
-      auto runs = expand_sweep(sweep);
-      check_sweep_runs(sweep, runs);
-      check_sweep_plot(sweep, runs);
+      const SweepRuns runs(sweep);
+      const SweepCheck checked(runs);
+      check_sweep_plot(runs);
     });
   };
   const std::string turns = data_dir() + "/turns.yaml", roundabout = data_dir() + "/roundabout_exit.yaml";

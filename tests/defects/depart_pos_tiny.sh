@@ -7,9 +7,9 @@ set -u
 source "$(dirname "$0")/lib.sh" "$@"
 s=$src/scenarios/tl_red_stop_then_go.yaml
 
-bad_input depart_pos_set "tl_red_stop_then_go.yaml:11: key 'ego.depart_pos': value 1e-308 is too small to be a number SUMO can read" \
+bad_input depart_pos_set "^signalsim: --set ego.depart_pos=1e-308: key 'ego.depart_pos': value 1e-308 is too small to be a number SUMO can read" \
   -- run "$s" --set ego.depart_pos=1e-308
-bad_input depart_speed_set "tl_red_stop_then_go.yaml:12: key 'ego.depart_speed': value 4.9e-324 is too small" \
+bad_input depart_speed_set "^signalsim: --set ego.depart_speed=4.9e-324: key 'ego.depart_speed': value 4.9e-324 is too small" \
   -- run "$s" --set ego.depart_speed=4.9e-324
 scenario_copy tl_red_stop_then_go "$work/file.yaml"
 sed -i 's/^  depart_pos: 0$/  depart_pos: -1e-310/' "$work/file.yaml"

@@ -22,7 +22,7 @@ bad_input set_on_scalar_file "scalar.yaml:1: the file must be a mapping of key: 
 bad_input set_on_list_file "list.yaml:1: the file must be a mapping of key: value" -- run "$work/list.yaml" --set ego.route=x
 
 for code in ../countries/jp jp/../jp /etc/passwd; do
-  bad_input "country_${code//\//_}" "close_turns.yaml: key 'country': unknown country '$code' \(known: de, jp, kr\)" -- \
+  bad_input "country_${code//\//_}" "^signalsim: --set country=$code: key 'country': unknown country '$code' \(known: de, jp, kr\)" -- \
     run "$s" --set "country=$code"
 done
 scenario_copy close_turns "$work/country.yaml"

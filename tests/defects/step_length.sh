@@ -6,7 +6,7 @@ set -u
 source "$(dirname "$0")/lib.sh" "$@"
 red=$src/scenarios/tl_red_stop_then_go.yaml
 
-bad_input set_0_0015 "tl_red_stop_then_go.yaml:6: key 'step_length': 0.0015 s is not a whole number of milliseconds" \
+bad_input set_0_0015 "^signalsim: --set step_length=0.0015: key 'step_length': 0.0015 s is not a whole number of milliseconds" \
   "round it to 0.002 s" -- run "$red" --set step_length=0.0015
 scenario_copy tl_red_stop_then_go "$work/in_file.yaml"
 sed -i 's/^step_length: 0.1$/step_length: 0.0505/' "$work/in_file.yaml"

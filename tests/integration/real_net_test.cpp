@@ -91,7 +91,8 @@ TEST(RealNet, ALaneChangeAcrossABusLaneIsRefusedAtLoad) {
     FAIL() << "the route was accepted";
   } catch (const InputError& e) {
     EXPECT_EQ(std::string(e.what()),
-              s.path + ": ego.route: the lane change the route needs on edge '31' (lane 0 -> 2) crosses lane "
+              s.path + ":" + std::to_string(s.origins.lines.at("ego.route")) +
+                  ": ego.route: the lane change the route needs on edge '31' (lane 0 -> 2) crosses lane "
                        "'31_1', which a passenger car may not use; no other lane sequence connects the route edges");
   }
 }
@@ -136,9 +137,8 @@ std::string input_error(const std::string& scenario, const std::vector<std::stri
 TEST(LaneChangeChecks, AShiftTooSharpForItsLengthIsRefused) {
   // 3.20 m in 6 m at 13.89 m/s: a peak lateral acceleration of 30 m/s^2 (the grip is 9).
   EXPECT_EQ(input_error("lane_change_right", {"maneuvers=[{lane_change: {at: 40, length: 6}}]"}),
-            std::string(SIGNALSIM_SOURCE_DIR) +
-                "/scenarios/lane_change_right.yaml: maneuvers: lane_change on 'in_S': a 3.20 m shift in 6.00 m is "
-                "sharper than the ego can drive at 13.89 m/s; it needs at least 19.90 m");
+            "--set maneuvers=[{lane_change: {at: 40, length: 6}}]: maneuvers: lane_change on 'in_S': a 3.20 m shift "
+            "in 6.00 m is sharper than the ego can drive at 13.89 m/s; it needs at least 19.90 m");
   EXPECT_EQ(input_error("lane_change_right", {"maneuvers=[{lane_change: {at: 40, length: 20}}]"}), "");
 }
 
@@ -146,7 +146,7 @@ TEST(LaneChangeChecks, WhenNothingFitsTheErrorNamesTheEdgesAndTheirRoom) {
   // A grip of 1 m/s^2 needs 59.70 m for one lane at 13.89 m/s: more than any lane change is given.
   EXPECT_EQ(input_error("route_lane_change_then_left", {"ego.emergency_decel=1"}),
             std::string(SIGNALSIM_SOURCE_DIR) +
-                "/scenarios/route_lane_change_then_left.yaml: ego.route: no lane plan leaves room for every lane "
+                "/scenarios/route_lane_change_then_left.yaml:15: ego.route: no lane plan leaves room for every lane "
                 "change the route needs; the best one changes lanes on edge 'in_W' (lane 0 -> 1, a 3.20 m shift, "
                 "181.90 m of room; at 13.89 m/s it needs 59.70 m of lateral motion, more than the 50.00 m a lane "
                 "change is given)");

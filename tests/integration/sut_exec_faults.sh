@@ -17,8 +17,8 @@ fail() { echo "FAIL $*"; failures=$((failures + 1)); }
 
 # run NAME EXPECTED_LINE ARGS...: exit 2, one line on stderr equal to EXPECTED_LINE, an error summary.
 run_fault() {
-  local name=$1 expected=$2
-  shift 2
+  local name=$1 where=$2 expected=$3
+  shift 3
   local out=$work/$name
   "$bin" run "$data/good.yaml" --out "$out" --quiet "$@" >"$work/$name.stdout" 2>"$work/$name.stderr"
   local rc=$?
@@ -26,8 +26,8 @@ run_fault() {
   said=$(cat "$work/$name.stderr")
   [ "$rc" -eq 2 ] || fail "$name: exit $rc, not 2 ($said)"
   [ "$(wc -l <"$work/$name.stderr")" -eq 1 ] || fail "$name: not one line on stderr: $said"
-  [ "$said" = "signalsim: $data/good.yaml: $expected" ] || fail "$name: said '$said', not '$expected'"
-  python3 - "$out/summary.json" "$data/good.yaml: $expected" <<'PY' || fail "$name: summary.json"
+  [ "$said" = "signalsim: $where: $expected" ] || fail "$name: said '$said', not '$where: $expected'"
+  python3 - "$out/summary.json" "$where: $expected" <<'PY' || fail "$name: summary.json"
 import json, sys
 s = json.load(open(sys.argv[1]))
 sys.exit(0 if s["status"] == "error" and s["error"] == sys.argv[2] else 1)
@@ -37,20 +37,21 @@ PY
 
 sut="exec:sh $data/reply.sh"
 at="at t=0.30 s"
-run_fault not_found "key 'decider': exec:no_such_program_signalsim: 'no_such_program_signalsim' is not an executable file on PATH" \
+# A command that cannot be run is the --set item's (the value came from the command line).
+run_fault not_found "--set decider=exec:no_such_program_signalsim" "key 'decider': exec:no_such_program_signalsim: 'no_such_program_signalsim' is not an executable file on PATH" \
   --set "decider=exec:no_such_program_signalsim"
-run_fault not_found_relative "key 'light_judge': exec:./missing.py x: './missing.py' is not an executable file (relative to $data)" \
+run_fault not_found_relative "--set light_judge=exec:./missing.py x" "key 'light_judge': exec:./missing.py x: './missing.py' is not an executable file (relative to $data)" \
   --set "light_judge=exec:./missing.py x"
-run_fault not_json "decider $sut not_json $at: reply is not JSON: this is not json" --set "decider=$sut not_json"
-run_fault no_blinker "decider $sut no_blinker $at: reply lacks 'blinker': {\"blinkers\": \"left\"}" --set "decider=$sut no_blinker"
-run_fault bad_blinker "decider $sut bad_blinker $at: reply's 'blinker' is \"up\", not \"none\", \"left\", \"right\" or \"hazard\"" \
+run_fault not_json "$data/good.yaml" "decider $sut not_json $at: reply is not JSON: this is not json" --set "decider=$sut not_json"
+run_fault no_blinker "$data/good.yaml" "decider $sut no_blinker $at: reply lacks 'blinker': {\"blinkers\": \"left\"}" --set "decider=$sut no_blinker"
+run_fault bad_blinker "$data/good.yaml" "decider $sut bad_blinker $at: reply's 'blinker' is \"up\", not \"none\", \"left\", \"right\" or \"hazard\"" \
   --set "decider=$sut bad_blinker"
-run_fault two_lines "decider $sut two_lines $at: wrote more than one line for the step" --set "decider=$sut two_lines"
-run_fault exits_early "decider $sut exit $at: exited with status 3 before replying" --set "decider=$sut exit"
-run_fault crashes "decider $sut segv $at: killed by signal 11 (SIGSEGV) before replying" --set "decider=$sut segv"
-run_fault never_answers "decider $sut silent $at: no reply within 0.5 s" --set "decider=$sut silent" --set sut_timeout=0.5
+run_fault two_lines "$data/good.yaml" "decider $sut two_lines $at: wrote more than one line for the step" --set "decider=$sut two_lines"
+run_fault exits_early "$data/good.yaml" "decider $sut exit $at: exited with status 3 before replying" --set "decider=$sut exit"
+run_fault crashes "$data/good.yaml" "decider $sut segv $at: killed by signal 11 (SIGSEGV) before replying" --set "decider=$sut segv"
+run_fault never_answers "$data/good.yaml" "decider $sut silent $at: no reply within 0.5 s" --set "decider=$sut silent" --set sut_timeout=0.5
 # The light judge is asked on steps with a light in its window: the first is the run's first step.
-run_fault judge_lacks_lights "light_judge exec:sh $data/judge_reply.sh at t=0.10 s: reply lacks 'lights': {\"decision\": \"go\"}" \
+run_fault judge_lacks_lights "$data/good.yaml" "light_judge exec:sh $data/judge_reply.sh at t=0.10 s: reply lacks 'lights': {\"decision\": \"go\"}" \
   --set "light_judge=exec:sh $data/judge_reply.sh"
 # Whatever went wrong, the SUT's stderr is kept (the crash wrote none) and no process is left.
 [ -f "$work/crashes/decider.stderr.txt" ] || fail "crashes: no decider.stderr.txt in the run directory"

@@ -30,7 +30,7 @@ check() {
 }
 
 echo "not a library" >"$work/text.so"
-check not_found "lib:$work/missing.so" "intersection_left.yaml: decider 'lib:$work/missing.so'" "cannot open shared object file"
+check not_found "lib:$work/missing.so" "--set decider=lib:$work/missing.so: decider 'lib:$work/missing.so'" "cannot open shared object file"
 check not_a_library "lib:$work/text.so" "decider 'lib:$work/text.so'" "text.so"
 check missing_symbol "lib:$plugins/libsignalsim_faulty_missing_step.so" "decider 'lib:" "does not export signalsim_decider_step"
 check wrong_abi "lib:$plugins/libsignalsim_faulty_wrong_abi.so" "decider 'lib:" "ABI version 42, signalsim speaks version 1"

@@ -213,6 +213,12 @@ TEST(NetDefectsRefused, LaneWithoutIdRefusesRoutesOverItsEdge) {
   EXPECT_EQ(route_error(c.net, {"cb", "bc"}), c.at("<lane index=\"1\"") + "edge 'bc': a <lane> has no id (a route edge)");
 }
 
+TEST(NetDefectsRefused, NormalEdgeWithoutLanesRefusesRoutesOverItAtItsLine) {
+  const ChangedLine c("<lane id=\"ab_0\" index=\"0\" speed=\"13.89\" length=\"48.50\" shape=\"0.00,-1.60 48.50,-1.60\"/>", "");
+  EXPECT_EQ(route_error(c.net, {"ab", "bc"}), c.at("<edge id=\"ab\"") + "edge 'ab': the edge has no <lane> (a route edge)");
+  EXPECT_EQ(route_error(c.net, {"cb", "bc"}), "");
+}
+
 TEST(NetDefectsRefused, ParamWithoutKey) {
   const ChangedLine c(kLaneBc1, "<lane id=\"bc_1\" index=\"1\" speed=\"13.89\" length=\"48.50\" "
                                 "shape=\"51.50,-1.60 100.00,-1.60\">\n<param value=\"v\"/></lane>");

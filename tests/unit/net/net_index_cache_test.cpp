@@ -67,7 +67,7 @@ TEST(NetIndexCache, ABadFileThrowsAsLoadAndIsNotCached) {
     cache.get(bad);
     ADD_FAILURE() << "no NetError";
   } catch (const NetError& e) {
-    EXPECT_EQ(std::string(e.what()).rfind(bad + ": not XML: ", 0), 0u) << e.what();
+    EXPECT_EQ(std::string(e.what()).rfind(bad + ":1: not XML: ", 0), 0u) << e.what();
   }
   EXPECT_EQ(cache.size(), 0u);
 }

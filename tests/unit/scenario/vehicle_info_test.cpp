@@ -43,7 +43,10 @@ TEST(VehicleInfo, BadFiles) {
   EXPECT_EQ(error_of_file(std::string(kComplete) + "    wheel_bse: 2.0\n"),
             ":9: unknown key 'wheel_bse' (did you mean 'wheel_base'?)");
   EXPECT_EQ(error_of_file("/**:\n  ros__parameters:\n    wheel_base: 2.79\n"), ": missing key 'front_overhang'");
-  EXPECT_EQ(error_of_file("/**:\n  ros__parameters:\n    wheel_base: long\n"), ":3: 'wheel_base': expected a number of metres");
+  EXPECT_EQ(error_of_file("/**:\n  ros__parameters:\n    wheel_base: long\n"), ":3: 'wheel_base': expected a number, got 'long'");
+  EXPECT_EQ(error_of_file("/**:\n  ros__parameters:\n    wheel_base: \"2.8\"\n"), ":3: 'wheel_base': expected a number, got '2.8'");
+  EXPECT_EQ(error_of_file("/**:\n  ros__parameters:\n    wheel_base: 1e-310\n"),
+            ":3: 'wheel_base': value 1e-310 is too small to be a number SUMO can read (below 2.2e-308); write 0");
   EXPECT_EQ(error_of_file("/**:\n  ros__parameters:\n    wheel_base: 0\n"), ":3: 'wheel_base': 0 m is out of range (0, 30]");
   EXPECT_EQ(error_of_file("/**:\n  ros__parameters:\n    rear_overhang: -0.5\n"),
             ":3: 'rear_overhang': -0.5 m is out of range [0, 30]");
