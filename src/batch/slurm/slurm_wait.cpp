@@ -34,7 +34,7 @@ ResultRow lost_run_row(const RunSpec& run, const std::string& out_dir, const std
   row.run = run.index;
   row.cells["scenario"] = run.name;
   row.cells["file"] = run.scenario;
-  for (const auto& [key, value] : run.values) row.cells[key] = value;
+  for (const auto& [key, value] : run.values) row.cells[swept_column(key)] = value;
   if (fs::exists(fs::path(out_dir) / run_dir)) row.cells["run_dir"] = run_dir;
   row.cells["wall_time"] = "0.00";
   row.cells["status"] = "error";
