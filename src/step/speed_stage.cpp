@@ -34,7 +34,11 @@ SpeedStage::SpeedStage(const Scenario& scenario, const RouteMap& route, const La
       limits_{scenario.ego.max_speed, scenario.ego.accel, scenario.ego.decel},
       dt_(scenario.step_length),
       pull_over_goal_(pull_over_goal),
-      stop_speed_(stop_planner_for(scenario.ego)) {}
+      stop_speed_(stop_planner_for(scenario.ego)) {
+  // After SUMO braked the ego harder than its decel (a leader, a junction), the plan goes on from
+  // the ego's own limits, not from that braking (behaviour.md §P1).
+  stop_speed_.set_start_bounds(-limits_.decel, limits_.accel);
+}
 
 // The lane limits, then a jerk-limited stop for each stop point (planning/stop/stop_speed_planner).
 SpeedPlan SpeedStage::plan(const SpeedInput& in) {

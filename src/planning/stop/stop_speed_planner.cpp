@@ -23,7 +23,7 @@ double StopSpeedPlanner::begin_step(double measured_speed, double measured_accel
   v_ = measured_speed;
   dt_ = dt;
   const bool tracked = last_command_ && std::abs(measured_speed - *last_command_) <= kTrackingTolerance;
-  start_accel_ = tracked ? last_end_accel_ : measured_accel;
+  start_accel_ = tracked ? last_end_accel_ : std::clamp(measured_accel, start_low_, start_high_);
   speed_ = cruise_ = measured_speed;
   end_accel_ = 0.0;
   return start_accel_;

@@ -6,7 +6,8 @@
 //
 //   begin_step(v, a_measured, dt) -> a_0
 //     a_0 := the end-of-step acceleration of the previous step's command, while SUMO followed that
-//            command (|v - command| <= 1 cm/s); else a_measured (the lane limits plan from it too)
+//            command (|v - command| <= 1 cm/s); else a_measured within the start bounds (SUMO braked
+//            harder for a leader: the plan does not carry that on; the lane limits plan from a_0 too)
 //   set_cruise(v_limits, a_limits): speed := v_limits, ending the step at a_limits
 //   add_stop(d), for each stop:
 //     c := plan_stop({v, a_0, d, dt, cruise = speed})
@@ -47,6 +48,12 @@ class StopSpeedPlanner {
   /// constraint set used when this stop lowers the speed this step, else nothing.
   std::optional<StopLevel> add_stop(double to_go);
 
+  /// Bounds of a_0 when SUMO did not follow the last command [m/s^2] (default: none).
+  void set_start_bounds(double lowest, double highest) {
+    start_low_ = lowest;
+    start_high_ = highest;
+  }
+
   /// The speed this stop alone would command [m/s] (planned from the lane limits' speed, not from
   /// the other stops): which of several stops sets the speed.
   double speed_alone(double to_go) const;
@@ -72,6 +79,7 @@ class StopSpeedPlanner {
   double end_accel_ = 0.0;  // the acceleration speed_ ends the step with
   // the previous step's command
   std::optional<double> last_command_;
+  double start_low_ = -1e9, start_high_ = 1e9;
   double last_end_accel_ = 0.0;
 };
 
