@@ -244,13 +244,20 @@ bool stop_colour(const std::string& observed) { return observed == "red" || obse
 // Whether the rules say stop at row k (docs/behaviour.md §L1-§L2): the judge's input for the light
 // is red or amber (no arrow) for the hysteresis and two steps from k, and the ego can stop before the
 // stop point even after that time at its highest speed then (judge_dist < d, or slow, or no pass judge).
+// Whether a row describes this approach of light `id`: a light (TLS) may control several junctions of
+// one route, each with its own stop line; a judged row's stop point tells which (restart suppression
+// moves it up to max_behind_distance_to_stop, 1 m, short of the line).
+bool shows_approach(const TimelineRow& row, const std::string& id, double stop_point) {
+  return row.tl_id == id && (!row.stop_distance || std::abs(row.s_front + *row.stop_distance - stop_point) <= 1.1);
+}
+
 bool stop_required_at(const RunRecord& record, std::size_t k, const std::string& id, double stop_point,
                       const TrafficLightJudgeParameters& p, double step) {
   const auto& rows = record.rows;
   const double hold = p.stop_time_hysteresis + 2.0 * step;
   double v = std::max(0.0, rows[k].speed), a0 = rows[k].accel;
   for (std::size_t j = k; j < rows.size() && rows[j].time <= rows[k].time + hold + 1e-9; ++j) {
-    if (rows[j].tl_id != id || !stop_colour(rows[j].tl_observed)) return false;
+    if (!shows_approach(rows[j], id, stop_point) || !stop_colour(rows[j].tl_observed)) return false;
     v = std::max(v, rows[j].speed);
     a0 = std::max(a0, rows[j].accel);  // a higher a0 lengthens the judge line (§L2.2 quirk 3)
   }
@@ -265,19 +272,18 @@ bool stop_required_at(const RunRecord& record, std::size_t k, const std::string&
 // red or amber since a step where the rules said stop.
 void judge_lights(const Judged& j, const RouteMap& route, const TrafficLightJudgeParameters& p, double step) {
   const auto& rows = j.record.rows;
-  std::vector<std::string> seen;
   for (const Lanelet& l : route.lanelets()) {
     if (l.is_internal || !l.traffic_light) continue;
-    const std::string& id = l.traffic_light->tls_id;
-    if (std::find(seen.begin(), seen.end(), id) != seen.end()) continue;
+    const std::string& id = l.traffic_light->tls_id;  // each approach is judged, also a TLS's second one
     const double line = l.stop_line_s();
     const auto cross = std::find_if(rows.begin(), rows.end(), [&](const TimelineRow& r) { return r.s_front >= line; });
     if (cross == rows.begin() || cross == rows.end()) continue;
-    seen.push_back(id);
     const std::size_t c = static_cast<std::size_t>(cross - rows.begin());
-    // The steps before the crossing since the judge's input last said anything but red or amber.
+    // The steps before the crossing since the judge's input for this approach last said anything but
+    // red or amber.
     std::size_t from = c;
-    while (from > 0 && rows[from - 1].tl_id == id && stop_colour(rows[from - 1].tl_observed)) --from;
+    while (from > 0 && shows_approach(rows[from - 1], id, line - p.stop_margin) && stop_colour(rows[from - 1].tl_observed))
+      --from;
     LawVerdict v{"light", id, "stop", true, "crossed the stop line at " + place_of(*cross) + ", the judge's input not red or amber"};
     for (std::size_t k = from; k < c; ++k) {
       if (!stop_required_at(j.record, k, id, line - p.stop_margin, p, step)) continue;

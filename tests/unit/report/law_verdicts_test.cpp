@@ -126,6 +126,31 @@ TEST(LawVerdicts, ARedSeenTooLateToStopPasses) {
   EXPECT_EQ(failed(r, true), Failed{});
 }
 
+TEST(LawVerdicts, EachApproachOfALightIsJudgedOnItsOwnRows) {
+  // One light L controls two junctions of the route: the end of a (line 200) and the end of b (line
+  // 515). Before 200 the rows show L red for b's line (the judge's stop point 515): a's own link is
+  // green, crossing 200 breaks no rule; b's approach is judged too.
+  test::RouteFixture f;
+  f.lane("a", 200.0).traffic_light = TrafficLightLink{"L", 0};
+  f.internal("J", 0, 15.0, TurnDirection::Left, 13.89);
+  f.lane("b", 300.0).traffic_light = TrafficLightLink{"L", 1};
+  const RouteMap route = f.build();
+  RunRecord r = drive(reference);
+  for (TimelineRow& row : r.rows) {
+    row.tl_id = "L";
+    row.tl_observed = row.s_front < 200.0 ? "red" : "green";
+    row.stop_distance = 515.0 - row.s_front;  // the stop point of b's line (stop_margin 0)
+  }
+  const Scenario scenario;
+  int judged = 0;
+  for (const LawVerdict& v : law_verdicts(scenario, route, r))
+    if (v.section == "light") {
+      ++judged;
+      EXPECT_TRUE(v.passed) << v.detail;
+    }
+  EXPECT_EQ(judged, 2) << "both lines of L";
+}
+
 // A lane change to the right on b, approved with the front at s 300, its lateral motion (base_link)
 // from 320 to 360: the right blinker is due from the approval until base_link ends the motion.
 RunRecord lane_change(double on_from) {
