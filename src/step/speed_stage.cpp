@@ -61,8 +61,8 @@ SpeedPlan SpeedStage::plan(const SpeedInput& in) {
   // equal ones (at rest every stop says 0) the nearest point (a hold point before a light's line).
   std::optional<std::pair<double, double>> lowest;  // (speed alone, to_go)
   const auto add_stop = [&](double to_go, const char* what) {
-    const double alone = stop_speed_.speed_alone(to_go);
     const std::optional<StopLevel> level = stop_speed_.add_stop(to_go);
+    const double alone = stop_speed_.last_speed_alone();
     if (alone < limits.step.speed || level) {
       const std::pair<double, double> key{alone, to_go};
       if (!lowest || alone < lowest->first - 1e-9 || (alone <= lowest->first + 1e-9 && to_go < lowest->second)) {

@@ -22,18 +22,8 @@ trap cleanup EXIT
 failures=0
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 
-free_port() { "$py" -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])'; }
-# wait_listening PORT: until a socket listens on PORT (read from /proc/net/tcp: a probe connection
-# would take one of the server's client places). signalsim's --connect tries once: a SUMO that has
-# not bound its port yet on a loaded machine is a refused connection.
-wait_listening() {
-  local hex; hex=$(printf ':%04X ' "$1")
-  for _ in $(seq 200); do
-    awk '$4 == "0A" {print $2 " "}' /proc/net/tcp /proc/net/tcp6 2>/dev/null | grep -q "$hex" && return 0
-    sleep 0.05
-  done
-  fail "no SUMO listening on port $1 after 10 s"
-}
+# signalsim's --connect tries once: a SUMO that has not bound its port yet is a refused connection.
+source "$src/tests/support/traci_server.sh"  # free_port, wait_listening PORT
 
 # Xvfb on a display it picks itself (-displayfd), local connections only.
 exec 3<> "$work/display"

@@ -89,15 +89,7 @@ while traci.simulation.getTime() < 1000:
         print("mark", flush=True)
         marked = True
 PY
-free_port() { "$py" -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])'; }
-wait_listening() {  # from /proc/net/tcp: a probe connection would take one of the server's client places
-  local hex; hex=$(printf ':%04X ' "$1")
-  for _ in $(seq 200); do
-    awk '$4 == "0A" {print $2 " "}' /proc/net/tcp /proc/net/tcp6 2>/dev/null | grep -q "$hex" && return 0
-    sleep 0.05
-  done
-  fail "no SUMO listening on port $1 after 10 s"
-}
+source "$src/tests/support/traci_server.sh"  # free_port, wait_listening PORT
 # frozen NAME SIGNAL TIMEOUT: signalsim as client 2 of a sumo that is stopped (SIGSTOP) once the
 # simulation reached 3 s; then SIGNAL (or none) to signalsim. Sets $code.
 frozen() {

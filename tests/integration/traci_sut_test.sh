@@ -29,16 +29,7 @@ failures=0
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 limit=120  # [s] the most any process here may take
 
-free_port() { "$py" -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])'; }
-# wait_listening PORT: until a socket listens on PORT (from /proc/net/tcp: a probe would take a client place).
-wait_listening() {
-  local hex; hex=$(printf ':%04X ' "$1")
-  for _ in $(seq 200); do
-    awk '$4 == "0A" {print $2 " "}' /proc/net/tcp /proc/net/tcp6 2>/dev/null | grep -q "$hex" && return 0
-    sleep 0.05
-  done
-  fail "no SUMO listening on port $1 after 10 s"
-}
+source "$src/tests/support/traci_server.sh"  # free_port, wait_listening PORT
 
 data=$src/tests/data/traci_sut
 net=$src/sumo_nets/cross/cross.net.xml

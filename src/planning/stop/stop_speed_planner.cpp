@@ -37,6 +37,8 @@ void StopSpeedPlanner::set_cruise(double limits_speed, double limits_end_accel) 
 
 std::optional<StopLevel> StopSpeedPlanner::add_stop(double to_go) {
   const StopCommand stop = plan_stop({v_, start_accel_, to_go, dt_, speed_}, params_);
+  // Planned from the cruise speed itself (no earlier stop lowered it), this is also its speed alone.
+  last_alone_ = speed_ == cruise_ ? std::min(cruise_, stop.commanded_velocity) : speed_alone(to_go);
   std::optional<StopLevel> level;
   if (stop.braking || stop.commanded_velocity < speed_) {
     if (stop.commanded_velocity < speed_) {

@@ -58,6 +58,9 @@ class StopSpeedPlanner {
   /// the other stops): which of several stops sets the speed.
   double speed_alone(double to_go) const;
 
+  /// speed_alone of the stop add_stop planned last (computed there once).
+  double last_speed_alone() const { return last_alone_; }
+
   /// The speed to command for this step [m/s]: the lane limits' speed under every stop added.
   double speed() const { return speed_; }
 
@@ -76,6 +79,7 @@ class StopSpeedPlanner {
   double start_accel_ = 0.0;
   double speed_ = 0.0;
   double cruise_ = 0.0;     // the lane limits' speed of this step
+  double last_alone_ = 0.0; // speed_alone of the last stop added
   double end_accel_ = 0.0;  // the acceleration speed_ ends the step with
   // the previous step's command
   std::optional<double> last_command_;

@@ -51,25 +51,26 @@ TimelineRow at_rest(double s_front, const char* limited_by) {
   return row;
 }
 
-TEST(LightOutcomes, ARestTheLightsStopSetsIsAStopAtTheLight) {
+// The record after one row at rest at `s_front` while light C asks for a stop.
+RunRecord rest_before_red(double s_front, const char* limited_by) {
   const RouteMap route = approach_route();
   const sumo::ApproachLight light = light_c();
-  const std::vector<LightStep> lights = {stop_requested(light, 99.98)};
+  const std::vector<LightStep> lights = {stop_requested(light, s_front)};
   LightOutcomes outcomes(0.0);
   RunRecord record;
-  outcomes.observe(at_rest(99.98, "light_stop"), lights, &lights[0], std::nullopt, route, record);
+  outcomes.observe(at_rest(s_front, limited_by), lights, &lights[0], std::nullopt, route, record);
+  return record;
+}
+
+TEST(LightOutcomes, ARestTheLightsStopSetsIsAStopAtTheLight) {
+  const RunRecord record = rest_before_red(99.98, "light_stop");
   ASSERT_EQ(record.stops.size(), 1u);
   EXPECT_EQ(record.stops[0].tl_id, "C");
   EXPECT_NEAR(record.stops[0].error, -0.02, 1e-9);
 }
 
 TEST(LightOutcomes, ALaneChangeWaitingForAGapBeforeARedLightIsNoStopAtTheLight) {
-  const RouteMap route = approach_route();
-  const sumo::ApproachLight light = light_c();
-  const std::vector<LightStep> lights = {stop_requested(light, 60.0)};
-  LightOutcomes outcomes(0.0);
-  RunRecord record;
-  outcomes.observe(at_rest(60.0, "lane_change_hold"), lights, &lights[0], std::nullopt, route, record);
+  const RunRecord record = rest_before_red(60.0, "lane_change_hold");
   EXPECT_TRUE(record.stops.empty()) << "the hold point's rest, 40 m before the line";
   for (const char* hold : {"avoidance_hold", "pull_out_wait", "pull_over_goal"}) EXPECT_TRUE(held_by_module(hold));
   EXPECT_FALSE(held_by_module("light_stop"));
