@@ -15,6 +15,7 @@ from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
 
 from signalsim_plot.data import number, runs_of, span_end
+from signalsim_plot.labels import overlapping_pairs, separate_labels
 from signalsim_plot.style import BLINKER_COLORS
 
 # The decided bar's colour: the request source that won (turn_signal_info.cpp to_string(RequestSource)).
@@ -223,8 +224,18 @@ def blinker_plot(timeline, summary, metrics, path):
     data = blinker_data(timeline, summary, metrics)
     if data is None:
         return None
+    fig, _, _ = blinker_figure(data, summary)
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return path
+
+
+def blinker_figure(data, summary, separate=True):
+    """The figure of blinker_data()'s `data`: (figure, axes, its text labels). `separate` False leaves
+    overlapping labels where they were put (the tests compare)."""
     x_max = max(data["length"], data["s_last"])
     fig, ax = plt.subplots(figsize=(13, 5.6))
+    labels = []  # (text, direction to move it when it overlaps another: +1 up, -1 down), by priority
 
     # Sections: grey span, start solid, end dashed, in the blinker the section asks for.
     order = sorted(data["sections"], key=lambda sec: sec["s_start"])
@@ -237,8 +248,8 @@ def blinker_plot(timeline, summary, metrics, path):
         ax.axvline(a, color=color, lw=1.1)
         ax.axvline(b, color=color, lw=1.1, ls="--")
         kind = sec["kind"].replace("_", " ")
-        ax.text((a + b) / 2, Y_LABEL + 0.3 * level, f"{kind} {sec['id']}: asks {sec.get('blinker', '?')}",
-                ha="center", va="bottom", fontsize=7.5)
+        labels.append((ax.text((a + b) / 2, Y_LABEL + 0.3 * level, f"{kind} {sec['id']}: asks {sec.get('blinker', '?')}",
+                               ha="center", va="bottom", fontsize=7.5), +1))
         lead = sec.get("lead_distance")
         if lead is not None:  # the actual lead: from where the blinker came on to the section's start
             lo, hi = sorted((a - lead, a))
@@ -255,10 +266,11 @@ def blinker_plot(timeline, summary, metrics, path):
             text = f"{'late: ' if late else ''}actual lead {lead:.1f} m" + (f" / {lt:.1f} s" if lt is not None else "")
             text += " (missed)" if sec.get("missed") else ""
             right = late and lo > 0.25 * x_max  # a late lead's text ends at the arrow, room allowing
-            ax.text(lo if right or not late else hi, y + 0.03, text, ha="right" if right else "left",
-                    va="bottom", fontsize=7, color=FAIL_COLOR if late else "black")
+            labels.append((ax.text(lo if right or not late else hi, y + 0.03, text, ha="right" if right else "left",
+                                   va="bottom", fontsize=7, color=FAIL_COLOR if late else "black"), +1))
         elif sec.get("missed"):
-            ax.text(a, Y_ACTUAL, "missed ", ha="right", va="center", fontsize=7.5, color=FAIL_COLOR, fontweight="bold")
+            labels.append((ax.text(a, Y_ACTUAL, "missed ", ha="right", va="center", fontsize=7.5, color=FAIL_COLOR,
+                                   fontweight="bold"), +1))
 
     # The required lead of each blinker_through_* expectation: the blinker must be on from from_s.
     for req in data["required"]:
@@ -268,9 +280,10 @@ def blinker_plot(timeline, summary, metrics, path):
                     arrowprops=dict(arrowstyle="|-|,widthA=0.25,widthB=0.25", color=color, lw=1.1))
         when = f" ≈ {req['lead_time']:.1f} s at {req['speed']:.1f} m/s" if req["lead_time"] is not None else ""
         verdict = "ok" if req["passed"] else "FAILED"
-        ax.text(req["from_s"], Y_REQUIRED + 0.04,
-                f"required: on from {req['from_s']:.1f} m{' (≈)' if req['approximate'] else ''}, "
-                f"lead ≥ {req['lead']:g} m{when} [{verdict}]", ha="left", va="bottom", fontsize=7, color=color)
+        labels.append((ax.text(req["from_s"], Y_REQUIRED + 0.04,
+                               f"required: on from {req['from_s']:.1f} m{' (≈)' if req['approximate'] else ''}, "
+                               f"lead ≥ {req['lead']:g} m{when} [{verdict}]", ha="left", va="bottom", fontsize=7,
+                               color=color), +1))
 
     # Expectations' ranges: blinker_on / no_blinker below, blinker_through_* above.
     ranges = [(exp, Y_EXPECTED - 0.1) for exp in data["expected"]]
@@ -290,14 +303,15 @@ def blinker_plot(timeline, summary, metrics, path):
         if exp.get("failed_at") is not None:  # the first failing step
             ax.plot([exp["failed_at"]], [y], marker="X", ms=9, color=FAIL_COLOR, mec="white", mew=0.8, zorder=7)
             upper = y > Y_EXPECTED
-            ax.text(exp["failed_at"], y + (0.1 if upper else -0.1), f"fails at {exp['failed_at']:.1f} m", fontsize=7,
-                    color=FAIL_COLOR, ha="center", va="bottom" if upper else "top", zorder=7)
+            labels.append((ax.text(exp["failed_at"], y + (0.1 if upper else -0.1), f"fails at {exp['failed_at']:.1f} m",
+                                   fontsize=7, color=FAIL_COLOR, ha="center", va="bottom" if upper else "top", zorder=7),
+                           +1 if upper else -1))
 
     # Stop lines of the lights.
     for light, stop_s in data["lights"]:
         ax.axvline(stop_s, color="#444444", lw=1, ls=":")
-        ax.text(stop_s, -0.55, f"stop line {light}", rotation=90, fontsize=7, ha="right", va="bottom",
-                color="#444444")
+        labels.append((ax.text(stop_s, -0.55, f"stop line {light}", rotation=90, fontsize=7, ha="right", va="bottom",
+                               color="#444444"), -1))
 
     # The decided blinker, coloured by its source.
     segs = data["segments"]
@@ -311,14 +325,14 @@ def blinker_plot(timeline, summary, metrics, path):
                 color=BLINKER_COLORS.get(seg["blinker"], "#777777"), edgecolor="black", lw=0.4,
                 zorder=3 if seg["reversing"] else 2)
         ax.plot([seg["on_s"]], [Y_DECIDED + TRACK_H / 2 + 0.04], marker="v", color="black", ms=4)
-        ax.text(seg["on_s"], Y_DECIDED + TRACK_H / 2 + 0.09 + 0.17 * level,
-                f"{seg['on_s']:.1f} m: {seg['blinker']}" + (" (reversing)" if seg["reversing"] else ""),
-                fontsize=7, ha="left", va="bottom")
+        labels.append((ax.text(seg["on_s"], Y_DECIDED + TRACK_H / 2 + 0.09 + 0.17 * level,
+                               f"{seg['on_s']:.1f} m: {seg['blinker']}" + (" (reversing)" if seg["reversing"] else ""),
+                               fontsize=7, ha="left", va="bottom"), +1))
     for k, seg in enumerate(segs):  # where the blinker went off
         nxt = segs[k + 1] if k + 1 < len(segs) else None
         if nxt is None or abs(nxt["s0"] - seg["s1"]) > 0.5 and not seg["reversing"]:
-            ax.text(seg["s1"], Y_DECIDED - TRACK_H / 2 - 0.04, f"off {seg['s1']:.1f}", fontsize=6.5, ha="center",
-                    va="top")
+            labels.append((ax.text(seg["s1"], Y_DECIDED - TRACK_H / 2 - 0.04, f"off {seg['s1']:.1f}", fontsize=6.5,
+                                   ha="center", va="top"), -1))
 
     # What SUMO showed.
     for seg in data["shown"]:  # (what was shown while reversing: half height, on top, hatched)
@@ -346,7 +360,19 @@ def blinker_plot(timeline, summary, metrics, path):
     elif not data["sections"]:
         ax.text(0.01, 0.97, "no sections on this route: no turn, roundabout or maneuver asks for a blinker",
                 transform=ax.transAxes, fontsize=8, va="top", color="#777777")
+    if separate:
+        keep_labels_apart(fig, ax, labels)
+    else:
+        fig.tight_layout()
+    return fig, ax, [t for t, _ in labels]
+
+
+def keep_labels_apart(fig, ax, labels, rounds=3):
+    """Moves overlapping labels apart (signalsim_plot.labels); the layout is redone after each round, since
+    widening the y range to hold the moved labels rescales the axes."""
     fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return path
+    for _ in range(rounds):
+        separate_labels(fig, ax, labels, step=0.12)
+        fig.tight_layout()
+        if not overlapping_pairs(fig, [t for t, _ in labels]):
+            return

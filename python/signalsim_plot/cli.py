@@ -26,11 +26,21 @@ def main(argv):
     parser.add_argument("--x", help="sweep: swept column along x")
     parser.add_argument("--y", help="sweep: swept column along y")
     parser.add_argument("--quiet", action="store_true", help="do not print the files written")
+    parser.add_argument("--gui-caption", type=float, metavar="TIME",
+                        help="run: caption PATH/gui.png (signalsim run --gui) with the timeline row at TIME s; "
+                             "nothing else is drawn")
+    parser.add_argument("--gui-junction", default="", help="with --gui-caption: the junction the view is framed on")
+    parser.add_argument("--gui-light", default="", help="with --gui-caption: the light framed with it")
+    parser.add_argument("--gui-view", default="", help="with --gui-caption: the view's extent x0,y0,x1,y1 [m]")
     args = parser.parse_args(argv)
     try:
         path = args.path
         from signalsim_plot import comparison_plots
-        if os.path.isfile(path) and path.endswith(".csv") and comparison_plots.is_comparison(path):
+        if args.gui_caption is not None:
+            from signalsim_plot import gui_caption
+            written = [gui_caption.caption_picture(path, args.gui_caption, args.gui_junction, args.gui_light,
+                                                   args.gui_view)]
+        elif os.path.isfile(path) and path.endswith(".csv") and comparison_plots.is_comparison(path):
             written = comparison_plots.plot_comparison(path, args.out or os.path.dirname(path) or ".")
         elif os.path.isfile(path) and path.endswith(".csv"):
             from signalsim_plot import sweep_plots

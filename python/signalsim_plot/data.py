@@ -5,7 +5,7 @@ import json
 import os
 
 from signalsim_plot.cli import InputError
-from signalsim_plot.net import find_input, load_net
+from signalsim_plot.net import find_input, load_net, sumolib_module
 
 
 def read_csv(path):
@@ -103,7 +103,9 @@ class RunInputs:
             candidate = os.path.join(os.path.dirname(self.scenario_path), self.scenario["net"])
             net_path = candidate if os.path.isfile(candidate) else None
         self.net = load_net(net_path) if net_path else None
-        if self.net is None:
+        if self.net is None and net_path and sumolib_module() is None:
+            self.notes.append("sumolib not found: set SUMO_HOME (Debian: apt-get install sumo-tools)")
+        elif self.net is None:
             self.notes.append(f"net {summary.get('net') or '?'} not found")
         if self.scenario is None:
             self.notes.append(f"scenario file {summary.get('file') or '?'} not readable")

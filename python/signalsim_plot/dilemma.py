@@ -1,36 +1,33 @@
 """dilemma.png: the dilemma-zone diagram (docs/behaviour.md §L2) of each light where the ego met a yellow or a red.
 
 Per light: the jerk-limited stopping distance and the yellow lamp line d = v · yellow_lamp_period over
-the speed, the zones between them, and the ego's approach (d, v) per step coloured by the light's state,
+the speed as the run's judge computed them (the run's judge_curves.csv: nothing of the judge is computed
+here; a run without the file is drawn without the curves and says so), the zones between them, and the ego's approach (d, v) per step coloured by the light's state,
 with where the yellow (red) began and where the judge first ordered a stop. A light the ego met only
 in green (or off) has no panel; a run with no such light has no dilemma.png.
 
 dilemma_data() computes what is drawn; dilemma_plot() draws it (tests read the data)."""
 import math
+import os
 
 import matplotlib.pyplot as plt
 from matplotlib.lines import Line2D
 
-from signalsim_plot.data import number
+from signalsim_plot.data import number, read_csv
 from signalsim_plot.style import LIGHT_COLORS, LIGHT_NAMES, STOP_STATES
 
 MAX_PANELS = 3
+CURVES_FILE = "judge_curves.csv"
 
 
-def judge_distance(v, a0, a_s, j_s, t_d):
-    """docs/behaviour.md §L2.2 calcJudgeLineDistWithJerkLimit (as coded upstream)."""
-    if v <= 0:
-        return 0.0
-    x1 = v * t_d
-    v2 = v + (a_s * a_s - a0 * a0) / (2 * j_s)
-    if v2 > 0:
-        t2 = (a_s - a0) / j_s
-        x2 = v * t2 + a0 * t2 ** 2 / 2 + j_s * t2 ** 3 / 6
-        x3 = -v2 * v2 / (2 * a_s)
-        return max(0.0, x1 + x2 + x3)
-    t2 = -(a_s + math.sqrt(a0 * a0 - 2 * j_s * v)) / j_s
-    x2 = v * t2 + a0 * t2 ** 2 / 2 + j_s * t2 ** 3 / 6
-    return max(0.0, x1 + x2)
+def read_curves(run_dir):
+    """The judge's curves the run wrote ({v, judge, yellow}, lists over the speed), None without the file."""
+    path = os.path.join(run_dir, CURVES_FILE)
+    if not os.path.isfile(path):
+        return None
+    rows = read_csv(path)
+    return {"v": [float(r["speed"]) for r in rows], "judge": [float(r["judge_distance"]) for r in rows],
+            "yellow": [float(r["yellow_lamp_line"]) for r in rows]}
 
 
 def lights_of(metrics, timeline, params):
@@ -59,7 +56,7 @@ def stop_distances(timeline, light, stop_s):
     return out
 
 
-def dilemma_data(timeline, summary, metrics):
+def dilemma_data(timeline, summary, metrics, curves):
     """What dilemma.png draws, or None when no light met the ego with a yellow or a red.
 
     panels: per such light {light, stop_s, points [(d, v, state, decision, t)] (the approach, d >= -2),
@@ -68,8 +65,9 @@ def dilemma_data(timeline, summary, metrics):
             emergency_stop, or None), d_range (x range: from the line to the farthest of the first yellow/red,
             the first stop decision and the zone curves), zoom (x range of a second panel on the zones when the
             approach is much longer than they are, else None)}
-    curve:  {v, judge, yellow} over the speed axis; params: the parameters used; skipped: lights the ego
-            met with no yellow or red
+    curve:  {v, judge, yellow} over the speed axis up to v_top: the rows of the run's judge_curves.csv
+            (`curves`, read_curves()), None without them; params: the parameters used; skipped: lights the
+            ego met with no yellow or red
     """
     params = summary.get("parameters", {})
     t_y = params.get("yellow_lamp_period", 2.75)
@@ -79,9 +77,11 @@ def dilemma_data(timeline, summary, metrics):
     speeds = [float(r["speed"]) for r in timeline]
     times = [float(r["time"]) for r in timeline]
     v_top = max(max(speeds) * 1.3, 12.0)
-    vs = [v_top * k / 200 for k in range(201)]
-    curve = {"v": vs, "judge": [judge_distance(v, 0.0, a_s, j_s, t_d) for v in vs], "yellow": [v * t_y for v in vs]}
-    d_curves = max(max(curve["judge"]), max(curve["yellow"])) * 1.05
+    curve = None
+    if curves:
+        keep = [k for k, v in enumerate(curves["v"]) if v <= v_top + 1e-9]
+        curve = {name: [curves[name][k] for k in keep] for name in ("v", "judge", "yellow")}
+    d_curves = max(max(curve["judge"]), max(curve["yellow"])) * 1.05 if curve else 0.0
     panels, skipped = [], []
     for light, stop_s in lights_of(metrics, timeline, params):
         d = stop_distances(timeline, light, stop_s)
@@ -97,7 +97,7 @@ def dilemma_data(timeline, summary, metrics):
         panels.append({"light": light, "stop_s": stop_s, "points": points,
                        "met": list(dict.fromkeys(p[2] for p in points if p[2] and p[0] <= d_range[1])),
                        "first_stop_state": first, "first_stop_decision": decision, "d_range": d_range,
-                       "zoom": (d_range[0], d_curves) if far > 2.5 * d_curves else None})
+                       "zoom": (d_range[0], d_curves) if curve and far > 2.5 * d_curves else None})
     if not panels:
         return None
     return {"panels": panels[:MAX_PANELS], "curve": curve, "v_top": v_top, "skipped": skipped,
@@ -105,10 +105,15 @@ def dilemma_data(timeline, summary, metrics):
                        "yellow_light_stop_velocity": params.get("yellow_light_stop_velocity")}}
 
 
-def draw_panel(ax, panel, data, d_range, title):
+def draw_curves(ax, data, d_range):
+    """The judge's curves and zones, as the run wrote them; a note when it wrote none."""
     c, prm, v_top = data["curve"], data["params"], data["v_top"]
-    vs, judge, yellow = c["v"], c["judge"], c["yellow"]
     d_lo, d_hi = d_range
+    if c is None:
+        ax.text(0.5, 0.5, f"no {CURVES_FILE} in the run folder: the judge's curves are not drawn",
+                transform=ax.transAxes, ha="center", fontsize=8.5, color="#777777")
+        return
+    vs, judge, yellow = c["v"], c["judge"], c["yellow"]
     ax.fill_betweenx(vs, yellow, judge, where=[j > y for j, y in zip(judge, yellow)], color="#d7191c",
                      alpha=0.18, lw=0, label="dilemma zone: emergency stop")
     ax.fill_betweenx(vs, judge, yellow, where=[y > j for j, y in zip(judge, yellow)], color="#2b83ba",
@@ -124,6 +129,12 @@ def draw_panel(ax, panel, data, d_range, title):
     ax.text(d_hi - 0.03 * (d_hi - d_lo), v_top * 0.3, "can stop → stop", fontsize=8.5, color="#555555", ha="right")
     ax.text(d_lo + 0.03 * (d_hi - d_lo), v_top * 0.97, "cannot stop,\nreaches the line\n→ pass", fontsize=8.5,
             color="#555555", ha="left", va="top")
+
+
+def draw_panel(ax, panel, data, d_range, title):
+    v_top = data["v_top"]
+    d_lo, d_hi = d_range
+    draw_curves(ax, data, d_range)
 
     pts = panel["points"]
     ax.plot([p[0] for p in pts], [p[1] for p in pts], color="#333333", lw=0.8, zorder=3)
@@ -153,8 +164,8 @@ def draw_panel(ax, panel, data, d_range, title):
     ax.set_title(title)
 
 
-def dilemma_plot(timeline, summary, metrics, path):
-    data = dilemma_data(timeline, summary, metrics)
+def dilemma_plot(timeline, summary, metrics, curves, path):
+    data = dilemma_data(timeline, summary, metrics, curves)
     if data is None:
         return None
     panels = data["panels"]

@@ -1,16 +1,31 @@
 """What the pictures need of a SUMO net (.net.xml): each lane's speed limit, width, length and shape.
 
 timeline.csv names the lane of the front bumper at every step but not its speed limit nor where it
-starts on the route; both come from the net the run's summary.json names (`net`)."""
-import math
+starts on the route; both come from the net the run's summary.json names (`net`), read with SUMO's own
+reader, sumolib (installed with SUMO's tools: $SUMO_HOME/tools, else /usr/share/sumo/tools)."""
 import os
-import xml.etree.ElementTree as ET
+import sys
 
 SOURCE_ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))  # python/signalsim_plot/../..: the source tree or share/signalsim
-DEFAULT_LANE_WIDTH = 3.2  # SUMO's default when a lane has no width attribute [m]
+DEFAULT_LANE_WIDTH = 3.2  # SUMO's default lane width [m]: lateral.png's assumption without the net
+SUMO_TOOLS = (os.path.join(os.environ["SUMO_HOME"], "tools") if os.environ.get("SUMO_HOME") else None,
+              "/usr/share/sumo/tools")
+
+
+def sumolib_module():
+    """SUMO's sumolib, from $SUMO_HOME/tools or /usr/share/sumo/tools; None when neither has it."""
+    for tools in SUMO_TOOLS:
+        if tools and os.path.isdir(os.path.join(tools, "sumolib")) and tools not in sys.path:
+            sys.path.append(tools)
+    try:
+        import sumolib
+    except ImportError:
+        return None
+    return sumolib
 
 
 class Lane:
+    """A lane as the pictures use it (from sumolib's lane)."""
     __slots__ = ("id", "edge", "index", "speed", "length", "width", "shape", "internal")
 
     def __init__(self, lane_id, edge, index, speed, length, width, shape, internal):
@@ -18,18 +33,12 @@ class Lane:
         self.length, self.width, self.shape, self.internal = length, width, shape, internal
 
     def position_of(self, x, y):
-        """Lane position [m] of the point of the lane's shape nearest (x, y), scaled to the lane's length."""
-        best, best_d2, walked = 0.0, math.inf, 0.0
-        for (x0, y0), (x1, y1) in zip(self.shape, self.shape[1:]):
-            dx, dy = x1 - x0, y1 - y0
-            seg = math.hypot(dx, dy)
-            u = 0.0 if seg == 0 else max(0.0, min(1.0, ((x - x0) * dx + (y - y0) * dy) / (seg * seg)))
-            px, py = x0 + u * dx, y0 + u * dy
-            d2 = (x - px) ** 2 + (y - py) ** 2
-            if d2 < best_d2:
-                best, best_d2 = walked + u * seg, d2
-            walked += seg
-        return best * (self.length / walked) if walked > 0 else 0.0
+        """Lane position [m] of the point of the lane's shape nearest (x, y), scaled to the lane's length
+        (sumolib.geomhelper's offset along the shape)."""
+        geomhelper = sumolib_module().geomhelper
+        offset = geomhelper.polygonOffsetWithMinimumDistanceToPoint((x, y), self.shape)
+        walked = geomhelper.polyLength(self.shape)
+        return offset * (self.length / walked) if walked > 0 else 0.0
 
 
 class Net:
@@ -60,22 +69,21 @@ class Net:
 
 
 def load_net(path):
-    """The net at `path`, or None when it cannot be read."""
-    lanes = {}
-    try:
-        for _, element in ET.iterparse(path, events=("end",)):
-            if element.tag != "edge":
-                continue
-            edge = element.get("id")
-            internal = element.get("function") == "internal"
-            for lane in element.findall("lane"):
-                shape = [tuple(float(c) for c in p.split(",")[:2]) for p in lane.get("shape", "").split()]
-                lanes[lane.get("id")] = Lane(lane.get("id"), edge, int(lane.get("index", 0)),
-                                             float(lane.get("speed", "nan")), float(lane.get("length", "0")),
-                                             float(lane.get("width", DEFAULT_LANE_WIDTH)), shape, internal)
-            element.clear()
-    except (OSError, ET.ParseError, ValueError):
+    """The net at `path` read by sumolib (internal lanes included), or None when it cannot be read or
+    sumolib is missing."""
+    sumolib = sumolib_module()
+    if sumolib is None:
         return None
+    try:
+        net = sumolib.net.readNet(path, withInternal=True)
+    except Exception:  # sumolib raises what its SAX parser or its number conversions raise
+        return None
+    lanes = {}
+    for edge in net.getEdges(withInternal=True):
+        for lane in edge.getLanes():
+            lanes[lane.getID()] = Lane(lane.getID(), edge.getID(), lane.getIndex(), lane.getSpeed(), lane.getLength(),
+                                       lane.getWidth(), [tuple(p[:2]) for p in lane.getShape()],
+                                       edge.getFunction() == "internal")
     return Net(path, lanes) if lanes else None
 
 

@@ -6,7 +6,7 @@ import os
 
 from signalsim_plot.blinker import blinker_plot
 from signalsim_plot.data import RunInputs, read_run
-from signalsim_plot.dilemma import dilemma_plot
+from signalsim_plot.dilemma import dilemma_plot, read_curves
 from signalsim_plot.lateral import lateral_plot
 from signalsim_plot.speed import speed_plot
 
@@ -24,7 +24,7 @@ def plot_run(run_dir, out):
         "blinker.png": blinker_plot(timeline, summary, metrics, os.path.join(out, "blinker.png")),
         "lateral.png": lateral_plot(timeline, events, summary, inputs, os.path.join(out, "lateral.png")),
         "speed.png": speed_plot(timeline, summary, metrics, inputs.net, os.path.join(out, "speed.png")),
-        "dilemma.png": dilemma_plot(timeline, summary, metrics, os.path.join(out, "dilemma.png")),
+        "dilemma.png": dilemma_plot(timeline, summary, metrics, read_curves(run_dir), os.path.join(out, "dilemma.png")),
     }
     for name, path in drawn.items():
         stale = os.path.join(out, name)

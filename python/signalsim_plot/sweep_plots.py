@@ -3,10 +3,15 @@
 A true/false column (light<n>.red_light_violation, light<n>.emergency_stop) is shown as the share of
 runs where it is true (true = 1, false = 0, averaged like any number). Signed metrics (lead distances
 and times, stop position errors) use a diverging map centred on 0 (red: negative, e.g. a blinker that
-came on after the section start); the others a sequential one. The colour bar carries the unit. A cell
-with failed runs has a red border and says how many failed; a cell with runs in error an orange dashed border
-and says how many (an errored run has no value). Runs differing in swept keys not on an axis are
-averaged, and the title names those keys.
+came on after the section start); the others a sequential one. The diverging map keeps a gap around 0:
+any value but 0 gets a visible tint (a lead of -0.2 m is not the white of 0), and cell values never
+round to 0 (-0.004, not -0.00). The colour bar carries the unit. A cell with failed runs has a red border
+and says how many failed; a cell with runs in error an orange dashed border and says how many (an
+errored run has no value). For a section's metric (`turn1.lead_distance`) each cell also says which
+blinker was on as the front reached the section start (results.csv `<section>.blinker_at_start`, arrows
+← left, → right, ↔ hazard, with the count when the runs differ) and marks one other than the section
+asks (`<section>.blinker`), a blinker to the wrong side, which has no lead to show. Runs differing in
+swept keys not on an axis are averaged, and the title names those keys.
 
 heatmap_data() computes what is drawn; plot_results() draws it (tests read the data)."""
 import math
@@ -15,7 +20,7 @@ import re
 
 import matplotlib.pyplot as plt
 import numpy as np
-from matplotlib.colors import Normalize
+from matplotlib.colors import FuncNorm, Normalize
 from matplotlib.patches import Rectangle
 
 from signalsim_plot.cli import InputError
@@ -67,8 +72,48 @@ UNITS = {"lead_distance": "m", "stop_position_error": "m", "lead_time": "s", "ti
 SIGNED = {"lead_distance": "< 0: late, the blinker came on after the section start",
           "lead_time": "< 0: late, the blinker came on after the section start",
           "stop_position_error": "< 0: at rest short of the stop point"}
-FAIL_COLOR, ERROR_COLOR = "#d00000", "#ff8c00"
+FAIL_COLOR, ERROR_COLOR, WRONG_COLOR = "#d00000", "#ff8c00", "#7b1fa2"
 MAX_NAME = 64
+ZERO_GAP = 0.25  # the diverging map: a value v != 0 is drawn at least this share of the half range from 0
+ARROWS = {"left": "←", "right": "→", "hazard": "↔", "none": "·"}
+
+
+def gapped_norm(half):
+    """A diverging normalisation over [-half, half] with a gap around 0: 0 maps to 0.5 and any other value
+    at least ZERO_GAP / (2 (1 + ZERO_GAP)) away from it, so a small late value is tinted, not white."""
+    gap = ZERO_GAP * half
+    forward = lambda v: np.where(np.asarray(v) == 0, 0.0, np.asarray(v) + np.sign(v) * gap)  # noqa: E731
+    inverse = lambda u: np.sign(u) * np.maximum(np.abs(u) - gap, 0.0)  # noqa: E731
+    return FuncNorm((forward, inverse), vmin=-half, vmax=half)
+
+
+def format_value(value):
+    """A cell's value as text: never rounded to 0 (-0.004), 2 decimals, whole numbers from 1000."""
+    if value == 0:
+        return "0"
+    if abs(value) < 0.005:
+        return f"{value:.2g}"
+    return f"{value:.2f}" if abs(value) < 1000 else f"{value:.0f}"
+
+
+def section_of_metric(metric, header):
+    """The section a metric column belongs to (turn1 of turn1.lead_distance) when results.csv has its
+    blinker_at_start column, else None."""
+    item = metric.rsplit(".", 1)[0] if "." in metric else None
+    return item if item and f"{item}.blinker_at_start" in header else None
+
+
+def direction_text(directions, asked):
+    """The cell's line about the blinker at the section start: arrows with counts when the runs differ;
+    (text, wrong) where wrong says a run showed a blinker other than `asked` (and not none)."""
+    if not directions:
+        return "", False
+    if len(directions) == 1:
+        parts = [f"{ARROWS.get(b, b)} {b}" for b in directions]
+    else:
+        parts = [f"{ARROWS.get(b, b)}×{n}" for b, n in directions.items()]
+    wrong = any(b not in (asked, "none", "") for b in directions) and asked not in ("", None)
+    return "start: " + ", ".join(parts) + (f" ≠ asks {ARROWS.get(asked, asked)}" if wrong else ""), wrong
 
 
 def metric_kind(metric, rows):
@@ -105,6 +150,9 @@ def heatmap_data(csv_path, metric, x, y):
     with a value), runs, failed, errors (per cell)}]; norm: the colour normalisation (matplotlib Normalize;
     centred on 0 for signed metrics: vmin = -vmax); cmap: its name; unit, signed (the note or None), boolean;
     marked: [(panel index, row, column, failed, errors)] of the cells drawn with a failure/error mark;
+    section: the section of a section metric (or None); per panel also directions (per cell a dict
+    blinker_at_start -> runs) and asked (per cell the blinker the section asks, "" when unknown);
+    wrong: [(panel index, row, column)] of the cells where a run showed a blinker to the other side;
     title; colorbar_label (with the unit); name (the PNG's file name)
     """
     rows = read_csv(csv_path)
@@ -137,6 +185,7 @@ def heatmap_data(csv_path, metric, x, y):
     ys = ordered_values([r[y] for r in rows]) if y else [""]
     averaged = [c for c in swept if c not in (x, y)]
     unit, signed, boolean = metric_kind(metric, rows)
+    section = section_of_metric(metric, header)
 
     out = []
     for panel in panels:
@@ -144,6 +193,8 @@ def heatmap_data(csv_path, metric, x, y):
         counts, runs = np.zeros(shape, dtype=int), np.zeros(shape, dtype=int)
         failed, errors = np.zeros(shape, dtype=int), np.zeros(shape, dtype=int)
         sums = np.zeros(shape)
+        directions = [[{} for _ in xs] for _ in ys]
+        asked = [["" for _ in xs] for _ in ys]
         for r in rows:
             if panel is not None and r["scenario"] != panel:
                 continue
@@ -151,6 +202,10 @@ def heatmap_data(csv_path, metric, x, y):
             runs[i, j] += 1
             failed[i, j] += r.get("status") == "failed"
             errors[i, j] += r.get("status") == "error"
+            if section and r.get(f"{section}.blinker_at_start"):
+                b = r[f"{section}.blinker_at_start"]
+                directions[i][j][b] = directions[i][j].get(b, 0) + 1
+                asked[i][j] = r.get(f"{section}.blinker", "") or asked[i][j]
             v = cell_value(r.get(metric))
             if v is not None and r.get("status") != "error":
                 sums[i, j] += v
@@ -158,12 +213,13 @@ def heatmap_data(csv_path, metric, x, y):
         grid = np.full(shape, np.nan)
         mask = counts > 0
         grid[mask] = sums[mask] / counts[mask]
-        out.append({"panel": panel, "grid": grid, "counts": counts, "runs": runs, "failed": failed, "errors": errors})
+        out.append({"panel": panel, "grid": grid, "counts": counts, "runs": runs, "failed": failed, "errors": errors,
+                    "directions": directions, "asked": asked})
 
     finite = [float(v) for p in out for v in p["grid"][~np.isnan(p["grid"])]]
     if signed:
         half = max([abs(v) for v in finite] + [1e-9])
-        norm, cmap = Normalize(vmin=-half, vmax=half), "RdBu"
+        norm, cmap = gapped_norm(half), "RdBu"
     elif boolean:
         norm, cmap = Normalize(vmin=0.0, vmax=1.0), "viridis"
     else:
@@ -173,6 +229,8 @@ def heatmap_data(csv_path, metric, x, y):
         norm, cmap = Normalize(vmin=lo, vmax=hi), "viridis"
     marked = [(k, i, j, int(p["failed"][i, j]), int(p["errors"][i, j])) for k, p in enumerate(out)
               for i in range(len(ys)) for j in range(len(xs)) if p["failed"][i, j] or p["errors"][i, j]]
+    wrong = [(k, i, j) for k, p in enumerate(out) for i in range(len(ys)) for j in range(len(xs))
+             if direction_text(p["directions"][i][j], p["asked"][i][j])[1]]
 
     runs_per_cell = sorted({int(n) for p in out for n in p["runs"].ravel() if n})
     per_cell = (f"{runs_per_cell[0]}" if len(runs_per_cell) == 1 else
@@ -186,9 +244,12 @@ def heatmap_data(csv_path, metric, x, y):
     title += f"; {sub}; grey: no value"
     if marked:
         title += "; red border: failed runs, orange dashed: runs in error"
+    if wrong:
+        title += "; purple: a blinker to the wrong side"
     label = f"{metric} [{unit}]" + (f"\n{signed}" if signed else "")
     return {"metric": metric, "x": x, "y": y, "xs": xs, "ys": ys, "averaged": averaged, "panels": out, "norm": norm,
-            "cmap": cmap, "unit": unit, "signed": signed, "boolean": boolean, "marked": marked, "title": title,
+            "cmap": cmap, "unit": unit, "signed": signed, "boolean": boolean, "marked": marked, "section": section,
+            "wrong": wrong, "title": title,
             "colorbar_label": label, "name": file_name(metric, x, y)}
 
 
@@ -204,6 +265,8 @@ def plot_results(csv_path, out, metric, x, y):
     cols = min(len(panels), 3)
     prow = math.ceil(len(panels) / cols)
     cell_w, cell_h = max(0.9, 0.16 * max(len(v) for v in xs) + 0.5), 0.62
+    if data["section"]:  # room for the line about the blinker at the section start
+        cell_w, cell_h = max(cell_w, 1.5), 0.8
     fig_w = min(22, max(6.0, cols * (len(xs) * cell_w + 2.8)))
     fig_h = min(20, max(3.4, prow * (len(ys) * cell_h + 1.9) + 1.0))
     fig, axes = plt.subplots(prow, cols, figsize=(fig_w, fig_h), squeeze=False)
@@ -219,7 +282,7 @@ def plot_results(csv_path, out, metric, x, y):
                 lines = []
                 if p["counts"][i, j]:
                     value = grid[i, j]
-                    lines.append(f"{value:.2f}" if abs(value) < 1000 else f"{value:.0f}")
+                    lines.append(format_value(value))
                     if p["counts"][i, j] > 1:
                         lines.append(f"(n={p['counts'][i, j]})")
                     color = text_color(cmap(norm(value)))
@@ -230,7 +293,12 @@ def plot_results(csv_path, out, metric, x, y):
                     lines.append(f"✗ {p['failed'][i, j]}/{p['runs'][i, j]} failed")
                 if p["errors"][i, j]:
                     lines.append(f"{p['errors'][i, j]}/{p['runs'][i, j]} error")
+                direction, wrong = direction_text(p["directions"][i][j], p["asked"][i][j])
+                if direction:
+                    lines.append(direction)
                 ax.text(j, i, "\n".join(lines), ha="center", va="center", fontsize=7.5, color=color)
+                if wrong:  # a blinker to the wrong side: a purple frame inside the cell
+                    ax.add_patch(Rectangle((j - 0.34, i - 0.34), 0.68, 0.68, fill=False, lw=2.0, edgecolor=WRONG_COLOR))
                 if p["failed"][i, j]:  # solid red border: failed runs; dashed (inside it): errors
                     ax.add_patch(Rectangle((j - 0.46, i - 0.46), 0.92, 0.92, fill=False, lw=2.2, edgecolor=FAIL_COLOR))
                 if p["errors"][i, j]:

@@ -16,19 +16,18 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <memory>
 
 #include "app/batch_cli.hpp"
 #include "app/cli_numbers.hpp"
 #include "app/command.hpp"
+#include "app/junit_report.hpp"
 #include "app/override_flags.hpp"
 #include "app/sut_flags.hpp"
 #include "batch/golden.hpp"
 #include "batch/golden_suts.hpp"
 #include "batch/interrupt_guard.hpp"
-#include "batch/junit_xml.hpp"
 #include "batch/run_list.hpp"
 #include "batch/run_outputs.hpp"
 #include "batch/scenario_files.hpp"
@@ -62,33 +61,16 @@ std::string cell(const ResultRow& row, const std::string& column) {
   return it == row.cells.end() ? std::string() : it->second;
 }
 
-// The failed expectations and law verdicts of a run's summary with their details, one a line, for the
-// console and JUnit's <system-out>.
-std::string failures_of(const nlohmann::ordered_json& summary) {
-  std::string out;
-  if (summary.contains("expectations") && summary["expectations"].is_array())
-    for (const auto& e : summary["expectations"])
-      if (!e.value("passed", true))
-        out += "expectation failed: " + e.value("expectation", std::string("?")) + ": " +
-               e.value("detail", std::string()) + "\n";
-  if (summary.contains("law") && summary["law"].is_object())
-    for (const auto& v : summary["law"].value("verdicts", nlohmann::ordered_json::array()))
-      if (!v.value("passed", true))
-        out += "law verdict failed: " + v.value("section", std::string()) + " " + v.value("id", std::string()) +
-               " " + v.value("rule", std::string()) + ": " + v.value("detail", std::string()) + "\n";
-  return out;
-}
-
 // Compares (or updates) one run; prints its verdict and returns its JUnit case.
 JUnitCase check_one(const RunSpec& run, const ResultRow* row, const CheckOptions& o, const std::string& out_dir) {
-  JUnitCase c;
-  c.name = fs::path(run.scenario).stem().string();
-  c.file = run.scenario;
+  const std::string run_dir = row ? (fs::path(out_dir) / cell(*row, "run_dir")).string() : std::string();
+  JUnitCase c = junit_case(run, row ? summary_or_null(run_dir) : nlohmann::ordered_json());
   const std::string golden = (fs::path(o.golden_dir) / (c.name + ".events.csv")).string();
   auto verdict = [&](JUnitCase::Result result, const std::string& message, const std::string& details = "") {
     c.result = result;
     c.message = message;
     c.details = details;
+    if (!o.junit.empty() && !run_dir.empty()) attach_pictures(c, run_dir);  // a failed case's pictures
     const char* tag = result == JUnitCase::Result::Failed ? "FAIL " : result == JUnitCase::Result::Error ? "ERROR" : "ok   ";
     std::printf("%s %s: %s\n%s", tag, c.name.c_str(), message.c_str(), details.c_str());
     for (std::size_t at = 0; at < c.system_out.size();) {  // the failed expectations, indented
@@ -102,14 +84,13 @@ JUnitCase check_one(const RunSpec& run, const ResultRow* row, const CheckOptions
   c.time = std::atof(cell(*row, "wall_time").c_str());
   if (cell(*row, "status") == "error") return verdict(JUnitCase::Result::Error, "run error: " + cell(*row, "error"));
 
-  const fs::path run_dir = fs::path(out_dir) / cell(*row, "run_dir");
-  const std::string events_path = (run_dir / run_files::kEvents).string();
+  const std::string events_path = (fs::path(run_dir) / run_files::kEvents).string();
   std::vector<TimelineEvent> events;
   double step = 0.1;
   GoldenSuts suts;  // the decider and light judge that made this run's events
   try {
     events = read_events_csv(events_path);
-    const auto summary = read_json_file((run_dir / run_files::kSummary).string());
+    const auto summary = read_json_file((fs::path(run_dir) / run_files::kSummary).string());
     step = summary.value("step_length", 0.1);
     suts = run_suts(summary);
     c.system_out += failures_of(summary);
@@ -196,28 +177,11 @@ void check_golden_folder(const std::string& dir, const std::vector<std::string>&
   throw InputError("--golden", 0, "folder '" + dir + "' does not hold " + which + "; make golden files with --update");
 }
 
-// A folder `check` writes into after the runs (--update's golden folder, --junit's): created and
-// written to now, so that one that cannot be is bad input before the runs rather than after them.
-void check_writable_folder(const std::string& dir, const std::string& flag) {
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec || !fs::is_directory(dir, ec))
-    throw InputError(flag, 0, "cannot create the folder '" + dir + "'" + (ec ? ": " + ec.message() : std::string()));
-  const fs::path probe = fs::path(dir) / (".signalsim-check-" + std::to_string(getpid()));
-  const bool written = static_cast<bool>(std::ofstream(probe) << "");
-  fs::remove(probe, ec);
-  if (!written) throw InputError(flag, 0, "cannot write into the folder '" + dir + "'");
-}
-
 // Where check writes after the runs, checked before them.
 void check_destinations(const CheckOptions& o, const std::vector<std::string>& files) {
   if (o.update) check_writable_folder(o.golden_dir, "--update");
   else check_golden_folder(o.golden_dir, files);
-  if (o.junit.empty()) return;
-  std::error_code ec;
-  if (fs::is_directory(o.junit, ec)) throw InputError("--junit", 0, "'" + o.junit + "' is a folder, not a file");
-  const fs::path parent = fs::path(o.junit).parent_path();
-  check_writable_folder(parent.empty() ? "." : parent.string(), "--junit");
+  if (!o.junit.empty()) check_junit_destination(o.junit);
 }
 
 }  // namespace
@@ -275,11 +239,7 @@ Command add_check_command(CLI::App& app) {
               std::printf("check: %zu scenario%s, %zu passed, %zu failed, %zu error%s; %zu without expectations%s\n",
                           cases.size(), cases.size() == 1 ? "" : "s", cases.size() - failed - errors, failed, errors,
                           errors == 1 ? "" : "s", result.no_expectations, o->update ? " (golden files updated)" : "");
-              if (!o->junit.empty()) {
-                if (const fs::path parent = fs::path(o->junit).parent_path(); !parent.empty())
-                  fs::create_directories(parent);
-                write_file_atomically(o->junit, junit_xml("signalsim check", cases, result.wall));
-              }
+              if (!o->junit.empty()) write_junit(o->junit, "signalsim check", cases, result.wall);
               if (errors > 0) return kExitRunErrors;
               return failed > 0 ? kExitFailed : 0;
             } catch (const BatchInterrupted& e) {

@@ -112,7 +112,7 @@ std::string run_dir_name(std::size_t index, const std::string& name, const std::
   return prefix + safe + "-" + driver;
 }
 
-// A finished worker's run: its summary and timeline, or why there is none.
+// A finished worker's run: its summary, or why there is none.
 DriverRun driver_run(const std::string& out_dir, const std::string& run_dir, const std::string& driver,
                      const ProcessResult& result, double timeout) {
   DriverRun run;
@@ -142,7 +142,6 @@ DriverRun driver_run(const std::string& out_dir, const std::string& run_dir, con
       run.error = run.summary.value("error", "summary.json status '" + status + "'");
       return run;
     }
-    run.timeline = read_timeline_csv((dir / run_files::kTimeline).string());
     run.status = status;
   } catch (const std::exception& e) {
     run.error = "exit code " + std::to_string(result.exit_code) + " but " + e.what();

@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "batch/child_process.hpp"
+#include "core/number_text.hpp"
 #include "scenario/data_dir.hpp"
 
 namespace signalsim::app {
@@ -27,6 +28,14 @@ int run_plot_tool(const std::vector<std::string>& args) {
   const int code = run_foreground(argv);
   if (code != 0) std::fprintf(stderr, "signalsim: plotting failed (%s exit code %d)\n", tool.c_str(), code);
   return code;
+}
+
+int caption_gui_picture(const std::string& run_dir, const sumo::GuiPicture& picture) {
+  std::string view;
+  for (const double v : picture.view) view += (view.empty() ? "" : ",") + format_text("%.2f", v);
+  // NAME=VALUE: a value may start with '-' (a view's negative coordinate)
+  return run_plot_tool({run_dir, "--quiet", "--gui-caption=" + format_text("%.3f", picture.time),
+                        "--gui-junction=" + picture.junction, "--gui-light=" + picture.light, "--gui-view=" + view});
 }
 
 }  // namespace signalsim::app

@@ -138,9 +138,11 @@ int run(const RunOptions& options) {
     const auto start = std::chrono::steady_clock::now();
     RunRecord record;
     sumo::RoutePlan plan;
+    std::optional<sumo::GuiPicture> picture;  // --gui: what gui.png shows
     {
       StartedRun started = start_run(std::move(planned), net, context);
       record = drive(started, net);
+      picture = started.session->gui_picture();
       scenario = started.scenario;  // as run: a taken-over vehicle's values
       plan = std::move(started.plan);
     }  // SUMO closes here: its log is complete
@@ -164,6 +166,7 @@ int run(const RunOptions& options) {
       if (status == RunStatus::NoExpectations)
         std::printf("  the scenario has no expectations (expect:): nothing was checked\n");
     }
+    if (picture) caption_gui_picture(options.out_dir, *picture);  // a failed caption is reported, as a plot
     if (options.plot) run_plot_tool({options.out_dir});  // a failed plot is reported, the run's verdict stands
     return status == RunStatus::Failed ? kExitFailed : 0;
   } catch (const InputError& e) {

@@ -51,13 +51,6 @@ int number_of(const ComparedItem& item) {
   return digits < item.name.size() ? std::stoi(item.name.substr(digits)) : 0;
 }
 
-// The blinker as the front reached the section start (the first row beyond it); "" when never.
-std::string blinker_at(const std::vector<TimelineRow>& rows, double s) {
-  for (const TimelineRow& r : rows)
-    if (r.s_front > s) return std::string(to_string(r.blinker));
-  return "";
-}
-
 // Where an item's measuring stretch ends (base_link leaves a section; a light is left behind 2 m past
 // its line); it begins where the previous item of its kind (section or light) ended.
 double measured_end(const ComparedItem& item, double b2f) {
@@ -120,11 +113,11 @@ Row item_row(const ScenarioComparison& sc, const ComparedItem* item, const Drive
     row[column("error")] = "the run's metrics have no " + item->name + " at " + item->id;
     return row;
   }
-  const char* const fields[] = {"lead_distance", "lead_time",           "time_on",             "missed",
-                                "state_at_line", "red_light_violation", "stop_position_error", "decision"};
+  // blinker_at_start: the section metric (report/section_metrics.hpp), empty when not reached
+  const char* const fields[] = {"lead_distance",       "lead_time",           "time_on",  "missed", "blinker_at_start",
+                                "state_at_line",       "red_light_violation", "stop_position_error", "decision"};
   for (const char* field : fields)
     if (metric->contains(field)) row[column(field)] = cell_of((*metric)[field]);
-  if (item->kind != "light" && metric->value("reached", false)) row[column("blinker_at_start")] = blinker_at(run.timeline, item->s);
   row[column("notes")] = notes_of(run, metric, window_from, measured_end(*item, sc.base_link_to_front));
   return row;
 }

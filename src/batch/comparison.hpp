@@ -1,6 +1,6 @@
 // The table of `signalsim compare` (comparison.csv) and its one-screen summary, SUMO-free: built from
 // each scenario's route (the sections and lights to compare, in route order) and what its two runs
-// left in their directories (summary.json metrics, timeline.csv).
+// left in their directories (summary.json: its metrics, expectations and off_plan).
 //
 //   items    per scenario: the route's signal sections (turn, roundabout_entry, roundabout_exit;
 //            report/signal_sections.hpp, numbered per kind from 1 like results.csv) and its
@@ -47,7 +47,6 @@ struct DriverRun {
   std::string error;                 ///< why, for status error
   std::string run_dir;               ///< relative to the output directory
   nlohmann::ordered_json summary;    ///< summary.json of a finished run
-  std::vector<TimelineRow> timeline; ///< timeline.csv of a finished run
 };
 
 struct ScenarioComparison {

@@ -1,4 +1,4 @@
-// JUnit XML of `signalsim check`, built as a pugixml document (see junit_xml.hpp).
+// JUnit XML of `signalsim check` and `batch`, built as a pugixml document (see junit_xml.hpp).
 #include "batch/junit_xml.hpp"
 
 #include <cstdio>
@@ -55,18 +55,36 @@ void add_suite_attributes(pugi::xml_node node, const std::string& suite, const s
   add_attribute(node, "time", format_text("%.3f", time));
 }
 
+// system_out, then one line `[[ATTACHMENT|path]]` per attachment, each on a line of its own.
+std::string system_out_text(const JUnitCase& c) {
+  std::string out = c.system_out;
+  for (const std::string& path : c.attachments) {
+    if (!out.empty() && out.back() != '\n') out += '\n';
+    out += "[[ATTACHMENT|" + path + "]]\n";
+  }
+  return out;
+}
+
 void add_test_case(pugi::xml_node suite_node, const std::string& suite, const JUnitCase& c) {
   pugi::xml_node node = suite_node.append_child("testcase");
-  add_attribute(node, "classname", suite);
+  add_attribute(node, "classname", c.classname.empty() ? suite : c.classname);
   add_attribute(node, "name", c.name);
   add_attribute(node, "file", c.file);
   add_attribute(node, "time", format_text("%.3f", c.time));
+  if (!c.properties.empty()) {
+    pugi::xml_node properties = node.append_child("properties");
+    for (const auto& [name, value] : c.properties) {
+      pugi::xml_node property = properties.append_child("property");
+      add_attribute(property, "name", name);
+      add_attribute(property, "value", value);
+    }
+  }
   if (const char* tag = outcome_tag(c.result)) {
     pugi::xml_node outcome = node.append_child(tag);
     add_attribute(outcome, "message", c.message);
     if (!c.details.empty()) outcome.text().set(xml_text(c.details).c_str());
   }
-  if (!c.system_out.empty()) add_text_child(node, "system-out", c.system_out);
+  if (const std::string out = system_out_text(c); !out.empty()) add_text_child(node, "system-out", out);
 }
 
 }  // namespace

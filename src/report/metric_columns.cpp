@@ -31,7 +31,7 @@ const std::vector<std::string>& group_order() {
 }
 const std::vector<std::string>& field_order() {
   static const std::vector<std::string> order = {
-      "id",       "blinker", "lead_distance", "lead_time",           "time_on",
+      "id",       "blinker", "blinker_at_start", "lead_distance", "lead_time",           "time_on",
       "flickers", "missed",  "state_at_line", "red_light_violation", "stop_position_error",
       "decision", "zone",    "emergency_stop"};
   return order;

@@ -87,6 +87,7 @@ nlohmann::ordered_json to_json(const RunMetrics& m) {
     j["s_end"] = rounded(s.section.s_end, 3);
     j["lanelets"] = s.section.lanelets;
     j["reached"] = s.reached;
+    j["blinker_at_start"] = s.blinker_at_start ? nlohmann::ordered_json(to_string(*s.blinker_at_start)) : nullptr;
     j["lead_distance"] = optional_json(s.lead_distance);
     j["lead_time"] = optional_json(s.lead_time);
     j["time_on"] = optional_json(s.time_on);

@@ -1,5 +1,6 @@
 #include "report/outputs.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
@@ -8,6 +9,7 @@
 
 #include "report/atomic_file.hpp"
 #include "core/number_text.hpp"
+#include "report/judge_curves.hpp"
 #include "report/metrics.hpp"
 #include "report/run_files.hpp"
 #include "report/summary_sections.hpp"
@@ -249,6 +251,11 @@ void write_run_outputs(const std::string& dir, const Scenario& scenario, const s
   write_timeline_csv((fs::path(dir) / run_files::kTimeline).string(), record.rows,
                      {record.v2i, !record.decider_sut.empty(), !record.light_judge_sut.empty()});
   write_events_csv((fs::path(dir) / run_files::kEvents).string(), record.events);
+  // The judge's curves as this run's parameters give them, when a light was ahead (dilemma.png reads them).
+  const bool light_ahead =
+      std::any_of(record.rows.begin(), record.rows.end(), [](const TimelineRow& r) { return !r.tl_id.empty(); });
+  if (light_ahead)
+    write_atomically((fs::path(dir) / run_files::kJudgeCurves).string(), judge_curves_csv(scenario.run_params.judge));
 
   nlohmann::ordered_json summary;
   summary["scenario"] = scenario.name;
@@ -258,6 +265,7 @@ void write_run_outputs(const std::string& dir, const Scenario& scenario, const s
   summary["driver"] = to_string(record.driver);
   if (!scenario.warnings.empty()) summary["notes"] = scenario.warnings;  // only then: other summaries as they were
   summary["seed"] = scenario.seed;
+  summary["country"] = scenario.country;
   summary["step_length"] = scenario.step_length;
   summary["duration"] = scenario.duration;
   summary["ego"] = ego_json(scenario, record.sumo.ego);

@@ -13,9 +13,10 @@ inline constexpr const char* kSummary = "summary.json";      ///< the run's verd
 inline constexpr const char* kGuiScreenshot = "gui.png";     ///< `run --gui`: the view at the first blinker
 inline constexpr const char* kSumoLog = "sumo.log";          ///< SUMO's messages
 inline constexpr const char* kMetrics = "metrics.json";      ///< batch's metrics of a summary without them
+inline constexpr const char* kJudgeCurves = "judge_curves.csv";  ///< the light judge's curves over the speed
 /// What a run writes anew: removed before a run writes its files or an error summary, so that no
 /// stale file describes another run.
-inline constexpr std::array<const char*, 4> kRunOutputs = {kSummary, kTimeline, kEvents, kGuiScreenshot};
+inline constexpr std::array<const char*, 5> kRunOutputs = {kSummary, kTimeline, kEvents, kJudgeCurves, kGuiScreenshot};
 
 inline constexpr const char* kResults = "results.csv";       ///< a batch's table, a row per run
 inline constexpr const char* kRunsDir = "runs";              ///< a batch's run directories

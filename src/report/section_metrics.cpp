@@ -56,6 +56,7 @@ SectionMetrics measure_section(const SignalSection& section, const RunRecord& re
                                   [&](const TimelineRow& r) { return r.s_front > section.s_start; });
   if (enter == rows.end()) return m;
   m.reached = true;
+  m.blinker_at_start = enter->blinker;
   if (section.blinker == Blinker::None) return m;
   const std::size_t k = static_cast<std::size_t>(enter - rows.begin());
   // The stretch of the expected blinker around row i, if row i shows it.

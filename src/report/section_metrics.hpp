@@ -26,6 +26,9 @@ namespace signalsim {
 struct SectionMetrics {
   SignalSection section;
   bool reached = false;                  ///< the front got to the section start
+  /// the blinker decided on the first row whose front is beyond the section start (whatever the
+  /// section asks: a blinker to the wrong side shows here); empty when not reached
+  std::optional<Blinker> blinker_at_start;
   std::optional<double> lead_distance;   ///< [m] blinker on before the start (front bumper); < 0 late
   std::optional<double> lead_time;       ///< [s]; < 0 late
   std::optional<double> time_on;         ///< [s] length of the blinker stretch serving the section

@@ -20,6 +20,7 @@
 
 #include <libsumo/libtraci.h>
 
+#include "session/gui_framing.hpp"
 #include "session/session_factory.hpp"
 #include "session/interruption.hpp"
 #include "session/session_impl.hpp"
@@ -120,13 +121,21 @@ class TraciSession final : public SessionImpl<LibtraciApi> {
     shots_left_ = kShotsPerPicture;  // the view at departure, replaced by the one at the first blinker
   }
 
+  // At the first blinker the view leaves the ego for the junction ahead (gui_framing.hpp): the
+  // picture answers where the blinker is for.
   void on_command(int signal_mask) override {
     if (config_.backend.kind != BackendKind::Gui) return;
     if (!blinker_seen_ && (signal_mask & kBlinkerMask) != 0) {
       blinker_seen_ = true;
       shots_left_ = kShotsPerPicture;
+      if (!config_.backend.screenshot.empty()) frame_view();
     }
     if (shots_left_ > 0) take_screenshot();
+  }
+
+  std::optional<GuiPicture> gui_picture() const override {
+    if (!picture_taken_) return std::nullopt;
+    return picture_;
   }
 
   // sumo-gui draws in its own thread, after the step: the simulation waits until the picture of
@@ -158,6 +167,18 @@ class TraciSession final : public SessionImpl<LibtraciApi> {
       throw SumoError("sumo-gui refused a screenshot: " + failure_reason(e));
     }
     screenshot_pending_ = true;
+    picture_taken_ = true;
+    picture_.time = time();  // the row whose command this picture follows (the last one taken is kept)
+  }
+
+  void frame_view() {
+    try {
+      picture_ = frame_junction_ahead(kView, ego_);
+    } catch (const libsumo::TraCIException&) {  // sumo-gui refused a view change: the view keeps the ego
+      picture_ = GuiPicture{};
+    } catch (const std::exception& e) {
+      throw SumoError("sumo-gui: framing the view failed: " + failure_reason(e));
+    }
   }
 
   void start_gui() {
@@ -287,6 +308,8 @@ class TraciSession final : public SessionImpl<LibtraciApi> {
   int shots_left_ = 0;
   bool blinker_seen_ = false;
   bool screenshot_pending_ = false;
+  bool picture_taken_ = false;
+  GuiPicture picture_;  // what the kept screenshot shows
 };
 
 }  // namespace

@@ -42,6 +42,18 @@ struct StandingVehicle {
   double length = 4.5;  ///< [m]; width, as SUMO's DEFAULT_VEHTYPE, 1.8 m
 };
 
+/// gui: what the kept screenshot shows (docs/outputs.md "gui.png").
+struct GuiPicture {
+  /// [s] the simulation time of the row whose command the picture follows (its timeline.csv row)
+  double time = 0.0;
+  /// the junction the view is framed on (the one ahead of the ego at its first blinker, SUMO's id);
+  /// empty: the view tracks the ego (at departure, or with no junction ahead)
+  std::string junction;
+  std::string light;  ///< the light ahead framed with it (TraCI getNextTLS, within reach); empty: none
+  /// [m] the view's extent as sumo-gui reports it after framing (GUI.getBoundary): x_min, y_min, x_max, y_max
+  std::vector<double> view;
+};
+
 /// Which SUMO the session runs on.
 enum class BackendKind { Embedded, Gui, Connect };
 std::string_view to_string(BackendKind kind);
@@ -262,6 +274,9 @@ class SumoSession {
 
   /// Collisions involving the ego so far.
   virtual int ego_collisions() const = 0;
+
+  /// gui: what the kept screenshot shows; none without a screenshot (other back-ends).
+  virtual std::optional<GuiPicture> gui_picture() const { return std::nullopt; }
 
  protected:
   SumoSession() = default;

@@ -65,7 +65,6 @@ DriverRun finished(const std::string& driver, const RunRecord& rec, const std::s
   for (const OffPlanStretch& o : rec.off_plan)
     off_plan.push_back({{"lane", o.lane}, {"planned_lane", o.planned_lane}, {"s_from", o.s_from}, {"s_to", o.s_to}});
   run.summary["off_plan"] = off_plan;
-  run.timeline = rec.rows;
   return run;
 }
 

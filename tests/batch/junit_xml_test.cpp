@@ -95,6 +95,36 @@ TEST(JUnitXml, CountsOutcomesAndTextReadBack) {
   EXPECT_EQ(attribute(skipped, "message"), "3 events match (note: the scenario has no expectations)");
 }
 
+TEST(JUnitXml, ClassnamePropertiesAndAttachmentLines) {
+  std::vector<JUnitCase> cases(2);
+  cases[0].name = "left";
+  cases[0].classname = "scenarios.cross";
+  cases[0].result = JUnitCase::Result::Failed;
+  cases[0].message = "expectations failed";
+  cases[0].system_out = "expectation failed: blinker_never: left at t=3.00 s";  // no final line feed
+  cases[0].properties = {{"seed", "7"}, {"parameter_file", "a.yaml"}, {"parameter_file", "b <&>.yaml"}};
+  cases[0].attachments = {"out/runs/0000-left/plots/blinker.png", "out/runs/0000-left/gui.png"};
+  cases[1].name = "right";
+  const pugi::xml_document doc = parsed(junit_xml("signalsim batch", cases, 1.0));
+  const pugi::xml_node suite = doc.child("testsuites").child("testsuite");
+  const pugi::xml_node failed = suite.find_child_by_attribute("testcase", "name", "left");
+  const pugi::xml_node passed = suite.find_child_by_attribute("testcase", "name", "right");
+  EXPECT_EQ(attribute(failed, "classname"), "scenarios.cross");
+  EXPECT_EQ(attribute(passed, "classname"), "signalsim batch") << "no classname of its own: the suite's name";
+  EXPECT_EQ(std::string(failed.first_child().name()), "properties") << "<properties> first in a test case";
+  std::vector<std::pair<std::string, std::string>> properties;
+  for (const pugi::xml_node& p : failed.child("properties").children("property"))
+    properties.emplace_back(attribute(p, "name"), attribute(p, "value"));
+  EXPECT_EQ(properties, cases[0].properties);
+  // Each attachment a whole line of its own, after the text (which gets the line feed it lacked).
+  EXPECT_STREQ(failed.child("system-out").text().get(),
+               "expectation failed: blinker_never: left at t=3.00 s\n"
+               "[[ATTACHMENT|out/runs/0000-left/plots/blinker.png]]\n"
+               "[[ATTACHMENT|out/runs/0000-left/gui.png]]\n");
+  EXPECT_FALSE(passed.child("properties"));
+  EXPECT_FALSE(passed.child("system-out"));
+}
+
 TEST(JUnitXml, SpecialCharactersGiveWellFormedXml) {
   std::vector<JUnitCase> cases(1);
   cases[0].name = "x<y & \"z\" 'q'\x01\x1f>";

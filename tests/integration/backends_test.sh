@@ -3,7 +3,8 @@
 # and --connect to a sumo started here with --remote-port on 127.0.0.1 that a second TraCI client
 # (SUMO's Python traci, sumo-tools) steps as client 1. Blinker events equal within 0.5 m (they are
 # identical), timelines and summaries (but for the `sumo` block) identical; the gui screenshot shows
-# the ego with its left blinker; the other client's simulation goes on after the ego arrived.
+# the ego with its left blinker, framed on the junction ahead, captioned from its timeline row; the
+# other client's simulation goes on after the ego arrived.
 # Every service started here (Xvfb, sumo, the Python client) is stopped by its PID.
 # usage: backends_test.sh SIGNALSIM_BINARY SOURCE_DIR
 set -u
@@ -90,10 +91,41 @@ connect() {
 gui() {
   local name=$1 scenario=$2
   DISPLAY=$display "$bin" run "$scenario" --out "$work/$name" --gui --quiet || fail "$name: --gui exit code $?"
+  "$py" - "$work/$name" "$src" <<'PY' || fail "$name: the screenshot is not framed on the junction ahead or its caption is not the run's"
+# The caption: the timeline row whose command the kept picture follows (the second of the two shots
+# from the first row with a blinker bit in sumo_signals), its blinker, source and the judge's decision;
+# the view framed on the junction ahead: its shape (from the net, sumolib) and the ego inside the view.
+import csv, json, sys
+sys.path.insert(0, "/usr/share/sumo/tools")
+import sumolib
+from PIL import Image
+run = sys.argv[1]
+rows = list(csv.DictReader(open(run + "/timeline.csv")))
+first = next(k for k, r in enumerate(rows) if r["sumo_signals"] and int(r["sumo_signals"]) & 7)
+row = rows[first + 1]
+im = Image.open(run + "/gui.png")
+info = im.info
+assert info.get("signalsim:time") == row["time"], (info.get("signalsim:time"), row["time"])
+caption = info["Description"]
+for fact in (f"t = {row['time']} s", f"blinker: {row['blinker']} (source: {row['blinker_source']})",
+             f"light {row['tl_id']}: state {row['tl_state']}", f"decided {row['tl_decision']}"):
+    assert fact in caption, (fact, caption)
+junction = info["signalsim:junction"]
+assert junction, info
+summary = json.load(open(run + "/summary.json"))
+net = sumolib.net.readNet(summary["net"] if summary["net"].startswith("/") else sys.argv[2] + "/" + summary["net"])
+x0, y0, x1, y1 = (float(v) for v in info["signalsim:view"].split(","))
+for x, y in net.getNode(junction).getShape() + [(float(row["x"]), float(row["y"]))]:
+    assert x0 - 0.5 <= x <= x1 + 0.5 and y0 - 0.5 <= y <= y1 + 0.5, ((x, y), (x0, y0, x1, y1))
+assert x1 - x0 < 200 and y1 - y0 < 200, "the view is not close on the junction"
+width, height = im.size
+strip = im.convert("RGB").crop((0, height - 64, width, height))
+assert sum(1 for p in strip.getdata() if p == (255, 255, 255)) > 0.8 * width * 64, "no caption strip"
+PY
   "$py" - "$work/$name/gui.png" <<'PY' || fail "$name: the screenshot does not show the ego with its left blinker"
 import sys
 import matplotlib.image as image
-a = image.imread(sys.argv[1])
+a = image.imread(sys.argv[1])[:-64]  # the picture above the caption strip
 r, g, b = a[..., 0], a[..., 1], a[..., 2]
 ego = (r > 0.8) & (g < 0.3) & (b > 0.8)                  # signalsim colours the ego magenta in the gui
 blinker = (r > 0.8) & (g > 0.5) & (g < 0.9) & (b < 0.3)  # sumo-gui's orange blinker lights

@@ -6,15 +6,20 @@ binary finds python/signalsim-plot in its source tree), then checks, against wha
 details and lane_changes, events.csv, timeline.csv, the net), the data behind:
   - blinker.png: the decided blinker's segments and sources (a lane change handing over to a turn),
     the required-lead marker, legend entries only for what is drawn (hazard only when used), no
-    picture for a route without sections where no blinker came on
+    picture for a route without sections where no blinker came on, no two labels overlapping on a
+    roundabout route whose labels crowd (they do when left where they are first put)
+  - the net: read with sumolib (SUMO's tools), the plot package has no XML reader of its own
   - lateral.png: planned and measured series, lane-change phases and marks, obstacles
   - speed.png: the jerk series from the accel column, the lane speed limit from the net, the planned
     speed and what set it (a light stop among them), where SUMO fell short of the plan behind a leader
     (named once per stretch), the speed axis fitted to the speeds drawn (not to a large max_speed),
     and a timeline without the plan columns still drawn
-  - dilemma.png: only for a light where a yellow or red was met, x range covering where it was met
+  - dilemma.png: only for a light where a yellow or red was met, x range covering where it was met,
+    the judge's curves exactly as the run wrote them (judge_curves.csv), none without the file
   - the sweep heat map: colour normalisation centred on 0 for a lead distance, failed and errored
-    cells marked, the averaged key named, the unit on the colour bar, the short file name
+    cells marked, the averaged key named, the unit on the colour bar, the short file name; a small
+    late value tinted and written apart from 0; the blinker at the section start per cell and a
+    blinker to the wrong side marked (a results.csv written here)
 usage: plot_test.py SIGNALSIM_BINARY SOURCE_DIR  (exit 77: no matplotlib, skipped)
 """
 import csv
@@ -46,7 +51,7 @@ def setUpModule():
     env = {k: v for k, v in os.environ.items() if k not in ("SIGNALSIM_PLOT_TOOL", "SIGNALSIM_DATA_DIR")}
     runs = {name: (os.path.join(SRC, "scenarios", name + ".yaml"),) for name in (
         "lane_change_then_left", "lane_change_approval_delay", "avoidance_left", "pull_out_backward_hazard",
-        "tl_yellow_pass")}
+        "tl_yellow_pass", "roundabout_after_junction_de_left_exit1")}
     # a red light with a max_speed far over the lane limits; a taken-over vehicle behind SUMO's trip7
     runs["red_light_max_speed_40"] = (os.path.join(SRC, "scenarios", "tl_red_stop_then_go.yaml"), "--set",
                                       "ego.max_speed=40")
@@ -154,6 +159,26 @@ class Blinker(unittest.TestCase):
         self.assertNotIn("blinker.png", pictures("tl_yellow_pass"))
         self.assertIn("blinker.png", pictures("lane_change_then_left"))
 
+    def test_roundabout_labels_do_not_overlap(self):
+        import matplotlib.pyplot as plt
+        from signalsim_plot.blinker import blinker_data, blinker_figure
+        from signalsim_plot.labels import overlapping_pairs
+        _, timeline, _, summary, metrics, _ = load("roundabout_after_junction_de_left_exit1")
+        data = blinker_data(timeline, summary, metrics)
+        crowded, _, texts = blinker_figure(data, summary, separate=False)
+        self.assertTrue(overlapping_pairs(crowded, texts), "the route's labels do not crowd: the test shows nothing")
+        plt.close(crowded)
+        fig, ax, texts = blinker_figure(data, summary)
+        self.assertEqual(overlapping_pairs(fig, texts), [], [t.get_text() for t in texts])
+        lo, hi = ax.get_ylim()  # every label inside the axes
+        renderer = fig.canvas.get_renderer()
+        inside = ax.get_window_extent(renderer)
+        for t in texts:
+            box = t.get_window_extent(renderer)
+            self.assertTrue(inside.y0 - 1 <= box.y0 and box.y1 <= inside.y1 + 1, t.get_text())
+        plt.close(fig)
+        self.assertIn("blinker.png", pictures("roundabout_after_junction_de_left_exit1"))
+
 
 class Lateral(unittest.TestCase):
     def test_planned_and_measured_series(self):
@@ -227,6 +252,21 @@ class Speed(unittest.TestCase):
         self.assertAlmostEqual(max(abs(j) for _, j in data["jerk"]), metrics["max_jerk"], delta=0.01)
         self.assertGreater(metrics["max_jerk"], 0.5)
         self.assertEqual(len(data["jerk_s"]), len(data["jerk"]))
+
+    def test_net_read_with_sumolib(self):
+        import signalsim_plot.net as net_module
+        self.assertIsNotNone(net_module.sumolib_module())
+        plot_dir = os.path.join(SRC, "python", "signalsim_plot")
+        for name in os.listdir(plot_dir):  # no XML reader of its own
+            if name.endswith(".py"):
+                with open(os.path.join(plot_dir, name)) as f:
+                    self.assertNotIn("xml.etree", f.read(), name)
+        _, _, _, _, _, inputs = load("lane_change_then_left")
+        lane = inputs.net.lanes[":C_0_0"] if ":C_0_0" in inputs.net.lanes else None
+        self.assertIsNotNone(lane)
+        self.assertTrue(lane.internal)
+        x, y = lane.shape[-1]
+        self.assertAlmostEqual(lane.position_of(x, y), lane.length, places=3)
 
     def test_lane_speed_limit_from_the_net(self):
         from signalsim_plot.speed import speed_data
@@ -353,14 +393,14 @@ class Speed(unittest.TestCase):
 
 class Dilemma(unittest.TestCase):
     def test_only_a_light_where_yellow_or_red_was_met(self):
-        from signalsim_plot.dilemma import dilemma_data
-        _, timeline, _, summary, metrics, _ = load("lane_change_then_left")
+        from signalsim_plot.dilemma import dilemma_data, read_curves
+        d, timeline, _, summary, metrics, _ = load("lane_change_then_left")
         self.assertTrue(any(r["tl_id"] == "C" for r in timeline))
         self.assertTrue(all(r["tl_state"] in ("g", "G", "") for r in timeline))
-        self.assertIsNone(dilemma_data(timeline, summary, metrics))
+        self.assertIsNone(dilemma_data(timeline, summary, metrics, read_curves(d)))
         self.assertNotIn("dilemma.png", pictures("lane_change_then_left"))
-        _, timeline, _, summary, metrics, _ = load("tl_yellow_pass")
-        data = dilemma_data(timeline, summary, metrics)
+        d, timeline, _, summary, metrics, _ = load("tl_yellow_pass")
+        data = dilemma_data(timeline, summary, metrics, read_curves(d))
         (panel,) = data["panels"]
         self.assertEqual(panel["light"], "C")
         d, v, state, _, t = panel["points"][panel["first_stop_state"]]
@@ -374,6 +414,36 @@ class Dilemma(unittest.TestCase):
         self.assertGreaterEqual(hi, max(data["curve"]["yellow"]))
         self.assertIn("y", panel["met"])
         self.assertIn("dilemma.png", pictures("tl_yellow_pass"))
+
+    def test_curves_as_the_run_wrote_them(self):
+        from signalsim_plot.dilemma import dilemma_data
+        d, timeline, _, summary, metrics, _ = load("tl_yellow_pass")
+        with open(os.path.join(d, "judge_curves.csv"), newline="") as f:
+            rows = list(csv.DictReader(f))
+        self.assertEqual(list(rows[0]), ["speed", "judge_distance", "yellow_lamp_line"])
+        self.assertEqual((rows[0]["speed"], rows[0]["judge_distance"]), ("0.000", "0.000"))
+        data = dilemma_data(timeline, summary, metrics, None)
+        self.assertIsNone(data["curve"])  # without the file: no curves, nothing computed here
+        from signalsim_plot.dilemma import read_curves
+        data = dilemma_data(timeline, summary, metrics, read_curves(d))
+        kept = [r for r in rows if float(r["speed"]) <= data["v_top"] + 1e-9]
+        self.assertEqual(data["curve"]["v"], [float(r["speed"]) for r in kept])
+        self.assertEqual(data["curve"]["judge"], [float(r["judge_distance"]) for r in kept])
+        self.assertEqual(data["curve"]["yellow"], [float(r["yellow_lamp_line"]) for r in kept])
+        # the judge's own number on a row with zero acceleration lies on the written curve (interpolated
+        # between its 0.1 m/s points)
+        speeds, judge = [float(c["speed"]) for c in rows], [float(c["judge_distance"]) for c in rows]
+        checked = 0
+        for r in timeline:
+            if r["judge_distance"] and float(r["accel"]) == 0.0:
+                v = float(r["speed"])
+                k = min(int(v / 0.1), len(speeds) - 2)
+                on_curve = judge[k] + (judge[k + 1] - judge[k]) * (v - speeds[k]) / (speeds[k + 1] - speeds[k])
+                self.assertAlmostEqual(on_curve, float(r["judge_distance"]), delta=0.01, msg=r)
+                checked += 1
+        self.assertGreater(checked, 0, "no judged row at zero acceleration")
+        self.assertFalse(os.path.exists(os.path.join(RUNS["roundabout_after_junction_de_left_exit1"],
+                                                     "judge_curves.csv")), "a route without a light has none")
 
 
 class HeatMap(unittest.TestCase):
@@ -412,6 +482,40 @@ class HeatMap(unittest.TestCase):
                 i, j = data["ys"].index(r["ego.max_speed"]), data["xs"].index(r["turn_signal_search_time"])
                 self.assertAlmostEqual(panel["grid"][i, j], float(r["turn1.lead_distance"]), places=6)
                 self.assertEqual(panel["counts"][i, j], 1)
+
+    def test_small_late_values_and_the_blinker_at_the_start(self):
+        from signalsim_plot.sweep_plots import format_value, heatmap_data
+        # a roundabout exit swept over the exit rule: right asked; one run with the left blinker (no lead)
+        path = os.path.join(WORK, "wrong_side", "results.csv")
+        os.makedirs(os.path.dirname(path), exist_ok=True)
+        with open(path, "w", newline="") as f:
+            w = csv.writer(f)
+            w.writerow(["run", "scenario", "file", "ego.max_speed", "turn_signal_search_time", "status",
+                        "roundabout_exit1.id", "roundabout_exit1.blinker", "roundabout_exit1.blinker_at_start",
+                        "roundabout_exit1.lead_distance"])
+            w.writerow([0, "r", "r.yaml", "8", "1", "passed", "RE", "right", "right", "12.5"])
+            w.writerow([1, "r", "r.yaml", "8", "3", "passed", "RE", "right", "right", "-0.2"])
+            w.writerow([2, "r", "r.yaml", "10", "1", "failed", "RE", "right", "left", ""])
+            w.writerow([3, "r", "r.yaml", "10", "3", "passed", "RE", "right", "right", "0"])
+        data = heatmap_data(path, "roundabout_exit1.lead_distance", "turn_signal_search_time", "ego.max_speed")
+        self.assertEqual(data["section"], "roundabout_exit1")
+        (panel,) = data["panels"]
+        self.assertEqual(panel["directions"][1][0], {"left": 1})
+        self.assertEqual(panel["asked"][1][0], "right")
+        self.assertEqual(data["wrong"], [(0, 1, 0)])
+        norm = data["norm"]
+        self.assertAlmostEqual(float(norm(0.0)), 0.5)
+        self.assertLess(float(norm(-0.2)), 0.45)  # tinted red, not the white of 0
+        self.assertGreater(float(norm(0.2)), 0.55)
+        self.assertAlmostEqual(float(norm(-12.5)), 0.0)
+        self.assertEqual((format_value(-0.004), format_value(0.0), format_value(-0.2)), ("-0.004", "0", "-0.20"))
+        # the real sweep: every finished run's turn1 blinker at the start, from results.csv
+        data = heatmap_data(os.path.join(RUNS["sweep"], "results.csv"), "turn1.lead_distance",
+                            "turn_signal_search_time", "ego.max_speed")
+        self.assertEqual(data["section"], "turn1")
+        (panel,) = data["panels"]
+        self.assertTrue(all(d == {"left": 1} for row in panel["directions"] for d in row), panel["directions"])
+        self.assertEqual(data["wrong"], [])
 
     def test_boolean_share_and_sequential_map(self):
         from signalsim_plot.sweep_plots import file_name, heatmap_data
