@@ -56,14 +56,9 @@ struct CheckOptions {
   SutFlags suts;
 };
 
-std::string cell(const ResultRow& row, const std::string& column) {
-  const auto it = row.cells.find(column);
-  return it == row.cells.end() ? std::string() : it->second;
-}
-
 // Compares (or updates) one run; prints its verdict and returns its JUnit case.
 JUnitCase check_one(const RunSpec& run, const ResultRow* row, const CheckOptions& o, const std::string& out_dir) {
-  const std::string run_dir = row ? (fs::path(out_dir) / cell(*row, "run_dir")).string() : std::string();
+  const std::string run_dir = row ? (fs::path(out_dir) / row_cell(*row, "run_dir")).string() : std::string();
   JUnitCase c = junit_case(run, row ? summary_or_null(run_dir) : nlohmann::ordered_json());
   const std::string golden = (fs::path(o.golden_dir) / (c.name + ".events.csv")).string();
   auto verdict = [&](JUnitCase::Result result, const std::string& message, const std::string& details = "") {
@@ -81,8 +76,8 @@ JUnitCase check_one(const RunSpec& run, const ResultRow* row, const CheckOptions
     return c;
   };
   if (!row) return verdict(JUnitCase::Result::Error, "the run did not finish");
-  c.time = std::atof(cell(*row, "wall_time").c_str());
-  if (cell(*row, "status") == "error") return verdict(JUnitCase::Result::Error, "run error: " + cell(*row, "error"));
+  c.time = std::atof(row_cell(*row, "wall_time").c_str());
+  if (row_cell(*row, "status") == "error") return verdict(JUnitCase::Result::Error, "run error: " + row_cell(*row, "error"));
 
   const std::string events_path = (fs::path(run_dir) / run_files::kEvents).string();
   std::vector<TimelineEvent> events;
@@ -97,16 +92,16 @@ JUnitCase check_one(const RunSpec& run, const ResultRow* row, const CheckOptions
   } catch (const std::exception& e) {
     return verdict(JUnitCase::Result::Error, e.what());
   }
-  const bool no_expectations = cell(*row, "status") == "no_expectations";
+  const bool no_expectations = row_cell(*row, "status") == "no_expectations";
   // A failed run: its failed expectations and, when any, how many law verdicts failed (summary.json law).
-  const std::string law_failed = cell(*row, "law_failed");
+  const std::string law_failed = row_cell(*row, "law_failed");
   const bool law_fails = !law_failed.empty() && law_failed != "0";
-  const std::string expectations_part = !cell(*row, "failed_expectations").empty() || !law_fails
-                                            ? "expectations failed: " + cell(*row, "failed_expectations")
+  const std::string expectations_part = !row_cell(*row, "failed_expectations").empty() || !law_fails
+                                            ? "expectations failed: " + row_cell(*row, "failed_expectations")
                                             : "";
   const std::string law_part = law_fails ? "law verdicts failed: " + law_failed : "";
   const std::string failed_expectations =
-      cell(*row, "status") == "failed"
+      row_cell(*row, "status") == "failed"
           ? expectations_part + (!expectations_part.empty() && law_fails ? "; " : "") + law_part
           : "";
   const bool expectations_fail = !failed_expectations.empty() && !o.ignore_expectations;

@@ -18,11 +18,6 @@ namespace signalsim::app {
 namespace fs = std::filesystem;
 namespace {
 
-std::string cell(const ResultRow& row, const std::string& column) {
-  const auto it = row.cells.find(column);
-  return it == row.cells.end() ? std::string() : it->second;
-}
-
 std::string text_of(const nlohmann::ordered_json& j, const char* key) {
   return j.is_object() && j.contains(key) && j[key].is_string() ? j[key].get<std::string>() : std::string();
 }
@@ -146,7 +141,7 @@ std::vector<JUnitCase> batch_junit_cases(const std::vector<RunSpec>& runs, const
   for (const RunSpec& run : runs) {
     const auto it = rows.find(run.index);
     const std::string run_dir =
-        it == rows.end() ? std::string() : (fs::path(out_dir) / cell(it->second, "run_dir")).string();
+        it == rows.end() ? std::string() : (fs::path(out_dir) / row_cell(it->second, "run_dir")).string();
     const nlohmann::ordered_json summary = run_dir.empty() ? nlohmann::ordered_json() : summary_or_null(run_dir);
     JUnitCase c = junit_case(run, summary);
     if (it == rows.end()) {
@@ -154,16 +149,16 @@ std::vector<JUnitCase> batch_junit_cases(const std::vector<RunSpec>& runs, const
       c.message = "the run did not finish";
     } else {
       const ResultRow& row = it->second;
-      c.time = std::atof(cell(row, "wall_time").c_str());
-      const std::string status = cell(row, "status");
+      c.time = std::atof(row_cell(row, "wall_time").c_str());
+      const std::string status = row_cell(row, "status");
       if (summary.is_object()) c.system_out = failures_of(summary);
       if (status == "error") {
         c.result = JUnitCase::Result::Error;
-        c.message = "run error: " + cell(row, "error");
+        c.message = "run error: " + row_cell(row, "error");
       } else if (status == "failed") {
         c.result = JUnitCase::Result::Failed;
-        const std::string law = cell(row, "law_failed");
-        c.message = "expectations failed: " + cell(row, "failed_expectations") +
+        const std::string law = row_cell(row, "law_failed");
+        c.message = "expectations failed: " + row_cell(row, "failed_expectations") +
                     (!law.empty() && law != "0" ? "; law verdicts failed: " + law : std::string());
       } else if (status == "no_expectations") {
         c.result = JUnitCase::Result::Skipped;

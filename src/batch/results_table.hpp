@@ -19,6 +19,12 @@ struct ResultRow {
 };
 using ResultRows = std::map<std::size_t, ResultRow>;  ///< by run index
 
+/// The row's cell in `column`, empty when the row has none.
+inline std::string row_cell(const ResultRow& row, const std::string& column) {
+  const auto it = row.cells.find(column);
+  return it == row.cells.end() ? std::string() : it->second;
+}
+
 /// True for a column results.csv fills itself (run, scenario, file, status, ..., wall_time, error):
 /// a swept key may not take such a name.
 bool is_fixed_result_column(const std::string& name);

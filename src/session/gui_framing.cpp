@@ -66,17 +66,32 @@ GuiPicture frame_junction_ahead(const std::string& view, const std::string& ego)
   picture.junction = lane.rfind(':', 0) == 0 ? junction_of_internal_lane(lane) : junction_at_end_of(lane);
   if (picture.junction.empty()) return picture;  // the route ends on this lane: the view keeps the ego
   const libsumo::TraCIPosition at = libtraci::Vehicle::getPosition(ego);
-  Box box{at.x, at.y, at.x, at.y};
   std::vector<std::string> junctions = {picture.junction};
   if (const std::string lit = light_junction_ahead(ego, picture.light); !lit.empty() && lit != picture.junction)
     junctions.push_back(lit);
+  std::vector<libsumo::TraCIPosition> points = {at};
   for (const std::string& junction : junctions)
-    for (const libsumo::TraCIPosition& p : libtraci::Junction::getShape(junction).value) box.add(p.x, p.y);
+    for (const libsumo::TraCIPosition& p : libtraci::Junction::getShape(junction).value) points.push_back(p);
+  Box box{at.x, at.y, at.x, at.y};
+  for (const libsumo::TraCIPosition& p : points) box.add(p.x, p.y);
   box.widen(kMargin, kMinExtent);
+  const double cx = (box.x_min + box.x_max) / 2, cy = (box.y_min + box.y_max) / 2;
+  const double width = box.x_max - box.x_min, height = box.y_max - box.y_min;
   libtraci::GUI::trackVehicle(view, "");  // "" stops tracking: the view stays where it is set
-  libtraci::GUI::setBoundary(view, box.x_min, box.y_min, box.x_max, box.y_max);
-  const libsumo::TraCIPositionVector shown = libtraci::GUI::getBoundary(view);
-  for (const libsumo::TraCIPosition& corner : shown.value) picture.view.insert(picture.view.end(), {corner.x, corner.y});
+  // The zoom that fits the box: the extent shown at the present zoom (getBoundary right after a
+  // setZoom; after setBoundary sumo-gui 1.15 reports the box asked for, not what it draws, about twice
+  // as wide) scales inversely with the zoom. (A turned view would fit the approach along the picture's
+  // long side, but sumo-gui 1.15 leaves out what lies outside the unturned view.)
+  libtraci::GUI::setOffset(view, cx, cy);
+  const double zoom = libtraci::GUI::getZoom(view);
+  libtraci::GUI::setZoom(view, zoom);
+  std::vector<libsumo::TraCIPosition> seen = libtraci::GUI::getBoundary(view).value;
+  if (seen.size() == 2) {
+    const double closer = std::min((seen[1].x - seen[0].x) / width, (seen[1].y - seen[0].y) / height);
+    libtraci::GUI::setZoom(view, zoom * closer);
+    seen = libtraci::GUI::getBoundary(view).value;
+  }
+  for (const libsumo::TraCIPosition& corner : seen) picture.view.insert(picture.view.end(), {corner.x, corner.y});
   return picture;
 }
 

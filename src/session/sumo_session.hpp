@@ -50,7 +50,7 @@ struct GuiPicture {
   /// empty: the view tracks the ego (at departure, or with no junction ahead)
   std::string junction;
   std::string light;  ///< the light ahead framed with it (TraCI getNextTLS, within reach); empty: none
-  /// [m] the view's extent as sumo-gui reports it after framing (GUI.getBoundary): x_min, y_min, x_max, y_max
+  /// [m] the net area the picture shows (GUI.getBoundary after framing): x_min, y_min, x_max, y_max
   std::vector<double> view;
 };
 

@@ -146,7 +146,7 @@ TEST(Comparison, OneRowPerItemAndDriverWithThatDriversMetrics) {
 
 TEST(Comparison, ARunThatDidNotFinishGivesAnErrorRowForEveryItem) {
   ScenarioComparison sc = both();
-  sc.runs[1] = DriverRun{"sumo", "error", "SUMO could not load the simulation", "runs/0000-x-sumo", {}, {}};
+  sc.runs[1] = DriverRun{"sumo", "error", "SUMO could not load the simulation", "runs/0000-x-sumo", {}};
   const auto rows = comparison_rows({sc});
   ASSERT_EQ(rows.size(), 8u);
   for (std::size_t i = 1; i < rows.size(); i += 2) {
@@ -161,8 +161,8 @@ TEST(Comparison, ARunThatDidNotFinishGivesAnErrorRowForEveryItem) {
   // Neither run finished and the route has no items: still one row per driver.
   ScenarioComparison empty;
   empty.scenario = "empty";
-  empty.runs = {DriverRun{"signalsim", "error", "timed out", "", {}, {}},
-                DriverRun{"sumo", "passed", "", "", {{"expectations", nlohmann::ordered_json::array()}}, {}}};
+  empty.runs = {DriverRun{"signalsim", "error", "timed out", "", {}},
+                DriverRun{"sumo", "passed", "", "", {{"expectations", nlohmann::ordered_json::array()}}}};
   const auto none = comparison_rows({empty});
   ASSERT_EQ(none.size(), 2u);
   EXPECT_EQ(cells(none[0])["status"], "error");

@@ -263,7 +263,6 @@ TEST(SutOutputs, CompareScreenHasOneColumnPerDriverInRunOrder) {
     run.summary["status"] = "passed";
     run.summary["metrics"] = metrics_json(scenario(), sut_route(), r);
     run.summary["expectations"] = nlohmann::ordered_json::array();
-    run.timeline = r.rows;
     sc.runs.push_back(std::move(run));
   }
   const std::string screen = comparison_screen({sc});
