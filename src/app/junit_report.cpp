@@ -157,9 +157,10 @@ std::vector<JUnitCase> batch_junit_cases(const std::vector<RunSpec>& runs, const
         c.message = "run error: " + row_cell(row, "error");
       } else if (status == "failed") {
         c.result = JUnitCase::Result::Failed;
-        const std::string law = row_cell(row, "law_failed");
-        c.message = "expectations failed: " + row_cell(row, "failed_expectations") +
-                    (!law.empty() && law != "0" ? "; law verdicts failed: " + law : std::string());
+        const std::string expectations = row_cell(row, "failed_expectations"), law = row_cell(row, "law_failed");
+        const std::string law_part = !law.empty() && law != "0" ? "law verdicts failed: " + law : "";
+        c.message = expectations.empty() ? law_part
+                                         : "expectations failed: " + expectations + (law_part.empty() ? "" : "; " + law_part);
       } else if (status == "no_expectations") {
         c.result = JUnitCase::Result::Skipped;
         c.message = "the scenario has no expectations: nothing was checked";

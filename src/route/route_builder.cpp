@@ -10,6 +10,7 @@
 #include "route/route_lanes.hpp"
 #include "route/turn_direction.hpp"
 #include "core/number_parsing.hpp"
+#include "net/internal_lane.hpp"
 
 namespace signalsim::sumo {
 namespace {
@@ -28,22 +29,6 @@ std::vector<TurnDirection> successor_directions(const NetIndex& net, const std::
     if (std::find(out.begin(), out.end(), d) == out.end()) out.push_back(d);
   }
   return out;
-}
-
-bool all_digits(std::string_view s) {
-  return !s.empty() && std::all_of(s.begin(), s.end(), [](unsigned char c) { return std::isdigit(c) != 0; });
-}
-
-/// ":<junction>_<edge>_<lane>" -> "<junction>": strips the last two "_<int>" groups (junction ids may
-/// contain '_', docs/behaviour.md §S2) and the leading ':'. Empty when the id has another form.
-std::string junction_of_internal_lane(std::string_view id) {
-  for (int group = 0; group < 2; ++group) {
-    const std::size_t cut = id.rfind('_');
-    if (cut == std::string_view::npos || !all_digits(id.substr(cut + 1))) return {};
-    id = id.substr(0, cut);
-  }
-  if (!id.empty() && id.front() == ':') id.remove_prefix(1);
-  return std::string(id);
 }
 
 /// A normal lane's params (its edge's, overlaid by its own) and its turn_signal_distance param.

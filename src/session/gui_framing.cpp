@@ -5,6 +5,8 @@
 
 #include <libsumo/libtraci.h>
 
+#include "net/internal_lane.hpp"
+
 namespace signalsim::sumo {
 namespace {
 
@@ -49,16 +51,6 @@ struct Box {
 };
 
 }  // namespace
-
-std::string junction_of_internal_lane(const std::string& lane) {
-  std::string id = lane.rfind(':', 0) == 0 ? lane.substr(1) : lane;
-  for (int part = 0; part < 2; ++part) {
-    const auto cut = id.rfind('_');
-    if (cut == std::string::npos || cut == 0) break;
-    id.erase(cut);
-  }
-  return id;
-}
 
 GuiPicture frame_junction_ahead(const std::string& view, const std::string& ego) {
   GuiPicture picture;

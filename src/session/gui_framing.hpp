@@ -9,9 +9,6 @@
 
 namespace signalsim::sumo {
 
-/// The junction of an internal lane id (":C_0_0" -> "C"; a junction id may hold underscores).
-std::string junction_of_internal_lane(const std::string& lane);
-
 /// Stops tracking `ego` in `view` and fits the view to hold the ego, the shape of the junction at the end of its lane (or
 /// the one it is on) and, when the next light ahead is within 80 m, that light's junction; at least
 /// 60 m across, 12 m of margin. Returns what it framed (junction, light, the extent sumo-gui reports

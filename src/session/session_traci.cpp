@@ -1,8 +1,9 @@
 // The TraCI back-ends, through libtraci (the libsumo API over a socket, docs/behaviour.md §S1):
 //   gui      signalsim starts sumo-gui on a free 127.0.0.1 port (--start --quit-on-end), connects
 //            (through the relay of traci_relay.hpp, without a time limit unless --traci-timeout
-//            gives one: a user may pause sumo-gui), colours the ego and tracks it in the view, and
-//            stops the program by its PID at the end;
+//            gives one: a user may pause sumo-gui), colours the ego and tracks it in the view (at
+//            its first blinker the view is framed on the junction ahead for the screenshot,
+//            gui_framing.hpp), and stops the program by its PID at the end;
 //   connect  signalsim attaches to a SUMO someone else started with --remote-port and --num-clients,
 //            through a relay that checks every answer and bounds every wait (traci_relay.hpp), takes
 //            its place in the stepping order (setOrder), checks the step length, and at the end

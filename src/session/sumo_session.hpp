@@ -68,7 +68,7 @@ struct BackendOptions {
   double traci_timeout = 30.0;
   int gui_delay_ms = 0;            ///< gui: sumo-gui's --delay between steps [ms]
   /// gui: a PNG of the view (TraCI GUI.screenshot) written here at the first step the ego's blinker
-  /// is on (or at the last step when it never is); empty: none.
+  /// is on, the view framed on the junction ahead (or at departure when it never is); empty: none.
   std::string screenshot;
   std::string sumo_gui_binary = "sumo-gui";
 };

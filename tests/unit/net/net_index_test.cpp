@@ -1,6 +1,7 @@
 // NetIndex::load on nets built by netconvert 1.15 (tests/data/nets) and on small hand-written files.
 #include "net/net_index.hpp"
 #include "net/net_file.hpp"
+#include "net/internal_lane.hpp"
 
 #include <sys/stat.h>
 
@@ -377,6 +378,14 @@ TEST(NetIndexErrors, TruncatedGzip) {
   const std::string path = scratch.write("cut.net.xml.gz", whole.substr(0, whole.size() / 2));
   const std::string message = load_error(path);
   EXPECT_THAT(message, HasSubstr(path + ": corrupt gzip data"));
+}
+
+TEST(InternalLaneIds, NameTheirJunctionWhateverItsUnderscores) {
+  EXPECT_EQ(junction_of_internal_lane(":C_0_0"), "C");
+  EXPECT_EQ(junction_of_internal_lane(":cluster_12_3_4_1"), "cluster_12_3");  // a joined junction's id
+  EXPECT_EQ(junction_of_internal_lane(":J_10_2"), "J");
+  EXPECT_EQ(junction_of_internal_lane("in_S_1"), "") << "a normal lane: no two number groups";
+  EXPECT_EQ(junction_of_internal_lane(":C_w0_0"), "") << "a walking area";
 }
 
 }  // namespace
