@@ -1,0 +1,62 @@
+"""Builds the report of an output folder: the pictures wanted (pictures.py), one page per run
+(run_page.py), then OUT/report.html (index_page.py). Each page is written whole (.tmp, renamed); run
+pages of runs no longer in the folder are removed."""
+import os
+
+from signalsim_plot.report import pictures
+from signalsim_plot.report.folder import Folder
+from signalsim_plot.report.index_page import index_page
+from signalsim_plot.report.run_page import run_page
+from signalsim_plot.report.runs import CHECK_STATUS, Run
+
+INDEX = "report.html"
+PAGES = os.path.join("report", "runs")
+
+
+def write_whole(path, text):
+    tmp = path + ".tmp"
+    with open(tmp, "w", encoding="utf-8") as f:
+        f.write(text)
+    os.replace(tmp, path)
+
+
+def row_status(folder, row):
+    case = folder.checks.get(row.get("file", ""))
+    if case:
+        return CHECK_STATUS.get(case.get("status", ""), row.get("status", ""))
+    return row.get("status", "") or ("" if folder.kind == "compare" else "error")
+
+
+def build(out_dir, all_pictures=False, jobs=0):
+    """Writes OUT/report.html and OUT/report/runs/*.html; returns (index path, {run_dir: picture error})."""
+    folder = Folder(out_dir)
+    wanted = {}
+    for row in folder.rows:
+        run_dir = folder.run_dir(row)
+        status = row_status(folder, row)
+        if folder.kind == "compare" and run_dir:  # no results.csv: the status is the summary's
+            from signalsim_plot.report.runs import read_summary
+            status = read_summary(os.path.join(out_dir, run_dir)).get("status", "error")
+        wanted[run_dir] = bool(run_dir) and pictures.wants_pictures(status, all_pictures)
+    failures = pictures.draw([os.path.join(out_dir, d) for d, w in wanted.items() if w], jobs)
+    os.makedirs(os.path.join(out_dir, PAGES), exist_ok=True)
+    runs, written = [], set()
+    for i, row in enumerate(folder.rows):
+        run_dir = folder.run_dir(row)
+        index = int(row["run"]) if str(row.get("run", "")).isdigit() else i
+        run = Run(out_dir, index, run_dir, row, keep_summary=True)
+        case = folder.checks.get(run.file)
+        if case:
+            run.apply_check(case)
+        page_path = os.path.join(out_dir, run.page())
+        write_whole(page_path, run_page(out_dir, run, run.summary, folder.swept,
+                                        failures.get(os.path.join(out_dir, run_dir)), wanted.get(run_dir, False)))
+        written.add(os.path.basename(page_path))
+        run.summary = None  # a sweep of thousands of runs holds one summary at a time
+        runs.append(run)
+    for stale in set(os.listdir(os.path.join(out_dir, PAGES))) - written:
+        if stale.endswith(".html"):
+            os.remove(os.path.join(out_dir, PAGES, stale))
+    index_path = os.path.join(out_dir, INDEX)
+    write_whole(index_path, index_page(folder, runs))
+    return index_path, failures
