@@ -38,7 +38,10 @@ Command add_batch_command(CLI::App& app) {
               // run_with_backend releases the held notes once the back-end is there to run them
               const BatchSettings settings = to_settings(o->batch, "out/batch", 300.0);
               const BackendRun run = run_with_backend(runs, settings, o->batch, o->backend);
-              return run.merged ? run.result.exit_code() : 0;
+              if (!run.merged) return 0;  // --no-wait: submitted; --collect merges later
+              write_command_facts(settings.out_dir, {"batch", o->paths, "", "", o->set, {}, settings.jobs});
+              return finish_with_report(run.result.exit_code(), run.result.interrupted ? "" : o->batch.report,
+                                        settings.out_dir, settings.jobs);
             } catch (const BatchInterrupted& e) {
               return report_interrupted(e.what());
             } catch (const std::exception& e) {

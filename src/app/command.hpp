@@ -35,5 +35,6 @@ Command add_compare_command(CLI::App& app);
 Command add_schema_command(CLI::App& app);
 Command add_run_chunk_command(CLI::App& app);
 Command add_worker_command(CLI::App& app);
+Command add_report_command(CLI::App& app);
 
 }  // namespace signalsim::app

@@ -22,6 +22,7 @@
 
 #include "app/batch_cli.hpp"
 #include "app/command.hpp"
+#include "app/html_report.hpp"
 #include "app/plot_tool.hpp"
 #include "app/override_flags.hpp"
 #include "app/sut_flags.hpp"
@@ -241,8 +242,11 @@ int compare(const CompareOptions& o) {
                 wall, csv.c_str(),
                 plotted == 0 ? (", " + (fs::path(settings.out_dir) / kPicture).string()).c_str() : " (no picture)");
   }
-  if (failed) return kExitFailed;
-  return plotted == 0 ? 0 : 3;
+  std::vector<std::string> overrides = o.set;
+  overrides.insert(overrides.end(), o.sut_set.begin(), o.sut_set.end());
+  write_command_facts(settings.out_dir, {"compare", o.paths, "", "", overrides, {}, settings.jobs});
+  return finish_with_report(failed ? kExitFailed : plotted == 0 ? 0 : kExitPicture, o.batch.report, settings.out_dir,
+                            settings.jobs);
 }
 
 }  // namespace
