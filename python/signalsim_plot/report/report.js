@@ -68,4 +68,5 @@
   window.addEventListener("hashchange", readHash);
   readHash();
   document.body.dataset.rendered = "yes";  // the table is built (read by tests)
+  document.body.dataset.renderedMs = String(Math.round(performance.now()));  // since navigation (bench)
 })();
