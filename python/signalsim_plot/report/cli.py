@@ -19,8 +19,10 @@ def main(argv):
     except InputError as e:
         print(f"signalsim-plot: {e}", file=sys.stderr)
         return 2
+    from signalsim_plot.report.pictures import NOT_FINISHED
     for run_dir, message in sorted(failures.items()):
-        print(f"signalsim-plot: warning: {run_dir}: pictures not drawn: {message}", file=sys.stderr)
+        if message != NOT_FINISHED:
+            print(f"signalsim-plot: warning: {run_dir}: pictures not drawn: {message}", file=sys.stderr)
     if not args.quiet:
         print(index)
     return 0

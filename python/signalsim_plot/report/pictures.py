@@ -4,6 +4,7 @@ import multiprocessing
 import os
 
 PICTURES = ("blinker.png", "speed.png", "lateral.png", "dilemma.png")
+NOT_FINISHED = "no timeline.csv (the run did not finish)"  # said on the page, not warned about
 
 
 def wants_pictures(status, all_runs):
@@ -15,7 +16,7 @@ def draw_one(run_dir):
     from signalsim_plot.cli import InputError
     from signalsim_plot import run_plots
     if not os.path.isfile(os.path.join(run_dir, "timeline.csv")):
-        return run_dir, "no timeline.csv (the run did not finish)"
+        return run_dir, NOT_FINISHED
     try:
         run_plots.plot_run(run_dir, os.path.join(run_dir, "plots"))
         return run_dir, None
@@ -39,6 +40,13 @@ def draw(run_dirs, jobs):
 
 
 def existing(run_dir):
-    """The pictures present in RUN_DIR/plots, in the page's order."""
+    """The pictures in RUN_DIR/plots, in the page's order, that are not older than the run's summary.json:
+    a picture of an earlier run in the same folder (a batch rewrites the run files, not plots/) is not
+    this run's."""
     plots = os.path.join(run_dir, "plots")
-    return [p for p in PICTURES if os.path.isfile(os.path.join(plots, p))]
+    try:
+        run_time = os.path.getmtime(os.path.join(run_dir, "summary.json"))
+    except OSError:
+        return []
+    return [p for p in PICTURES if os.path.isfile(os.path.join(plots, p))
+            and os.path.getmtime(os.path.join(plots, p)) >= run_time]
