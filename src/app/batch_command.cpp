@@ -41,7 +41,7 @@ Command add_batch_command(CLI::App& app) {
               if (!run.merged) return 0;  // --no-wait: submitted; --collect merges later
               write_command_facts(settings.out_dir, {"batch", o->paths, "", "", o->set, {}, settings.jobs});
               return finish_with_report(run.result.exit_code(), run.result.interrupted ? "" : o->batch.report,
-                                        settings.out_dir, settings.jobs);
+                                        settings.out_dir, settings.jobs, settings.quiet);
             } catch (const BatchInterrupted& e) {
               return report_interrupted(e.what());
             } catch (const std::exception& e) {

@@ -284,7 +284,7 @@ Command add_check_command(CLI::App& app) {
               write_check_record(settings.out_dir, cases);
               write_command_facts(settings.out_dir, {"check", o->paths, "", o->golden_dir, o->set, {}, settings.jobs});
               const int code = errors > 0 ? kExitRunErrors : failed > 0 ? kExitFailed : 0;
-              return finish_with_report(code, o->batch.report, settings.out_dir, settings.jobs);
+              return finish_with_report(code, o->batch.report, settings.out_dir, settings.jobs, o->batch.quiet);
             } catch (const BatchInterrupted& e) {
               return report_interrupted(e.what());
             } catch (const std::exception& e) {

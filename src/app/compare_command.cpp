@@ -246,7 +246,7 @@ int compare(const CompareOptions& o) {
   overrides.insert(overrides.end(), o.sut_set.begin(), o.sut_set.end());
   write_command_facts(settings.out_dir, {"compare", o.paths, "", "", overrides, {}, settings.jobs});
   return finish_with_report(failed ? kExitFailed : plotted == 0 ? 0 : kExitPicture, o.batch.report, settings.out_dir,
-                            settings.jobs);
+                            settings.jobs, settings.quiet);
 }
 
 }  // namespace

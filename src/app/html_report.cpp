@@ -127,18 +127,18 @@ void write_check_record(const std::string& out_dir, const std::vector<JUnitCase>
   write_or_warn(fs::path(out_dir) / kCheckRecord, j.dump(2) + "\n");
 }
 
-int make_html_report(const std::string& out_dir, bool all_pictures, int jobs) {
+int make_html_report(const std::string& out_dir, bool all_pictures, int jobs, bool quiet) {
   std::vector<std::string> args = {"report", out_dir, "--quiet"};
   if (all_pictures) args.push_back("--all");
   if (jobs > 0) args.insert(args.end(), {"--jobs", std::to_string(jobs)});
   const int code = run_plot_tool(args);
-  if (code == 0) std::printf("report: %s\n", (fs::path(out_dir) / kReportPage).string().c_str());
+  if (code == 0 && !quiet) std::printf("report: %s\n", (fs::path(out_dir) / kReportPage).string().c_str());
   return code;
 }
 
-int finish_with_report(int code, const std::string& mode, const std::string& out_dir, int jobs) {
+int finish_with_report(int code, const std::string& mode, const std::string& out_dir, int jobs, bool quiet) {
   if (mode.empty()) return code;
-  const int made = make_html_report(out_dir, mode == "all", jobs);
+  const int made = make_html_report(out_dir, mode == "all", jobs, quiet);
   return made != 0 && code == 0 ? kExitPicture : code;
 }
 

@@ -47,12 +47,12 @@ void write_command_facts(const std::string& out_dir, const CommandFacts& facts);
 /// message, details: the golden diff, system_out: the failed expectations, time).
 void write_check_record(const std::string& out_dir, const std::vector<JUnitCase>& cases);
 
-/// `signalsim-plot report OUT [--all] --jobs N --quiet`; prints "report: OUT/report.html". Returns
-/// the tool's exit code (0: written).
-int make_html_report(const std::string& out_dir, bool all_pictures, int jobs);
+/// `signalsim-plot report OUT [--all] --jobs N --quiet`; prints "report: OUT/report.html" unless
+/// `quiet`. Returns the tool's exit code (0: written).
+int make_html_report(const std::string& out_dir, bool all_pictures, int jobs, bool quiet);
 
 /// A command's exit code after its --report (mode empty: none asked): `code`, or kExitPicture when the
 /// report failed and `code` was 0 (as for --plot).
-int finish_with_report(int code, const std::string& mode, const std::string& out_dir, int jobs);
+int finish_with_report(int code, const std::string& mode, const std::string& out_dir, int jobs, bool quiet);
 
 }  // namespace signalsim::app

@@ -28,7 +28,7 @@ Command add_report_command(CLI::App& app) {
                 !fs::is_regular_file(fs::path(o->out_dir) / "comparison.csv", ec))
               return report_bad_input("report: '" + o->out_dir +
                                       "' holds neither results.csv (batch, sweep, check) nor comparison.csv (compare)");
-            const int code = make_html_report(o->out_dir, o->all, o->jobs);
+            const int code = make_html_report(o->out_dir, o->all, o->jobs, false);
             return code == 0 ? 0 : code == kExitBadInput ? kExitBadInput : kExitPicture;
           }};
 }

@@ -132,7 +132,8 @@ Command add_sweep_command(CLI::App& app) {
               int code = result.exit_code();
               if (o->plot && !result.interrupted && draw_plots(sweep, settings.out_dir) && code == 0) code = kExitPicture;
               write_command_facts(settings.out_dir, sweep_facts(sweep, o->file, o->set, settings.jobs));
-              return finish_with_report(code, result.interrupted ? "" : o->batch.report, settings.out_dir, settings.jobs);
+              return finish_with_report(code, result.interrupted ? "" : o->batch.report, settings.out_dir, settings.jobs,
+                                        settings.quiet);
             } catch (const BatchInterrupted& e) {
               return report_interrupted(e.what());
             } catch (const std::exception& e) {
