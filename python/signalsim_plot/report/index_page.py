@@ -23,6 +23,10 @@ def number_or_text(text):
         return text
 
 
+def plural(n, word):
+    return f"{n} {word}" + ("" if n == 1 else "s")
+
+
 def columns(folder, metrics):
     """The table's columns: [{key, label, kind}]; a row holds their values then its page."""
     cols = [{"key": "run", "label": "run", "kind": "link"}, {"key": "status", "label": "status", "kind": "status"},
@@ -67,9 +71,9 @@ def facts_html(folder, runs):
     items = [
         ("command", f"<code>{esc(' '.join(f['argv']))}</code>" if f.get("argv") else
          "<span class=\"note\">not recorded (the folder was made without --report)</span>"),
-        ("suite", joined(f.get("inputs", []))), ("sweep file", esc(f.get("sweep_file", ""))),
+        ("suite", "" if f.get("sweep_file") else joined(f.get("inputs", []))), ("sweep file", esc(f.get("sweep_file", ""))),
         ("golden folder", esc(f.get("golden", ""))),
-        ("scenarios", f"{len(distinct(r.file for r in runs))} files"),
+        ("scenarios", plural(len(distinct(r.file for r in runs)), "file")),
         ("nets", joined(distinct(r.net for r in runs))),
         ("parameter files", joined(param_files)), ("--set", joined(f.get("set", []), "")),
         ("countries", joined(distinct(r.country for r in runs), "none (the scenarios' own parameters)")),
