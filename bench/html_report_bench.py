@@ -2,8 +2,8 @@
 """The HTML report's cost on a big folder (docs/performance.md "The HTML report"): the wall and CPU
 time of `signalsim report OUT`, the size of OUT/report.html, and in headless Chromium (over the
 DevTools protocol, tests/support/cdp.py) the time from navigation to DOMContentLoaded, to the load
-event and to the table built by report.js, then a status filter and a sort done in the page; medians
-of --repeat loads.
+event and to the table built by report.js, then a status filter, a sort and "show all" done in the page,
+each with the layout it causes; medians of --repeat loads.
 
   bench/html_report_bench.py OUT [--bin build/src/app/signalsim] [--repeat 5]"""
 import argparse
@@ -20,11 +20,15 @@ import cdp  # noqa: E402
 TIMING = """(() => { const n = performance.getEntriesByType('navigation')[0];
   return [n.domContentLoadedEventEnd, n.loadEventEnd, Number(document.body.dataset.renderedMs),
           document.querySelectorAll('#runs tbody tr').length]; })()"""
-ACTIONS = """(() => { const s = document.getElementById('status-filter'); let t = performance.now();
-  s.value = 'passed'; s.dispatchEvent(new Event('change')); const filter = performance.now() - t;
+# Each action with the layout it causes (offsetHeight forces it): a status filter, a sort, "show all".
+ACTIONS = """(() => { const s = document.getElementById('status-filter'); const took = (f) => {
+    const t = performance.now(); f(); document.body.offsetHeight; return performance.now() - t; };
+  const filter = took(() => { s.value = 'failed'; s.dispatchEvent(new Event('change')); });
   s.value = ''; s.dispatchEvent(new Event('change'));
-  t = performance.now(); document.querySelector('#runs thead th:nth-child(3)').click();
-  return [filter, performance.now() - t]; })()"""
+  const sort = took(() => document.querySelector('#runs thead th:nth-child(3)').click());
+  const button = document.getElementById('show-all');
+  const all = button ? took(() => button.click()) : 0;
+  return [filter, sort, all, document.querySelectorAll('#runs tbody tr').length]; })()"""
 
 
 def build_report(signalsim, out):
@@ -56,8 +60,9 @@ def main():
         rows = loads[0][3]
         med = lambda i, xs: statistics.median(x[i] for x in xs)
         print(f"Chromium, median of {args.repeat}: DOMContentLoaded {med(0, loads):.0f} ms, load {med(1, loads):.0f} ms, "
-              f"table of {rows} rows built {med(2, loads):.0f} ms after navigation; status filter {med(0, actions):.0f} ms, "
-              f"sort {med(1, actions):.0f} ms")
+              f"table ({rows} rows drawn) built {med(2, loads):.0f} ms after navigation; with their layout: status filter "
+              f"{med(0, actions):.0f} ms, sort {med(1, actions):.0f} ms, show all {med(2, actions):.0f} ms "
+              f"({actions[0][3]} rows)")
         if browser.problems:
             print("browser problems:\n  " + "\n  ".join(browser.problems))
             return 1

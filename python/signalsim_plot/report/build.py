@@ -1,7 +1,9 @@
 """Builds the report of an output folder: the pictures wanted (pictures.py), one page per run
-(run_page.py), then OUT/report.html (index_page.py). Each page is written whole (.tmp, renamed); run
-pages of runs no longer in the folder are removed."""
+(run_page.py), then OUT/report.html (index_page.py). The run pages are written into a new folder that
+replaces OUT/report/runs once complete (one rename, not one a page: renames cost milliseconds each on
+some file systems), then the first page (.tmp, renamed); so no page of an earlier report is left."""
 import os
+import shutil
 
 from signalsim_plot.report import pictures
 from signalsim_plot.report.folder import Folder
@@ -18,6 +20,16 @@ def write_whole(path, text):
     with open(tmp, "w", encoding="utf-8") as f:
         f.write(text)
     os.replace(tmp, path)
+
+
+def replace_folder(new, path):
+    """Puts the folder `new` at `path`, removing what was there."""
+    old = path + ".old"
+    shutil.rmtree(old, ignore_errors=True)
+    if os.path.exists(path):
+        os.rename(path, old)
+    os.rename(new, path)
+    shutil.rmtree(old, ignore_errors=True)
 
 
 def row_status(folder, row):
@@ -39,8 +51,10 @@ def build(out_dir, all_pictures=False, jobs=0):
             status = read_summary(os.path.join(out_dir, run_dir)).get("status", "error")
         wanted[run_dir] = bool(run_dir) and pictures.wants_pictures(status, all_pictures)
     failures = pictures.draw([os.path.join(out_dir, d) for d, w in wanted.items() if w], jobs)
-    os.makedirs(os.path.join(out_dir, PAGES), exist_ok=True)
-    runs, written = [], set()
+    pages_new = os.path.join(out_dir, PAGES + ".new")
+    shutil.rmtree(pages_new, ignore_errors=True)
+    os.makedirs(pages_new)
+    runs = []
     for i, row in enumerate(folder.rows):
         run_dir = folder.run_dir(row)
         index = int(row["run"]) if str(row.get("run", "")).isdigit() else i
@@ -48,15 +62,12 @@ def build(out_dir, all_pictures=False, jobs=0):
         case = folder.checks.get(run.file)
         if case:
             run.apply_check(case)
-        page_path = os.path.join(out_dir, run.page())
-        write_whole(page_path, run_page(out_dir, run, run.summary, folder.swept,
-                                        failures.get(os.path.join(out_dir, run_dir)), wanted.get(run_dir, False)))
-        written.add(os.path.basename(page_path))
+        with open(os.path.join(pages_new, os.path.basename(run.page())), "w", encoding="utf-8") as f:
+            f.write(run_page(out_dir, run, run.summary, folder.swept, failures.get(os.path.join(out_dir, run_dir)),
+                             wanted.get(run_dir, False)))
         run.summary = None  # a sweep of thousands of runs holds one summary at a time
         runs.append(run)
-    for stale in set(os.listdir(os.path.join(out_dir, PAGES))) - written:
-        if stale.endswith(".html"):
-            os.remove(os.path.join(out_dir, PAGES, stale))
+    replace_folder(pages_new, os.path.join(out_dir, PAGES))
     index_path = os.path.join(out_dir, INDEX)
     write_whole(index_path, index_page(folder, runs))
     return index_path, failures

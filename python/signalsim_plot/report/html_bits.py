@@ -1,5 +1,6 @@
 """Small HTML helpers shared by the report's pages: escaping, the page frame with its inline style,
 links, definition lists and tables."""
+import functools
 import html
 import os
 
@@ -10,6 +11,7 @@ def esc(text):
     return html.escape("" if text is None else str(text), quote=True)
 
 
+@functools.lru_cache(maxsize=None)
 def style():
     with open(STYLE_FILE) as f:
         return f.read()

@@ -1,5 +1,7 @@
 // The table of runs of report.html: built from the inline JSON (#report-data), sorted by a click on a
 // column's header, filtered by status, by text and by a heat-map cell (#cell=<JSON of column: value>).
+// The first FIRST_ROWS matching rows are drawn, the others on "show all": the browser's layout of a
+// table of thousands of rows, not the script, is what takes seconds.
 "use strict";
 (function () {
   const data = JSON.parse(document.getElementById("report-data").textContent);
@@ -11,7 +13,8 @@
   const textFilter = document.getElementById("text-filter");
   const shown = document.getElementById("shown");
   const cellNote = document.getElementById("cell-filter");
-  let sortAt = 0, direction = 1, cell = null;
+  const FIRST_ROWS = 200;
+  let sortAt = 0, direction = 1, cell = null, limit = FIRST_ROWS;
 
   const esc = (s) => String(s).replace(/[&<>"]/g, (c) => ({"&": "&amp;", "<": "&lt;", ">": "&gt;", "\"": "&quot;"})[c]);
   headRow.innerHTML = cols.map((c, i) => `<th data-at="${i}" title="${esc(c.title || "")}">${esc(c.label)}</th>`).join("");
@@ -39,8 +42,11 @@
       (!cell || Object.entries(cell).every(([k, v]) => k in index && String(r[index[k]]) === v)) &&
       (!text || r.slice(0, pageAt).some((v) => v !== null && String(v).toLowerCase().includes(text))));
     list.sort(compare);
-    tbody.innerHTML = list.map((r) => "<tr>" + cols.map((c, i) => cellHtml(c, r[i], r)).join("") + "</tr>").join("");
-    shown.textContent = `${list.length} of ${rows.length} runs shown`;
+    const drawn = list.slice(0, limit);
+    tbody.innerHTML = drawn.map((r) => "<tr>" + cols.map((c, i) => cellHtml(c, r[i], r)).join("") + "</tr>").join("");
+    shown.innerHTML = drawn.length < list.length
+      ? `${drawn.length} of the ${list.length} matching runs shown (of ${rows.length}) <button id="show-all">show all</button>`
+      : `${list.length} of ${rows.length} runs shown`;
     headRow.querySelectorAll("th").forEach((th, i) => th.className = i === sortAt ? (direction > 0 ? "asc" : "desc") : "");
   }
 
@@ -61,6 +67,11 @@
     const at = Number(th.dataset.at);
     direction = at === sortAt ? -direction : 1;
     sortAt = at;
+    render();
+  });
+  shown.addEventListener("click", (e) => {
+    if (e.target.id !== "show-all") return;
+    limit = Infinity;
     render();
   });
   statusFilter.addEventListener("change", render);
