@@ -3,7 +3,8 @@ expectation fails (tests/data/report/intersection_left_lead_90.yaml) with --repo
 opened from the folder (file://, no server) in headless Chromium over the DevTools protocol
 (tests/support/cdp.py): no console error, exception or failed load; one table row per run of
 results.csv; the status filter "failed" (the page's own JavaScript) leaves exactly the failing run;
-its page shows the failed expectation with a FAIL line, and its pictures load (naturalWidth > 0).
+a heat-map cell's link (#cell=...) leaves the runs of that cell; the failed run's page shows the
+failed expectation with a FAIL line, and its pictures load (naturalWidth > 0).
 
   report_browser_test.py SIGNALSIM SOURCE_DIR [--screenshot PNG] [--keep DIR]
 
@@ -57,7 +58,18 @@ def first_page(browser, out, rows, screenshot):
     check(left == [FAILING], f"the 'failed' filter leaves {left}")
     if screenshot:
         browser.screenshot(screenshot)
-    return browser.evaluate("document.querySelector('#runs tbody tr a').href")
+    href = browser.evaluate("document.querySelector('#runs tbody tr a').href")
+    # a heat-map cell's link: #cell={column: value} keeps the rows with those values (all statuses)
+    browser.evaluate("(() => { const s = document.getElementById('status-filter'); s.value = '';"
+                     " s.dispatchEvent(new Event('change'));"
+                     " location.hash = 'cell=' + encodeURIComponent(JSON.stringify({scenario: 'intersection_right'})); })()")
+    left = browser.evaluate(  # hashchange is dispatched later: wait until the page says the cell (at most 10 s)
+        "new Promise(r => { const end = Date.now() + 10000; (function poll() {"
+        " if (document.getElementById('cell-filter').textContent || Date.now() > end)"
+        "  r([...document.querySelectorAll('#runs tbody tr')].map(tr => tr.cells[2].textContent));"
+        " else setTimeout(poll, 20); })(); })")
+    check(left == ["intersection_right"], f"the cell filter scenario=intersection_right leaves {left}")
+    return href
 
 
 def run_page(browser, href):
