@@ -151,10 +151,11 @@ DriverRun driver_run(const std::string& out_dir, const std::string& run_dir, con
   return run;
 }
 
-// A bad-input exit: the comparison files of an earlier compare must not pass for this one's.
+// A bad-input exit: the comparison files (and the HTML report) of an earlier compare must not pass for this one's.
 int bad_input(const std::string& out_dir, const std::string& message) {
   std::error_code ignored;
   for (const char* name : {kCsv, kPicture}) fs::remove(fs::path(out_dir) / name, ignored);
+  remove_html_report(out_dir);
   return report_bad_input(message);
 }
 

@@ -111,7 +111,10 @@ void write_command_facts(const std::string& out_dir, const CommandFacts& facts) 
   j["jobs"] = facts.jobs;
   j["version"] = "signalsim 0.1.0";
   write_or_warn(fs::path(out_dir) / kCommandFacts, j.dump(2) + "\n");
-  // A report of an earlier batch in this folder must not pass for this one's: --report writes it anew.
+  remove_html_report(out_dir);  // an earlier batch's must not pass for this one's: --report writes it anew
+}
+
+void remove_html_report(const std::string& out_dir) {
   std::error_code ignored;
   fs::remove(fs::path(out_dir) / kReportPage, ignored);
   fs::remove_all(fs::path(out_dir) / kReportDir, ignored);

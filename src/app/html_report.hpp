@@ -43,6 +43,9 @@ void add_report_flag(CLI::App* sub, std::string& mode);
 /// runs' own results stand. Removes an earlier report of the folder (OUT/report.html, OUT/report/).
 void write_command_facts(const std::string& out_dir, const CommandFacts& facts);
 
+/// Removes OUT/report.html and OUT/report/ (what a report of an earlier command left).
+void remove_html_report(const std::string& out_dir);
+
 /// OUT/check.json: check's verdict per scenario (name, file, status passed|failed|error|skipped,
 /// message, details: the golden diff, system_out: the failed expectations, time).
 void write_check_record(const std::string& out_dir, const std::vector<JUnitCase>& cases);

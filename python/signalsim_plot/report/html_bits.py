@@ -7,8 +7,11 @@ import os
 STYLE_FILE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "report.css")
 
 
-def esc(text):
-    return html.escape("" if text is None else str(text), quote=True)
+def esc(value):
+    """Text for HTML; None as nothing, true/false as in the CSV files."""
+    if isinstance(value, bool):
+        value = "true" if value else "false"
+    return html.escape("" if value is None else str(value), quote=True)
 
 
 @functools.lru_cache(maxsize=None)
