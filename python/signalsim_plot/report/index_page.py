@@ -114,7 +114,7 @@ def index_page(folder, runs):
     metrics = [m for m in dict.fromkeys(list(METRICS) + plot_metrics) if m and (m in folder.header or folder.kind == "compare")]
     cols = columns(folder, metrics)
     data = json.dumps({"columns": cols, "rows": [row_values(r, cols) for r in runs]}, ensure_ascii=False,
-                      separators=(",", ":")).replace("</", "<\\/")
+                      separators=(",", ":")).replace("<", "\\u003c")  # no "</script>" or "<!--" in the data
     title = f"signalsim {folder.kind}: {os.path.basename(os.path.abspath(folder.out_dir))}"
     files = " · ".join(link(n, n) for n in ("results.csv", "comparison.csv", "junit.xml")
                        if os.path.isfile(os.path.join(folder.out_dir, n)))

@@ -5,7 +5,7 @@ import csv
 import os
 
 from signalsim_plot.report.html_bits import esc, facts_list, joined, link, page, status_badge, table
-from signalsim_plot.report.pictures import existing
+from signalsim_plot.report.pictures import NOT_FINISHED, existing
 
 RUN_FILES = ("summary.json", "timeline.csv", "events.csv", "sumo.log", "decider.stderr.txt", "light_judge.stderr.txt")
 MAX_EVENTS = 2000
@@ -73,7 +73,9 @@ def pictures_html(out_dir, run, drawn_error, wanted):
     run_dir = os.path.join(out_dir, run.run_dir)
     names = existing(run_dir)
     out = ["<h2>Pictures</h2>"]
-    if drawn_error:
+    if drawn_error == NOT_FINISHED:
+        out.append("<p class=\"note\">no pictures: the run did not finish (no timeline.csv)</p>")
+    elif drawn_error:
         out.append(f"<p class=\"fail\">the pictures could not be drawn: {esc(drawn_error)}</p>")
     if names:
         out.append("<div class=\"pictures\">" + "".join(
