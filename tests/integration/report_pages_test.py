@@ -1,8 +1,9 @@
 """The HTML report of sweep, check, compare and batch folders, read back from the pages it writes
 (no browser: the table's inline JSON and the HTML): a sweep's heat-map cells link to exactly the runs
 they count; check's golden diff is on the failed run's page and makes its pictures; compare's table,
-picture and runs; --report=all draws every run's pictures, the default only failed ones; `signalsim
-report` on a folder that is not an output folder is one line and exit 2.
+picture and runs; --report=all draws every run's pictures, the default only failed ones; an error
+row's message and page; `signalsim report` on a folder that is not an output folder is one line and
+exit 2.
 
   report_pages_test.py SIGNALSIM SOURCE_DIR"""
 import csv
@@ -119,6 +120,18 @@ def batch_all_pictures(signalsim, source, tmp):
     check(again.stdout.strip() == f"report: {out}/report.html", f"signalsim report prints {again.stdout!r}")
 
 
+def error_rows(signalsim, source, tmp):
+    out = os.path.join(tmp, "errors")
+    done = run([signalsim, "batch", "tests/batch/data/sumo_load_error.yaml", "scenarios/intersection_left.yaml",
+                "--out", out, "-q", "--report"], 4, source)
+    check("pictures not drawn" not in done.stderr, f"a run that did not finish warned about: {done.stderr!r}")
+    _, rows = page_data(out)
+    error = next(r for r in rows if r["scenario"] == "sumo_load_error")
+    check(error["status"] == "error" and "SUMO could not load the simulation" in error["problem"], f"error row {error}")
+    with open(os.path.join(out, error["page"])) as f:
+        check("no pictures: the run did not finish" in f.read(), "the error run's page does not say why it has no pictures")
+
+
 def bad_folders(signalsim, source, tmp):
     missing = run([signalsim, "report", os.path.join(tmp, "nothing")], 2, source)
     check(missing.stderr.count("\n") == 1 and "not found" in missing.stderr, f"missing folder: {missing.stderr!r}")
@@ -133,7 +146,7 @@ def main():
     signalsim, source = os.path.abspath(sys.argv[1]), sys.argv[2]
     tmp = tempfile.mkdtemp(prefix="signalsim-report-pages-")
     try:
-        for part in (bad_folders, sweep_report, check_report, compare_report, batch_all_pictures):
+        for part in (bad_folders, sweep_report, check_report, compare_report, batch_all_pictures, error_rows):
             part(signalsim, source, tmp)
             print(f"ok {part.__name__}")
     finally:
