@@ -11,6 +11,9 @@
 
 namespace signalsim::app {
 
+/// What `signalsim --version` prints; OUT/command.json's `version`.
+inline constexpr const char* kVersionText = "signalsim 0.1.0";
+
 struct Command {
   CLI::App* sub = nullptr;
   std::function<int()> run;

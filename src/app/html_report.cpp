@@ -13,6 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/command.hpp"
 #include "app/plot_tool.hpp"
 #include "report/atomic_file.hpp"
 #include "report/exit_codes.hpp"
@@ -109,7 +110,7 @@ void write_command_facts(const std::string& out_dir, const CommandFacts& facts) 
   j["system"] = system_name();
   j["cores"] = std::thread::hardware_concurrency();
   j["jobs"] = facts.jobs;
-  j["version"] = "signalsim 0.1.0";
+  j["version"] = kVersionText;
   write_or_warn(fs::path(out_dir) / kCommandFacts, j.dump(2) + "\n");
   remove_html_report(out_dir);  // an earlier batch's must not pass for this one's: --report writes it anew
 }
