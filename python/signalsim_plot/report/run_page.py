@@ -108,7 +108,7 @@ def run_page(out_dir, run, summary, swept, drawn_error, wanted):
     facts = facts_list([
         ("status", status_badge(run.status)), ("scenario", esc(run.scenario)), ("file", esc(run.file)),
         ("net", esc(run.net)), ("country", esc(run.country)), ("decider", esc(run.decider)),
-        ("swept", joined(f"{k}={run.row.get(k, '')}" for k in swept)),
+        ("swept", joined((f"{k}={run.row.get(k, '')}" for k in swept), "")),
         ("driver", esc(summary.get("driver", ""))), ("seed", esc(summary.get("seed", ""))),
         ("parameter files", joined(run.parameter_files)),
         ("not arrived", esc(not_arrived.get("detail", ""))),
