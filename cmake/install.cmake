@@ -39,11 +39,11 @@ install(TARGETS signalsim RUNTIME DESTINATION ${SIGNALSIM_INSTALL_BINDIR})
 install(DIRECTORY config DESTINATION ${SIGNALSIM_INSTALL_DATADIR})
 # The table of Autoware's keys of its parameter files (--strict-params; tools/autoware_key_tables).
 install(DIRECTORY data DESTINATION ${SIGNALSIM_INSTALL_DATADIR})
-# The plot program (run --plot, sweep --plot, compare --plot) and its package, product beside the
+# The plot program (run --plot, sweep --plot, compare --plot, the HTML report) and its package, product beside the
 # binary: python/ of the source tree is python/ of the data directory (src/app/plot_tool.cpp).
 install(PROGRAMS python/signalsim-plot DESTINATION ${SIGNALSIM_INSTALL_DATADIR}/python)
 install(DIRECTORY python/signalsim_plot DESTINATION ${SIGNALSIM_INSTALL_DATADIR}/python
-        FILES_MATCHING PATTERN "*.py" PATTERN __pycache__ EXCLUDE)
+        FILES_MATCHING PATTERN "*.py" PATTERN "*.js" PATTERN "*.css" PATTERN __pycache__ EXCLUDE)  # the report's script and style
 # The bundled suite and its nets (scenarios name ../config and ../sumo_nets). scenarios/sweeps is
 # left out: its sweep names the test data (tests/data), which is not installed.
 install(DIRECTORY scenarios DESTINATION ${SIGNALSIM_INSTALL_DATADIR} PATTERN sweeps EXCLUDE)

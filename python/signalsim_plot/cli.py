@@ -17,6 +17,9 @@ class InputError(Exception):
 
 
 def main(argv):
+    if argv[:1] == ["report"]:  # the HTML report of a batch, sweep, check or compare folder
+        from signalsim_plot.report.cli import main as report_main
+        return report_main(argv[1:])
     parser = argparse.ArgumentParser(prog="signalsim-plot", description=(__doc__ or "").strip())
     parser.add_argument("path", help="a run directory (timeline.csv ...) or a sweep directory / results.csv")
     parser.add_argument("--out", help="where the PNGs go (default: PATH/plots)")

@@ -10,6 +10,7 @@
 #include "batch/batch_runner.hpp"
 #include "scenario/notes.hpp"
 #include "app/cli_numbers.hpp"
+#include "app/html_report.hpp"
 
 namespace signalsim::app {
 
@@ -20,9 +21,10 @@ struct BatchCliOptions {
   bool resume = false;
   bool quiet = false;
   bool isolate = false;  // one process per run
+  std::string report;    // --report: "failed" or "all"; empty: no report
 };
 
-/// --out, --jobs, --isolate, --timeout, --quiet; --resume when `with_resume`.
+/// --out, --jobs, --isolate, --timeout, --quiet, --report; --resume when `with_resume`.
 inline void add_batch_options(CLI::App* sub, BatchCliOptions& o, const std::string& default_out, bool with_resume) {
   sub->add_option("--out", o.out_dir, "Output directory: results.csv and runs/ (default: " + default_out + ")");
   sub->add_option("--jobs,-j", o.jobs, "Worker processes at a time, one SUMO each (default: number of cores)")
@@ -38,6 +40,7 @@ inline void add_batch_options(CLI::App* sub, BatchCliOptions& o, const std::stri
                   "others (error rows run again)");
   sub->add_flag("--quiet,-q", o.quiet, "No progress output, no notes")
       ->each([](const std::string&) { set_notes_enabled(false); });  // notes print as scenarios load
+  add_report_flag(sub, o.report);
 }
 
 inline BatchSettings to_settings(const BatchCliOptions& o, const std::string& default_out, double default_timeout) {

@@ -6,6 +6,7 @@
 #include "app/batch_backend.hpp"
 #include "app/batch_cli.hpp"
 #include "app/command.hpp"
+#include "app/html_report.hpp"
 #include "app/junit_report.hpp"
 #include "app/override_flags.hpp"
 #include "app/sut_flags.hpp"
@@ -44,11 +45,13 @@ Command add_batch_command(CLI::App& app) {
               // run_with_backend releases the held notes once the back-end is there to run them
               const BatchSettings settings = to_settings(o->batch, "out/batch", 300.0);
               const BackendRun run = run_with_backend(runs, settings, o->batch, o->backend);
-              if (!run.merged) return 0;
+              if (!run.merged) return 0;  // --no-wait: submitted; --collect merges later
               if (!o->junit.empty() && !run.result.interrupted)
                 write_junit(o->junit, "signalsim batch", batch_junit_cases(runs, run.result.rows, settings.out_dir),
                             run.result.wall);
-              return run.result.exit_code();
+              write_command_facts(settings.out_dir, {"batch", o->paths, "", "", o->set, {}, settings.jobs});
+              return finish_with_report(run.result.exit_code(), run.result.interrupted ? "" : o->batch.report,
+                                        settings.out_dir, settings.jobs, settings.quiet);
             } catch (const BatchInterrupted& e) {
               return report_interrupted(e.what());
             } catch (const std::exception& e) {

@@ -22,6 +22,7 @@
 #include "app/batch_cli.hpp"
 #include "app/cli_numbers.hpp"
 #include "app/command.hpp"
+#include "app/html_report.hpp"
 #include "app/junit_report.hpp"
 #include "app/override_flags.hpp"
 #include "app/sut_flags.hpp"
@@ -235,8 +236,10 @@ Command add_check_command(CLI::App& app) {
                           cases.size(), cases.size() == 1 ? "" : "s", cases.size() - failed - errors, failed, errors,
                           errors == 1 ? "" : "s", result.no_expectations, o->update ? " (golden files updated)" : "");
               if (!o->junit.empty()) write_junit(o->junit, "signalsim check", cases, result.wall);
-              if (errors > 0) return kExitRunErrors;
-              return failed > 0 ? kExitFailed : 0;
+              write_check_record(settings.out_dir, cases);
+              write_command_facts(settings.out_dir, {"check", o->paths, "", o->golden_dir, o->set, {}, settings.jobs});
+              const int code = errors > 0 ? kExitRunErrors : failed > 0 ? kExitFailed : 0;
+              return finish_with_report(code, o->batch.report, settings.out_dir, settings.jobs, o->batch.quiet);
             } catch (const BatchInterrupted& e) {
               return report_interrupted(e.what());
             } catch (const std::exception& e) {

@@ -11,6 +11,9 @@
 
 namespace signalsim::app {
 
+/// What `signalsim --version` prints; OUT/command.json's `version`.
+inline constexpr const char* kVersionText = "signalsim 0.1.0";
+
 struct Command {
   CLI::App* sub = nullptr;
   std::function<int()> run;
@@ -35,5 +38,6 @@ Command add_compare_command(CLI::App& app);
 Command add_schema_command(CLI::App& app);
 Command add_run_chunk_command(CLI::App& app);
 Command add_worker_command(CLI::App& app);
+Command add_report_command(CLI::App& app);
 
 }  // namespace signalsim::app

@@ -22,6 +22,7 @@
 
 #include "app/batch_cli.hpp"
 #include "app/command.hpp"
+#include "app/html_report.hpp"
 #include "app/plot_tool.hpp"
 #include "app/override_flags.hpp"
 #include "app/sut_flags.hpp"
@@ -149,10 +150,11 @@ DriverRun driver_run(const std::string& out_dir, const std::string& run_dir, con
   return run;
 }
 
-// A bad-input exit: the comparison files of an earlier compare must not pass for this one's.
+// A bad-input exit: the comparison files (and the HTML report) of an earlier compare must not pass for this one's.
 int bad_input(const std::string& out_dir, const std::string& message) {
   std::error_code ignored;
   for (const char* name : {kCsv, kPicture}) fs::remove(fs::path(out_dir) / name, ignored);
+  remove_html_report(out_dir);
   return report_bad_input(message);
 }
 
@@ -240,8 +242,11 @@ int compare(const CompareOptions& o) {
                 wall, csv.c_str(),
                 plotted == 0 ? (", " + (fs::path(settings.out_dir) / kPicture).string()).c_str() : " (no picture)");
   }
-  if (failed) return kExitFailed;
-  return plotted == 0 ? 0 : 3;
+  std::vector<std::string> overrides = o.set;
+  overrides.insert(overrides.end(), o.sut_set.begin(), o.sut_set.end());
+  write_command_facts(settings.out_dir, {"compare", o.paths, "", "", overrides, {}, settings.jobs});
+  return finish_with_report(failed ? kExitFailed : plotted == 0 ? 0 : kExitPicture, o.batch.report, settings.out_dir,
+                            settings.jobs, settings.quiet);
 }
 
 }  // namespace

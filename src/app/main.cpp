@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "app/command.hpp"
+#include "app/html_report.hpp"
 #include "scenario/data_dir.hpp"
 
 namespace signalsim::app {
@@ -38,13 +39,15 @@ int report_interrupted(const std::string& message) {
 int main(int argc, char** argv) {
   using namespace signalsim::app;
   using signalsim::kExitBadInput;
+  remember_command_line(argc, argv);  // OUT/command.json of the batch commands
   CLI::App app{"signalsim: Autoware's turn-signal decider and traffic-light judge on SUMO"};
-  app.set_version_flag("--version", "signalsim 0.1.0");
+  app.set_version_flag("--version", kVersionText);
   app.require_subcommand(1);
   const std::vector<Command> commands = {add_run_command(app), add_inspect_command(app),
                                          add_countries_command(app),
                                          add_batch_command(app), add_sweep_command(app), add_check_command(app),
-                                         add_compare_command(app), add_generate_command(app), add_schema_command(app),
+                                         add_compare_command(app), add_report_command(app), add_generate_command(app),
+                                         add_schema_command(app),
                                          add_run_chunk_command(app),
                                          add_worker_command(app)};
   try {

@@ -9,6 +9,7 @@
 #include "app/batch_backend.hpp"
 #include "app/batch_cli.hpp"
 #include "app/command.hpp"
+#include "app/html_report.hpp"
 #include "app/plot_tool.hpp"
 #include "app/sut_flags.hpp"
 #include "batch/interrupt_guard.hpp"
@@ -52,6 +53,10 @@ std::vector<RunSpec> named_runs(const SweepRuns& runs, const SweepCheck& check) 
   return out;
 }
 
+// A plot: axis as its results.csv column: the axes are swept keys (or scenario), and a swept key's
+// column may be renamed (swept_column).
+std::string plot_axis(const std::string& key) { return key == "scenario" ? key : swept_column(key); }
+
 // One picture per plot: entry (signalsim-plot's defaults without one); whether one failed.
 bool draw_plots(const Sweep& sweep, const std::string& out_dir) {
   const std::vector<SweepPlot> plots = sweep.plots.empty() ? std::vector<SweepPlot>{{}} : sweep.plots;
@@ -59,13 +64,20 @@ bool draw_plots(const Sweep& sweep, const std::string& out_dir) {
   for (const SweepPlot& plot : plots) {
     std::vector<std::string> args = {out_dir};
     if (!plot.metric.empty()) args.insert(args.end(), {"--metric", plot.metric});
-    // the axes are swept keys (or scenario): their columns may be renamed (swept_column)
-    const auto axis = [](const std::string& key) { return key == "scenario" ? key : swept_column(key); };
-    if (!plot.x.empty()) args.insert(args.end(), {"--x", axis(plot.x)});
-    if (!plot.y.empty()) args.insert(args.end(), {"--y", axis(plot.y)});
+    if (!plot.x.empty()) args.insert(args.end(), {"--x", plot_axis(plot.x)});
+    if (!plot.y.empty()) args.insert(args.end(), {"--y", plot_axis(plot.y)});
     failed = run_plot_tool(args) != 0 || failed;
   }
   return failed;
+}
+
+// What the report's first screen says of the sweep: its file, the overrides, its plot: axes as columns.
+CommandFacts sweep_facts(const Sweep& sweep, const std::string& file, const std::vector<std::string>& set, int jobs) {
+  CommandFacts facts{"sweep", {file}, file, "", set, {}, jobs};
+  for (const SweepPlot& plot : sweep.plots)
+    if (!plot.metric.empty() && !plot.x.empty() && !plot.y.empty())
+      facts.plots.push_back({plot.metric, plot_axis(plot.x), plot_axis(plot.y)});
+  return facts;
 }
 
 }  // namespace
@@ -117,9 +129,11 @@ Command add_sweep_command(CLI::App& app) {
               const BatchResult& result = run.result;
               // The pictures were asked for: a failure is a failure of the command (exit 3, kExitPicture), after
               // the runs' own failures (their code wins when it is not 0).
-              if (o->plot && !result.interrupted && draw_plots(sweep, settings.out_dir) && result.exit_code() == 0)
-                return kExitPicture;
-              return result.exit_code();
+              int code = result.exit_code();
+              if (o->plot && !result.interrupted && draw_plots(sweep, settings.out_dir) && code == 0) code = kExitPicture;
+              write_command_facts(settings.out_dir, sweep_facts(sweep, o->file, o->set, settings.jobs));
+              return finish_with_report(code, result.interrupted ? "" : o->batch.report, settings.out_dir, settings.jobs,
+                                        settings.quiet);
             } catch (const BatchInterrupted& e) {
               return report_interrupted(e.what());
             } catch (const std::exception& e) {

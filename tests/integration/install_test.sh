@@ -122,6 +122,12 @@ if /usr/bin/python3 -c "import matplotlib" 2> /dev/null; then
     || fail "run --plot: exit $?: $(cat plot.err)"
   for f in blinker speed; do [ -s "plotted/plots/$f.png" ] || fail "no plots/$f.png: $(cat plot.out plot.err)"; done
   echo "ok   run --plot from the installed tree writes plots/"
+  # the HTML report: its script and style are files of the installed package, inlined into the page
+  "$bin" batch "$data/scenarios/intersection_left.yaml" --out reported --quiet --report > report.out 2> report.err \
+    || fail "batch --report: exit $?: $(cat report.err)"
+  grep -q 'document.body.dataset.rendered' reported/report.html || fail "report.html without its script: $(cat report.err)"
+  grep -q 'table.heat' reported/report.html || fail "report.html without its style"
+  echo "ok   batch --report from the installed tree writes report.html with its script and style"
 else
   echo "skip run --plot: no matplotlib"
 fi
