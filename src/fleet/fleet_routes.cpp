@@ -5,8 +5,8 @@
 
 namespace signalsim {
 
-std::shared_ptr<const FleetRoute> FleetRoutes::route(const std::vector<std::string>& edges) {
-  std::string key;
+std::shared_ptr<const FleetRoute> FleetRoutes::route(const std::vector<std::string>& edges, const std::string& vclass) {
+  std::string key = vclass + ' ';
   for (const std::string& edge : edges) {
     key += edge;
     key += ' ';  // edge ids hold no space (SUMO refuses them)
@@ -15,7 +15,9 @@ std::shared_ptr<const FleetRoute> FleetRoutes::route(const std::vector<std::stri
   auto built = std::make_shared<FleetRoute>();
   try {
     if (edges.empty()) throw sumo::RouteError("the route has no edges");
-    built->map = sumo::build_route(net_, edges).map;
+    sumo::LaneChangeEgo vehicle;
+    vehicle.vclass = vclass;
+    built->map = sumo::build_route(net_, edges, {}, vehicle).map;
   } catch (const std::exception& e) {
     built->error = e.what();
     ++not_understood_;

@@ -36,7 +36,7 @@ bool FleetTracker::depart(const std::string& id, const sumo::SumoSession::Traffi
   TurnSignalParameters p = params_;
   p.base_link_to_front = vehicle.length * vehicle_defaults::kBaseLinkToFront / vehicle_defaults::kLength;
   index_.emplace(id, vehicles_.size());
-  vehicles_.push_back(std::make_unique<FleetVehicle>(id, p));
+  vehicles_.push_back(std::make_unique<FleetVehicle>(id, vehicle.vclass.empty() ? "passenger" : vehicle.vclass, p));
   ids_.push_back(id);
   return true;
 }
@@ -63,7 +63,7 @@ void FleetTracker::follow_route(std::size_t i, const std::string& route_id, cons
   FleetVehicle& v = *vehicles_[i];
   const bool replaced = !v.route_id().empty();
   const bool was_understood = v.understood();
-  v.follow(route_id, routes_.route(edges));
+  v.follow(route_id, routes_.route(edges, v.vclass()));
   if (replaced) ++record_.totals.rerouted;
   if (v.understood() && !was_understood && !v.counted_followed) {
     v.counted_followed = true;

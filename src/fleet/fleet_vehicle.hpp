@@ -35,9 +35,11 @@ struct FleetEpisode {
 
 class FleetVehicle {
  public:
-  FleetVehicle(std::string id, const TurnSignalParameters& params) : id_(std::move(id)), params_(params) {}
+  FleetVehicle(std::string id, std::string vclass, const TurnSignalParameters& params)
+      : id_(std::move(id)), vclass_(std::move(vclass)), params_(params) {}
 
   const std::string& id() const { return id_; }
+  const std::string& vclass() const { return vclass_; }
   const std::string& route_id() const { return route_id_; }
   const FleetRoute* route() const { return route_.get(); }
   bool understood() const { return route_ && route_->understood(); }
@@ -59,6 +61,7 @@ class FleetVehicle {
 
  private:
   std::string id_;
+  std::string vclass_;
   TurnSignalParameters params_;
   std::string route_id_;
   std::shared_ptr<const FleetRoute> route_;
