@@ -35,6 +35,9 @@ namespace signalsim::app {
 namespace {
 
 
+// sumo-gui's zoom in fleet mode [%]: about 400 m across, the traffic around the ego (docs/fleet.md).
+constexpr double kFleetGuiZoom = 200.0;
+
 // How an embedded SUMO's failed start begins its message (session_embedded.cpp).
 constexpr const char* kSumoLoadFailure = "SUMO could not load the simulation: ";
 
@@ -112,7 +115,8 @@ int run(const RunOptions& options) {
   set_notes_enabled(false);
   try {
     scenario = load_scenario(options.scenario_path, options.overrides);
-    const RunContext context = run_context(options);
+    RunContext context = run_context(options);
+    if (scenario->fleet.enabled) context.backend.gui_zoom = kFleetGuiZoom;  // the traffic around the ego
     // SUMO driving leaves no decision to a system under test: refused rather than silently not run.
     if (context.sumo_drives)
       for (const SutSpec* sut : {&scenario->decider, &scenario->light_judge})

@@ -55,6 +55,9 @@ struct BackendOptions {
   /// answers (--traci-timeout; traci_relay.hpp); 0: no limit
   double traci_timeout = 30.0;
   int gui_delay_ms = 0;            ///< gui: sumo-gui's --delay between steps [ms]
+  /// gui: the view's zoom [%] while it tracks the ego; 0: the default, about 60 m across (the ego
+  /// and its blinkers). Fleet mode shows the traffic around it (docs/fleet.md).
+  double gui_zoom = 0.0;
   /// gui: a PNG of the view (TraCI GUI.screenshot) written here at the first step the ego's blinker
   /// is on (or at the last step when it never is); empty: none.
   std::string screenshot;
