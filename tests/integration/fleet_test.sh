@@ -6,6 +6,7 @@
 #                the crossing and on bologna/acosta with its own demand
 #   roundabout   the roundabout under de and kr (entry and exit signals by the preset), with a vehicle
 #                a rerouter sends to another exit once it is on the ring
+#   sweep        a sweep over countries in fleet mode: results.csv's fleet_* columns per country
 #   teleport     a vehicle SUMO teleports past the junction: followed, its blinker off after
 #   gui          --gui under Xvfb: fleet_events.csv byte-identical to the embedded run's, and the
 #                screenshot shows other vehicles' blinkers
@@ -64,6 +65,17 @@ for c in de kr; do
     fail "roundabout $c: exit code $?"
   check roundabout "$work/roundabout_$c" $c
 done
+
+# the country sweep: each country's traffic side by side in results.csv (de: exits only; kr: entries too)
+"$bin" sweep "$data/country_sweep.yaml" --out "$work/sweep" --quiet || fail "sweep: exit code $?"
+"$py" - "$work/sweep/results.csv" <<'PY' || fail "sweep: results.csv's fleet columns"
+import csv, sys
+rows = {r["country"]: r for r in csv.DictReader(open(sys.argv[1]))}
+assert set(rows) == {"de", "kr"}, rows.keys()
+for c, want_left in (("de", 0), ("kr", 28)):
+    r = rows[c]
+    assert (r["fleet_followed"], r["fleet_signals_right"], r["fleet_signals_left"]) == ("28", "28", str(want_left)), (c, r)
+PY
 
 # teleport
 "$bin" run "$data/cross_teleport.yaml" --out "$work/teleport" --quiet || fail "teleport: exit code $?"

@@ -224,9 +224,6 @@ TEST(KeyTables, ReadingAKeyTheTableDoesNotListIsALoaderBug) {
   EXPECT_DOUBLE_EQ(fields.number("max_speed"), 3.0);
 }
 
-}  // namespace
-}  // namespace signalsim
-
 TEST(KeyTables, FleetModeIsOffWithoutTheKeyAndAnIdPatternMustBeARegularExpression) {
   EXPECT_FALSE(load_scenario(kTakeOver).fleet.enabled);
   const Scenario all = load_scenario(kTakeOver, {{"fleet.signals=set"}});  // what run --fleet sets
@@ -240,3 +237,6 @@ TEST(KeyTables, FleetModeIsOffWithoutTheKeyAndAnIdPatternMustBeARegularExpressio
         << e.what();
   }
 }
+
+}  // namespace
+}  // namespace signalsim
