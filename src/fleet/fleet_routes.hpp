@@ -15,11 +15,25 @@
 
 namespace signalsim {
 
+/// A stretch of a route where the decider may ask for a blinker with no behaviour request: a run of
+/// consecutive lanelets turning left or right (§T4.1 NEEDS), with a roundabout role (§T5), or with a
+/// turn_signal_distance or enable_exit_turn_signal param. Route s [m].
+struct SignalStretch {
+  double start = 0.0;
+  double end = 0.0;
+};
+
 /// A route as fleet mode uses it: its lanelets, or why there are none.
 struct FleetRoute {
   RouteMap map;
   std::string error;  ///< non-empty: not understood (the route builder's reason)
+  std::vector<SignalStretch> stretches;  ///< in route order, not overlapping
+  double max_turn_signal_distance = 0.0;  ///< [m] the largest per-lanelet turn_signal_distance (0: none)
   bool understood() const { return error.empty(); }
+  /// Whether the decider can only answer DISABLE for a vehicle with front `s_front`, base_link
+  /// `s_base` and search reach `reach` [m]: every stretch is passed by base_link or lies beyond the
+  /// reach of the front (docs/fleet.md "What each vehicle gets").
+  bool quiet_at(double s_front, double s_base, double reach) const;
 };
 
 class FleetRoutes {

@@ -15,8 +15,8 @@ std::string source_name(RequestSource s) { return s == RequestSource::None ? "no
 }  // namespace
 
 FleetTracker::FleetTracker(const FleetSpec& spec, const TurnSignalParameters& params, std::string country,
-                           const sumo::NetIndex& net, std::string ego_id)
-    : spec_(spec), params_(params), ego_id_(std::move(ego_id)), routes_(net) {
+                           const sumo::NetIndex& net, std::string ego_id, double step_length)
+    : spec_(spec), params_(params), ego_id_(std::move(ego_id)), step_length_(step_length), routes_(net) {
   if (!spec.id_pattern.empty()) id_pattern_.emplace(spec.id_pattern, std::regex::ECMAScript);
   record_.set_signals = spec.set_signals;
   record_.country = std::move(country);
@@ -83,8 +83,20 @@ void FleetTracker::step(double time, const std::vector<sumo::SumoSession::Traffi
     const std::optional<FleetDecision> d = vehicles_[i]->decide(st.lane, st.lane_pos, st.speed);
     if (!d) continue;  // teleporting, or a route not understood: SUMO's own blinker
     ++record_.totals.vehicle_steps;
-    masks[i] = record_decision(time, *vehicles_[i], *d, st.signals);
+    masks[i] = record_decision(time, *vehicles_[i], *d, st.signals) | brake_light(*vehicles_[i], st.speed);
   }
+}
+
+// setSignals replaces every bit SUMO computed for the step, its brake light too, which SUMO's
+// junction model reads (jam avoidance). So the mask carries SUMO's rule for it, from the last two
+// speeds (one step late): on while standing (below 0.1 m/s) or while slowing down by more than the
+// drag SUMO allows for, (0.05 + 0.005 v) v per second (docs/fleet.md). A stop (a bus at its stop)
+// is not known here: its brake light shows.
+int FleetTracker::brake_light(FleetVehicle& v, double speed) const {
+  const std::optional<double> before = v.last_speed;
+  v.last_speed = speed;
+  const bool slowing = before && speed < *before - (0.05 + 0.005 * *before) * *before * step_length_;
+  return speed < 0.1 || slowing ? sumo::kBrakeLight : 0;
 }
 
 int FleetTracker::record_decision(double time, FleetVehicle& v, const FleetDecision& d, int sumo_signals) {

@@ -32,8 +32,9 @@ class FleetTracker {
  public:
   /// `params`: the scenario's decider parameters (its country preset applied); each vehicle gets them
   /// with base_link_to_front scaled to its length (3.7/4.5, as the ego's default).
+  /// `step_length` [s]: SUMO's (the brake light's deceleration threshold).
   FleetTracker(const FleetSpec& spec, const TurnSignalParameters& params, std::string country,
-               const sumo::NetIndex& net, std::string ego_id);
+               const sumo::NetIndex& net, std::string ego_id, double step_length);
 
   bool sets_signals() const { return record_.set_signals; }
 
@@ -60,6 +61,7 @@ class FleetTracker {
 
  private:
   int record_decision(double time, FleetVehicle& v, const FleetDecision& d, int sumo_signals);
+  int brake_light(FleetVehicle& v, double speed) const;
   void start_episode(FleetVehicle& v, const FleetDecision& d);
   void compare_with_sumo(FleetVehicle& v, const FleetDecision& d, int sumo_signals);
 
@@ -67,6 +69,7 @@ class FleetTracker {
   std::optional<std::regex> id_pattern_;
   TurnSignalParameters params_;
   std::string ego_id_;
+  double step_length_;
   FleetRoutes routes_;
   std::vector<std::unique_ptr<FleetVehicle>> vehicles_;  // followed, present (a vehicle holds its place on its route)
   std::vector<std::string> ids_;        // their ids, same order

@@ -1,6 +1,9 @@
 // One vehicle of the fleet; see fleet_vehicle.hpp.
 #include "fleet/fleet_vehicle.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 namespace signalsim {
 namespace {
 
@@ -49,11 +52,16 @@ std::optional<FleetDecision> FleetVehicle::decide(const std::string& lane, doubl
   on_route.s_front = place.s_front;
   on_route.s_base = place.s_front - params_.base_link_to_front;
   on_route.speed = speed;
-  const TurnSignalDecision d = decider_->decide(map, on_route);
   FleetDecision out;
+  out.s_front = place.s_front;
+  // Far from every signal stretch the decider can only answer DISABLE (§T4.1, §T5): it is not run.
+  const double reach = params_.turn_signal_search_time * std::abs(speed) +
+                       std::max({params_.turn_signal_intersection_search_distance,
+                                 params_.turn_signal_roundabout_search_distance, route_->max_turn_signal_distance});
+  if (route_->quiet_at(on_route.s_front, on_route.s_base, reach)) return out;
+  const TurnSignalDecision d = decider_->decide(map, on_route);
   out.blinker = blinker_of(d);
   out.source = out.blinker == Blinker::None ? RequestSource::None : d.source;
-  out.s_front = place.s_front;
   if (out.blinker != Blinker::None) set_place(map, d, out);
   return out;
 }

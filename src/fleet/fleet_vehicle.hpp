@@ -58,6 +58,7 @@ class FleetVehicle {
   bool signalled = false;                ///< the blinker was on at least once
   bool counted_left = false;             ///< counted in left_to_sumo
   bool counted_followed = false;         ///< counted in vehicles_followed
+  std::optional<double> last_speed;      ///< [m/s] at the previous decision (its brake light)
 
  private:
   std::string id_;

@@ -23,7 +23,8 @@ namespace {
 std::optional<FleetTracker> fleet_tracker(const StartedRun& run, const sumo::NetIndex& net) {
   if (!run.scenario.fleet.enabled) return std::nullopt;
   return std::optional<FleetTracker>(std::in_place, run.scenario.fleet, run.scenario.run_params.decider,
-                                     run.scenario.country, net, run.session->ego_vehicle().id);
+                                     run.scenario.country, net, run.session->ego_vehicle().id,
+                                     run.session->delta_t());
 }
 
 }  // namespace

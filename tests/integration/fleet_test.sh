@@ -3,7 +3,8 @@
 #   junction     the signalised crossing with turning traffic: every turning vehicle's blinker by the
 #                rule at C, straight ones none; SUMO's FCD (--fcd-output.signals) shows it every step
 #   ego          the ego's timeline.csv and events.csv byte-identical with and without --fleet, on
-#                the crossing and on bologna/acosta with its own demand
+#                the crossing and on bologna/acosta with its own demand; there every vehicle of the
+#                traffic at the same place at every step (SUMO's FCD)
 #   roundabout   the roundabout under de and kr (entry and exit signals by the preset), with a vehicle
 #                a rerouter sends to another exit once it is on the ring
 #   sweep        a sweep over countries in fleet mode: results.csv's fleet_* columns per country
@@ -48,11 +49,23 @@ done
 
 # ego on bologna/acosta with its demand (hundreds of vehicles), its first 60 s
 acosta=$src/tests/data/scenarios/acosta_red_light_right_of_way.yaml
-"$bin" run "$acosta" --out "$work/acosta_plain" --quiet --set duration=60
-"$bin" run "$acosta" --out "$work/acosta_fleet" --quiet --set duration=60 --fleet
+fcd_plain='sumo_args=[--fcd-output, fcd.xml]'
+"$bin" run "$acosta" --out "$work/acosta_plain" --quiet --set duration=60 --set "$fcd_plain"
+"$bin" run "$acosta" --out "$work/acosta_fleet" --quiet --set duration=60 --set "$fcd_plain" --fleet
 for f in timeline.csv events.csv; do
   cmp -s "$work/acosta_plain/$f" "$work/acosta_fleet/$f" || fail "ego: acosta $f differs with --fleet"
 done
+# SUMO keeps driving the traffic: every vehicle where it was, at every step (signals set, brake
+# lights kept by SUMO's rule)
+"$py" - "$work/acosta_plain/fcd.xml" "$work/acosta_fleet/fcd.xml" <<'PY' || fail "acosta: the traffic moved differently with --fleet"
+import sys
+import xml.etree.ElementTree as ET
+def states(path):
+    return [(s.get("time"), v.get("id"), v.get("x"), v.get("y"), v.get("speed"), v.get("lane"))
+            for s in ET.parse(path).getroot().iter("timestep") for v in s.iter("vehicle")]
+a, b = states(sys.argv[1]), states(sys.argv[2])
+assert len(a) > 20000 and a == b, (len(a), len(b))
+PY
 "$py" - "$work/acosta_fleet/summary.json" <<'PY' || fail "acosta: fleet mode followed too few vehicles"
 import json, sys
 v = json.load(open(sys.argv[1]))["fleet"]["vehicles"]
