@@ -24,6 +24,7 @@ from measure import BenchError, interleaved
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 ACOSTA = os.path.join(ROOT, "sumo_nets", "bologna_acosta", "acosta.sumocfg")
+STEP_LENGTH = 0.1  # [s] both contestants' (a sumocfg without step-length would give sumo 1 s)
 
 
 class Run:
@@ -93,8 +94,8 @@ def write_scenario(work, cfg, duration):
     with open(path, "w") as f:
         f.write("# tools/bench --only fleet: the demand of %s; an ego on edge %s (%.0f m, used by no route)\n"
                 "# at %.2f m/s, so that it lasts the run and meets nobody.\n"
-                "name: fleet_bench\nsumocfg: %s\nduration: %g\nego:\n  route: ['%s']\n  max_speed: %g\n"
-                % (cfg, edge, length, speed, os.path.abspath(cfg), duration, edge, speed))
+                "name: fleet_bench\nsumocfg: %s\nstep_length: %g\nduration: %g\nego:\n  route: ['%s']\n  max_speed: %g\n"
+                % (cfg, edge, length, speed, os.path.abspath(cfg), STEP_LENGTH, duration, edge, speed))
     return path
 
 
@@ -102,7 +103,8 @@ def measure_config(cfg, duration, binary, env, runs, warm_up, work):
     os.makedirs(work, exist_ok=True)
     scenario = write_scenario(work, cfg, duration)
     # SUMO alone: the configuration's own outputs and log go to the scratch folder.
-    sumo_argv = ["sumo", "-c", os.path.abspath(cfg), "--end", "%g" % duration, "--no-step-log", "true",
+    sumo_argv = ["sumo", "-c", os.path.abspath(cfg), "--end", "%g" % duration, "--step-length", "%g" % STEP_LENGTH,
+                 "--no-step-log", "true",
                  "--tripinfo-output", os.path.join(work, "sumo_tripinfo.xml"),
                  "--log", os.path.join(work, "sumo_alone.log")]
 

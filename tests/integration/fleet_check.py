@@ -6,6 +6,8 @@ AssertionError naming what differs.
   roundabout RUN COUNTRY  roundabout_traffic under de or kr: entry and exit signals by the preset
   teleport RUN            cross_teleport: the stuck vehicle's blinker goes off after its teleport
   samples RUN SAMPLES     another TraCI client read, every step, what fleet_events.csv says was set
+  observe RUN             cross_traffic with signals: observe: SUMO's own blinker measured against the
+                          rules (SUMO signals every turn at C, earlier than the rules: behaviour.md §S5)
   rerouted RUN VEHICLE BLINKER  the vehicle another client re-routed signals its new turn at C
   same A B                two runs' fleet_events.csv are byte-identical
 """
@@ -127,6 +129,18 @@ def check_teleport(run):
     assert float(rows[1]["time"]) >= teleport_time, (rows[1]["time"], teleport_time)
 
 
+def check_observe(run):
+    s = fleet_summary(run)
+    assert s["mode"] == "observe", s["mode"]
+    sumo = s["sumo"]
+    assert sum(sumo.values()) == s["vehicle_steps"], (sumo, s["vehicle_steps"])
+    c = {p["id"]: p for p in s["places"]}["C"]
+    assert c["signals"] == 36 and c["sumo_signalled"] == 36, c
+    # SUMO comes on 7 s x 13.89 m/s (97 m) before the lane's end, the rules at most 71.67 m before the
+    # turn lanes: SUMO alone is on for a while before each turn
+    assert sumo["sumo_only_steps"] > 36 * 10 and sumo["opposite_steps"] == 0, sumo
+
+
 def check_samples(run, samples):
     ev = events(run)
     first_seen = {}
@@ -151,6 +165,8 @@ def main():
         check_roundabout(*args)
     elif kind == "teleport":
         check_teleport(*args)
+    elif kind == "observe":
+        check_observe(*args)
     elif kind == "samples":
         check_samples(*args)
     elif kind == "rerouted":

@@ -2,6 +2,7 @@
 # Fleet mode end to end on the real libsumo, sumo-gui and sumo (docs/fleet.md):
 #   junction     the signalised crossing with turning traffic: every turning vehicle's blinker by the
 #                rule at C, straight ones none; SUMO's FCD (--fcd-output.signals) shows it every step
+#   observe      signals: observe: SUMO's own blinker measured against the rules
 #   ego          the ego's timeline.csv and events.csv byte-identical with and without --fleet, on
 #                the crossing and on bologna/acosta with its own demand; there every vehicle of the
 #                traffic at the same place at every step (SUMO's FCD)
@@ -42,6 +43,8 @@ fcd_args='sumo_args=[--fcd-output, fcd.xml, --fcd-output.signals]'
 "$bin" run "$cross" --out "$work/cross_fcd" --quiet --fleet --set "$fcd_args" || fail "cross with FCD: exit code $?"
 check junction "$work/cross_fcd" "$work/cross_fcd/fcd.xml"
 check same "$work/cross_fleet" "$work/cross_fcd"
+"$bin" run "$cross" --out "$work/cross_observe" --quiet --set fleet.signals=observe || fail "observe: exit code $?"
+check observe "$work/cross_observe"
 for f in timeline.csv events.csv; do
   cmp -s "$work/cross_plain/$f" "$work/cross_fleet/$f" || fail "ego: cross $f differs with --fleet"
 done
