@@ -77,13 +77,19 @@ void SessionImpl<Api>::traffic_states(const std::vector<std::string>& ids, bool 
         s.lane_pos = subscription::subscribed_number(r, libsumo::VAR_LANEPOSITION);
         s.speed = subscription::subscribed_number(r, libsumo::VAR_SPEED);
         s.signals = with_signals ? subscription::subscribed_int(r, libsumo::VAR_SIGNALS, 0) : 0;
+        s.known = true;
         continue;
       }
-      s.route_id = Api::Vehicle::getRouteID(ids[i]);  // in process, or not yet answered over TraCI
-      s.lane = Api::Vehicle::getLaneID(ids[i]);
-      s.lane_pos = Api::Vehicle::getLanePosition(ids[i]);
-      s.speed = Api::Vehicle::getSpeed(ids[i]);
-      s.signals = with_signals ? Api::Vehicle::getSignals(ids[i]) : 0;
+      try {  // in process, or not yet answered over TraCI
+        s.route_id = Api::Vehicle::getRouteID(ids[i]);
+        s.lane = Api::Vehicle::getLaneID(ids[i]);
+        s.lane_pos = Api::Vehicle::getLanePosition(ids[i]);
+        s.speed = Api::Vehicle::getSpeed(ids[i]);
+        s.signals = with_signals ? Api::Vehicle::getSignals(ids[i]) : 0;
+        s.known = true;
+      } catch (const libsumo::TraCIException&) {
+        s.known = false;  // gone between SUMO's arrival lists (another client removed it)
+      }
     }
     return 0;
   });
@@ -93,6 +99,8 @@ template <class Api>
 void SessionImpl<Api>::set_traffic_signals(const std::string& id, int signal_mask) {
   try {
     Api::Vehicle::setSignals(id, signal_mask);
+  } catch (const libsumo::TraCIException&) {
+    // unknown: another TraCI client removed it this round; SUMO's arrival list reports it next
   } catch (const std::exception& e) {
     throw SumoError("SUMO refused the signals of vehicle '" + id + "': " + failure_reason(e));
   }

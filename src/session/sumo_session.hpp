@@ -297,6 +297,7 @@ class SumoSession {
     double lane_pos = 0.0;  ///< front bumper position on `lane` [m]
     double speed = 0.0;     ///< [m/s]
     int signals = 0;        ///< its signal mask now (read only when asked: `with_signals`)
+    bool known = true;      ///< false: SUMO no longer knows the vehicle (removed by another client)
   };
   /// Starts following `id` (over TraCI: subscribes its variables). Call once after it departed.
   virtual void track_traffic(const std::string& id, bool with_signals) = 0;
@@ -304,7 +305,8 @@ class SumoSession {
   virtual void traffic_states(const std::vector<std::string>& ids, bool with_signals,
                               std::vector<TrafficState>& out) const = 0;
   /// Sets a vehicle's signal mask for the next step (Vehicle::setSignals: SUMO shows it for one step
-  /// and then computes its own again, docs/behaviour.md §S4).
+  /// and then computes its own again, docs/behaviour.md §S4). A vehicle SUMO no longer knows (another
+  /// TraCI client removed it) is passed over.
   virtual void set_traffic_signals(const std::string& id, int signal_mask) = 0;
 
  protected:

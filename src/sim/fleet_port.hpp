@@ -18,6 +18,7 @@ class FleetPort {
 
  private:
   void depart(const std::string& id);
+  void forget_unknown();
 
   sumo::SumoSession& session_;
   FleetTracker& tracker_;

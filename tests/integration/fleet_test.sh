@@ -13,7 +13,8 @@
 #   gui          --gui under Xvfb: fleet_events.csv byte-identical to the embedded run's, and the
 #                screenshot shows other vehicles' blinkers
 #   connect      --connect beside a Python TraCI client that reads every vehicle's signals each step
-#                (they are what fleet_events.csv says) and re-routes a vehicle (followed)
+#                (they are what fleet_events.csv says), re-routes a vehicle (followed) and removes
+#                another (passed over)
 # Every service started here (Xvfb, sumo, the Python client) is stopped by its PID.
 # usage: fleet_test.sh SIGNALSIM_BINARY SOURCE_DIR
 set -u
@@ -132,13 +133,14 @@ sumo -n "$src/sumo_nets/cross/cross.net.xml" -r "$data/cross_traffic.rou.xml" --
   --no-step-log true --remote-port "$port" --num-clients 2 >"$work/server.log" 2>&1 &
 server=$!; pids+=($server)
 wait_listening "$port"
-"$py" "$src/tests/integration/fleet_client.py" "$port" 170 "$work/samples.csv" E_straight.0 out_N \
+"$py" "$src/tests/integration/fleet_client.py" "$port" 170 "$work/samples.csv" E_straight.0 out_N N_left.1 \
   >"$work/client.log" 2>&1 &
 client=$!; pids+=($client)
 "$bin" run "$cross" --out "$work/connect" --quiet --fleet --connect "127.0.0.1:$port" --client-order 2 ||
   fail "connect: exit code $?"
 wait "$client" || fail "connect: the client failed: $(tail -3 "$work/client.log")"
-grep -q "rerouted" "$work/client.log" || fail "connect: the client did not re-route: $(cat "$work/client.log")"
+grep -q "rerouted removed" "$work/client.log" ||
+  fail "connect: the client did not re-route and remove: $(cat "$work/client.log")"
 kill "$server" 2>/dev/null
 check samples "$work/connect" "$work/samples.csv"
 check rerouted "$work/connect" E_straight.0 right
