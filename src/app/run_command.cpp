@@ -35,6 +35,9 @@ namespace signalsim::app {
 namespace {
 
 
+// sumo-gui's zoom in fleet mode [%]: about 400 m across, the traffic around the ego (docs/fleet.md).
+constexpr double kFleetGuiZoom = 200.0;
+
 // How an embedded SUMO's failed start begins its message (session_embedded.cpp).
 constexpr const char* kSumoLoadFailure = "SUMO could not load the simulation: ";
 
@@ -52,6 +55,7 @@ struct RunOptions {
   bool plot = false;  ///< draw the run's pictures with signalsim-plot afterwards
   std::string driver = "signalsim";  ///< who drives the ego: signalsim, or sumo (observed only)
   SutFlags suts;                     ///< --decider / --light-judge as given (they are overrides too)
+  bool fleet = false;                ///< --fleet: fleet mode on (docs/fleet.md)
 };
 
 // Every exit-2 path: the output directory must not keep a previous run's files that could pass for
@@ -111,7 +115,8 @@ int run(const RunOptions& options) {
   set_notes_enabled(false);
   try {
     scenario = load_scenario(options.scenario_path, options.overrides);
-    const RunContext context = run_context(options);
+    RunContext context = run_context(options);
+    if (scenario->fleet.enabled) context.backend.gui_zoom = kFleetGuiZoom;  // the traffic around the ego
     // SUMO driving leaves no decision to a system under test: refused rather than silently not run.
     if (context.sumo_drives)
       for (const SutSpec* sut : {&scenario->decider, &scenario->light_judge})
@@ -158,6 +163,10 @@ int run(const RunOptions& options) {
       std::printf("%s%s: %s (%zu steps, %.1f s simulated, %zu events, %.2f s wall)\n", scenario->name.c_str(),
                   context.sumo_drives ? " (driven by SUMO)" : "", std::string(to_string(status)).c_str(), record.rows.size(),
                   simulated_span(record, scenario->sumo.begin), record.events.size(), wall);
+      if (record.fleet)
+        std::printf("  fleet: %d vehicles followed, %d signalled, %zu blinker changes, %d left to SUMO\n",
+                    record.fleet->totals.vehicles_followed, record.fleet->totals.vehicles_signalled,
+                    record.fleet->events.size(), record.fleet->totals.left_to_sumo);
       for (const auto& r : results)
         std::printf("  [%s] %s: %s\n", r.passed ? "ok" : "FAIL", r.description.c_str(), r.detail.c_str());
       for (const LawVerdict& v : law)
@@ -215,7 +224,13 @@ Command add_run_command(CLI::App& app) {
                   "With --connect or --gui: the longest wait in seconds for SUMO to accept the connection and to "
                   "answer each request, else the run ends with an error (default 30 with --connect, none with --gui)")
       ->check(number_between(0.1, 86400.0));
-  return {sub, [options] { return run(*options); }};
+  sub->add_flag("--fleet", options->fleet,
+                "Fleet mode: every vehicle of SUMO's traffic gets its blinker from the reference decider (the "
+                "scenario's fleet: filters kept; the same as --set fleet.signals=set, docs/fleet.md)");
+  return {sub, [options] {
+            if (options->fleet) options->overrides.set.push_back("fleet.signals=set");
+            return run(*options);
+          }};
 }
 
 }  // namespace signalsim::app

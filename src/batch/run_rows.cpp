@@ -14,6 +14,19 @@ namespace signalsim {
 namespace fs = std::filesystem;
 namespace {
 
+// Fleet mode's counts (summary.json `fleet`, docs/fleet.md) as fleet_* cells: a country sweep in
+// fleet mode shows each country's traffic side by side.
+void add_fleet_cells(ResultRow& row, const nlohmann::ordered_json& summary) {
+  if (!summary.contains("fleet") || !summary["fleet"].is_object()) return;
+  const auto& fleet = summary["fleet"];
+  for (const char* count : {"followed", "signalled", "left_to_sumo"})
+    row.cells.emplace(std::string("fleet_") + count, fleet["vehicles"][count].dump());
+  for (const char* field : {"on", "left", "right", "lead_mean"})
+    row.cells.emplace(std::string("fleet_signals_") + field, fleet["signals"][field].dump());
+  if (fleet["sumo"].is_object())
+    for (const auto& [name, value] : fleet["sumo"].items()) row.cells.emplace("fleet_sumo_" + name, value.dump());
+}
+
 // Status, expectations and metrics from a finished worker's summary.json.
 void read_summary(ResultRow& row, const RunSpec& run, const std::string& dir) {
   const auto summary = read_json_file((fs::path(dir) / run_files::kSummary).string());
@@ -53,6 +66,7 @@ void read_summary(ResultRow& row, const RunSpec& run, const std::string& dir) {
   }
   for (const auto& [column, text] : flatten_metrics(metrics))
     if (!text.empty()) row.cells.emplace(column, text);
+  add_fleet_cells(row, summary);
   // A system under test: its name (a swept decider keeps its column as swept) and its agreement.
   for (const std::string role : {"decider", "light_judge"}) {
     if (!summary.contains(role) || !summary[role].is_object()) continue;

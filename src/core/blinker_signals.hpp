@@ -16,6 +16,7 @@ inline constexpr int kBlinkerRight = 1;
 inline constexpr int kBlinkerLeft = 2;
 inline constexpr int kBlinkerEmergency = 4;
 inline constexpr int kBlinkerMask = kBlinkerRight | kBlinkerLeft | kBlinkerEmergency;
+inline constexpr int kBrakeLight = 8;  ///< SUMO computes it each step; its junction model reads it
 
 }  // namespace sumo
 

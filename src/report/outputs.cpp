@@ -14,6 +14,7 @@
 #include "report/run_files.hpp"
 #include "report/summary_sections.hpp"
 #include "report/sut_agreement.hpp"
+#include "report/fleet_outputs.hpp"
 #include "scenario/take_over.hpp"
 #include "session/sumo_session.hpp"
 
@@ -256,6 +257,7 @@ void write_run_outputs(const std::string& dir, const Scenario& scenario, const s
       std::any_of(record.rows.begin(), record.rows.end(), [](const TimelineRow& r) { return !r.tl_id.empty(); });
   if (light_ahead)
     write_atomically((fs::path(dir) / run_files::kJudgeCurves).string(), judge_curves_csv(scenario.run_params.judge));
+  if (record.fleet) write_fleet_events_csv((fs::path(dir) / run_files::kFleetEvents).string(), *record.fleet);
 
   nlohmann::ordered_json summary;
   summary["scenario"] = scenario.name;
@@ -282,6 +284,7 @@ void write_run_outputs(const std::string& dir, const Scenario& scenario, const s
   // Only with a system under test of the role (docs/decider.md): every other summary stays as it was.
   if (!record.decider_sut.empty()) summary["decider"] = decider_agreement_json(scenario, plan.map, record);
   if (!record.light_judge_sut.empty()) summary["light_judge"] = light_judge_agreement_json(record);
+  if (record.fleet) summary["fleet"] = fleet_json(*record.fleet);  // fleet mode only (docs/fleet.md)
   nlohmann::ordered_json expectations = nlohmann::ordered_json::array();
   for (const ExpectationResult& r : results)
     expectations.push_back({{"expectation", r.description}, {"passed", r.passed}, {"detail", r.detail}});

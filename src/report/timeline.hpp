@@ -11,6 +11,7 @@
 
 #include "scenario/scenario.hpp"
 #include "net/sumo_log.hpp"
+#include "report/fleet_record.hpp"
 #include "session/sumo_session.hpp"
 #include "turn_signal/turn_signal_info.hpp"
 
@@ -206,6 +207,8 @@ struct RunRecord {
   /// The implementations under test (docs/decider.md), as named; "" when the reference decided.
   std::string decider_sut, light_judge_sut;
   RunSumoInfo sumo;
+  /// Fleet mode's record (docs/fleet.md); empty when it is off.
+  std::optional<FleetRecord> fleet;
 };
 
 }  // namespace signalsim

@@ -108,6 +108,7 @@ void read_scenario(const YAML::Node& root, const std::string& path, const YAML::
   read_parameters(top, path, parameter_overrides, country, s);
   read_expectations(top, path, s);
   read_systems_under_test(top, path, s);
+  read_fleet(top, path, s);
   top.finish();
   if (country) check_driving_side(*country, s);
 }

@@ -212,6 +212,19 @@ using Expectation = std::variant<ExpectBlinkerThrough, ExpectNoBlinker, ExpectBl
 /// One line describing an expectation, e.g. "blinker_through_junction C left lead 30".
 std::string describe(const Expectation& e);
 
+/// `fleet:` fleet mode (docs/fleet.md): the reference decider gives every selected vehicle of SUMO's
+/// traffic its blinker, under the scenario's country preset. A vehicle is selected when it matches
+/// every filter given (none given: every vehicle but the ego).
+struct FleetSpec {
+  bool enabled = false;
+  std::string vtype;       ///< its vType id equals this ("" any)
+  std::string vclass;      ///< its vClass equals this ("" any)
+  std::string id_pattern;  ///< an ECMAScript regular expression its whole id matches ("" any)
+  /// true (`signals: set`): signalsim sets the selected vehicles' signals; false (`signals:
+  /// observe`): it decides and compares with SUMO's own blinker, setting nothing.
+  bool set_signals = true;
+};
+
 /// Changes to a scenario from the command line or a sweep, applied to the YAML before it is read.
 struct ScenarioOverrides {
   /// "key=value": a scenario key path (`seed=3`, `ego.max_speed=10`, `country=de`) or a parameter
@@ -260,6 +273,7 @@ struct Scenario {
   SutSpec decider;
   SutSpec light_judge;
   double sut_timeout = 5.0;       ///< `sut_timeout:` [s] a SUT's answer to one step at most
+  FleetSpec fleet;                ///< `fleet:` (off unless given)
   /// Where each key came from: its line, or the --set item that gave it (key_error below).
   KeyOrigins origins;
 };

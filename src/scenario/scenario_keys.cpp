@@ -51,6 +51,9 @@ const KeyTable& scenario_keys() {
                       "The traffic-light judge under test: reference, traci, lib:PATH.so or exec:COMMAND."),
           number_key("sut_timeout", d.sut_timeout, 0.01, 3600.0, "s",
                      "A decider or light judge under test answers each step within this, or the run ends as an error."),
+          as_nullable(table_key("fleet", KeyType::Mapping, fleet_keys(),
+                                "Fleet mode (docs/fleet.md): the reference decider gives every selected vehicle of "
+                                "SUMO's traffic its blinker; empty: every vehicle.")),
           table_key("expect", KeyType::KindList, expectation_kinds(),
                     "Expectations checked after the run (exit code 1 when one fails)."),
       },
@@ -85,6 +88,22 @@ const KeyTable& ego_keys() {
                                    "base_link_to_front from it (the keys given here win)."),
       },
       {{"route", "id"}}};
+  return table;
+}
+
+const KeyTable& fleet_keys() {
+  static const KeyTable table{
+      "fleet",
+      "Which vehicles of SUMO's traffic get their blinker from the reference decider, and whether it is set.",
+      {
+          text_key("vtype", "Only vehicles of this vType id."),
+          text_key("vclass", "Only vehicles of this vClass (passenger, bus, ...)."),
+          text_key("id_pattern", "Only vehicles whose whole id matches this ECMAScript regular expression."),
+          text_key_or("signals", "set",
+                      "set: signalsim sets their signals every step; observe: it decides, sets nothing and "
+                      "compares with SUMO's own blinker.",
+                      {"set", "observe"}),
+      }};
   return table;
 }
 

@@ -14,6 +14,7 @@ const KeyTable& v2i_channel_keys();      ///< `perception.v2i:`
 const KeyTable& params_keys();           ///< `params:`
 const KeyTable& obstacle_keys();         ///< each item of `obstacles:`
 const KeyTable& maneuver_kinds();        ///< the kinds of `maneuvers:` items, each with its table
+const KeyTable& fleet_keys();            ///< `fleet:`
 const KeyTable& expectation_kinds();     ///< the kinds of `expect:` items, each with its table or value
 
 /// The blinker values an expectation names, in the order messages list them.

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <optional>
+#include <regex>
 
 #include "scenario/input_error.hpp"
 #include "scenario/scenario_keys.hpp"
@@ -84,6 +85,26 @@ void read_signal_inputs(const YamlFields& top, const std::string& path, Scenario
       s.light_offsets[entry.first.Scalar()] = *value;
     }
   }
+}
+
+void read_fleet(const YamlFields& top, const std::string& path, Scenario& s) {
+  if (!top.has("fleet")) return;
+  s.fleet.enabled = true;
+  const YAML::Node node = top.node("fleet");
+  if (!node || node.IsNull()) return;  // `fleet:` alone: every vehicle, signals set
+  YamlFields f(node, path, "fleet", fleet_keys());
+  s.fleet.vtype = f.text_or("vtype", "");
+  s.fleet.vclass = f.text_or("vclass", "");
+  s.fleet.id_pattern = f.text_or("id_pattern", "");
+  s.fleet.set_signals = f.choice("signals") == "set";
+  if (!s.fleet.id_pattern.empty()) {
+    try {
+      std::regex check(s.fleet.id_pattern, std::regex::ECMAScript);
+    } catch (const std::regex_error& e) {
+      f.fail("id_pattern", "'" + s.fleet.id_pattern + "' is not a regular expression (" + e.what() + ")");
+    }
+  }
+  f.finish();
 }
 
 }  // namespace signalsim

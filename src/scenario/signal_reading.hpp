@@ -14,4 +14,8 @@ namespace signalsim {
 /// Throws InputError (file, line, key) for a bad key, value or blackout pair.
 void read_signal_inputs(const YamlFields& top, const std::string& path, Scenario& s);
 
+/// `fleet:` (docs/fleet.md): the selection (an id_pattern that is no regular expression is refused at
+/// its line) and the signals mode. Absent: fleet mode off.
+void read_fleet(const YamlFields& top, const std::string& path, Scenario& s);
+
 }  // namespace signalsim

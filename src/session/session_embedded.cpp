@@ -154,7 +154,7 @@ std::unique_ptr<SumoSession> open_libsumo_session(const SessionConfig& config) {
 }  // namespace signalsim::sumo
 
 // The module's entry (session_factory.hpp): the program looks it up by name after dlopen.
-extern "C" const signalsim::sumo::EmbeddedBackend* signalsim_embedded_backend_v3() {
+extern "C" const signalsim::sumo::EmbeddedBackend* signalsim_embedded_backend_v4() {
   using namespace signalsim::sumo;
   static const EmbeddedBackend backend{kEmbeddedBackendBuild, &open_libsumo_session, &libsumo_net_load_error,
                                         &libsumo_reusable};

@@ -27,7 +27,7 @@ struct EmbeddedBackend {
 
 /// The module's one exported function (extern "C"): its EmbeddedBackend. The version in the name
 /// changes with EmbeddedBackend or the session interface.
-inline constexpr const char* kEmbeddedBackendSymbol = "signalsim_embedded_backend_v3";
+inline constexpr const char* kEmbeddedBackendSymbol = "signalsim_embedded_backend_v4";
 /// The build both were compiled in (a random id CMake draws once per build folder): SessionConfig and
 /// SumoSession cross the boundary as C++ types, so a module from another build is refused.
 inline constexpr const char* kEmbeddedBackendBuild = SIGNALSIM_BUILD_ID;

@@ -15,6 +15,7 @@
 //   session_impl_observe.hpp   what it reads: the step and its subscribed answer, the ego, the lights
 //   session_impl_commands.hpp  what it tells SUMO: signals, speed, lateral offset, modes, programs
 //   session_impl_ego.hpp       the ego's life: insertion or take-over, control, hand-back
+//   session_impl_traffic.hpp   the other vehicles, for fleet mode: what changed, where each is, signals
 //   session_lane_data.hpp      the static lane data it asks once and keeps (LaneData)
 //   session_step_answers.hpp   what SUMO answered during the current step, asked once (StepAnswers)
 #pragma once
@@ -75,6 +76,16 @@ class SessionImpl : public SumoSession {
   void set_emergency_braking(bool on) override;
   void set_sumo_lane_limits(bool on) override;
   void set_right_of_way(bool respect) override;
+
+  // The other vehicles, for fleet mode (session_impl_traffic.hpp).
+  TrafficChanges traffic_changes() const override;
+  std::vector<std::string> traffic_present() const override;
+  TrafficVehicle traffic_vehicle(const std::string& id) const override;
+  std::vector<std::string> traffic_route(const std::string& id) const override;
+  void track_traffic(const std::string& id, bool with_signals) override;
+  void traffic_states(const std::vector<std::string>& ids, bool with_signals,
+                      std::vector<TrafficState>& out) const override;
+  void set_traffic_signals(const std::string& id, int signal_mask) override;
 
  protected:
   // The ego's life (session_impl_ego.hpp).
@@ -151,3 +162,4 @@ class SessionImpl : public SumoSession {
 #include "session/session_impl_observe.hpp"
 #include "session/session_impl_commands.hpp"
 #include "session/session_impl_ego.hpp"
+#include "session/session_impl_traffic.hpp"

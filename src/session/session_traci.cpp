@@ -118,7 +118,7 @@ class TraciSession final : public SessionImpl<LibtraciApi> {
     if (config_.backend.kind != BackendKind::Gui) return;
     libtraci::Vehicle::setColor(ego_, libsumo::TraCIColor(255, 0, 255, 255));  // magenta: easy to find
     libtraci::GUI::trackVehicle(kView, ego_);
-    libtraci::GUI::setZoom(kView, kGuiZoom);
+    libtraci::GUI::setZoom(kView, config_.backend.gui_zoom > 0.0 ? config_.backend.gui_zoom : kGuiZoom);
     shots_left_ = kShotsPerPicture;  // the view at departure, replaced by the one at the first blinker
   }
 

@@ -67,6 +67,9 @@ struct BackendOptions {
   /// answers (--traci-timeout; traci_relay.hpp); 0: no limit
   double traci_timeout = 30.0;
   int gui_delay_ms = 0;            ///< gui: sumo-gui's --delay between steps [ms]
+  /// gui: the view's zoom [%] while it tracks the ego; 0: the default, about 60 m across (the ego
+  /// and its blinkers). Fleet mode shows the traffic around it (docs/fleet.md).
+  double gui_zoom = 0.0;
   /// gui: a PNG of the view (TraCI GUI.screenshot) written here at the first step the ego's blinker
   /// is on, the view framed on the junction ahead (or at departure when it never is); empty: none.
   std::string screenshot;
@@ -277,6 +280,49 @@ class SumoSession {
 
   /// gui: what the kept screenshot shows; none without a screenshot (other back-ends).
   virtual std::optional<GuiPicture> gui_picture() const { return std::nullopt; }
+
+  // The other vehicles (fleet mode, docs/fleet.md): asked only for the vehicles present, never for
+  // the net or for vehicles that left. The ego is never among them (the caller skips its id).
+
+  /// What changed in SUMO's vehicles during the last step (Simulation::getDepartedIDList,
+  /// getArrivedIDList, getStartingTeleportIDList).
+  struct TrafficChanges {
+    std::vector<std::string> departed;
+    std::vector<std::string> arrived;
+    std::vector<std::string> teleport_started;
+  };
+  virtual TrafficChanges traffic_changes() const = 0;
+  /// Every vehicle in the simulation now (Vehicle::getIDList): once, when fleet mode starts after
+  /// the ego's departure.
+  virtual std::vector<std::string> traffic_present() const = 0;
+  /// A vehicle as it departed: its vType, vClass and length, once per vehicle.
+  struct TrafficVehicle {
+    std::string type;
+    std::string vclass;
+    double length = 0.0;  ///< [m]
+  };
+  virtual TrafficVehicle traffic_vehicle(const std::string& id) const = 0;
+  /// A vehicle's route now (Vehicle::getRoute): asked when its route id changed.
+  virtual std::vector<std::string> traffic_route(const std::string& id) const = 0;
+  /// A vehicle where it is now: one batch of reads per vehicle and step (over TraCI a subscription
+  /// made by track_traffic, answered with the step; in process the getters).
+  struct TrafficState {
+    std::string route_id;  ///< changes when SUMO replaced its route (rerouter, TraCI changeTarget, ...)
+    std::string lane;      ///< "" while it teleports (off the lanes)
+    double lane_pos = 0.0;  ///< front bumper position on `lane` [m]
+    double speed = 0.0;     ///< [m/s]
+    int signals = 0;        ///< its signal mask now (read only when asked: `with_signals`)
+    bool known = true;      ///< false: SUMO no longer knows the vehicle (removed by another client)
+  };
+  /// Starts following `id` (over TraCI: subscribes its variables). Call once after it departed.
+  virtual void track_traffic(const std::string& id, bool with_signals) = 0;
+  /// Fills `out` with the state of each of `ids` (tracked with track_traffic), in the same order.
+  virtual void traffic_states(const std::vector<std::string>& ids, bool with_signals,
+                              std::vector<TrafficState>& out) const = 0;
+  /// Sets a vehicle's signal mask for the next step (Vehicle::setSignals: SUMO shows it for one step
+  /// and then computes its own again, docs/behaviour.md §S4). A vehicle SUMO no longer knows (another
+  /// TraCI client removed it) is passed over.
+  virtual void set_traffic_signals(const std::string& id, int signal_mask) = 0;
 
  protected:
   SumoSession() = default;

@@ -12,10 +12,12 @@
 //     apply     the one writer: SUMO's modes, blinker bits, speed, lateral offset, back-up; SUMO
 //               advances one step and says whether the ego is still there and its signal mask
 //     record    the core's row, events, stops; the end: arrived, stuck or out of time
+// Fleet mode (docs/fleet.md): before each step the other vehicles' blinkers (sim/fleet_port).
 // A SUMO-driven run (RunContext::sumo_drives) runs the same loop with the SUMO-driven core
 // (step/sumo_driven_core.hpp), which commands nothing.
 #pragma once
 
+#include "fleet/fleet_tracker.hpp"
 #include "net/net_index.hpp"
 #include "report/timeline.hpp"
 #include "route/route_builder.hpp"
@@ -35,8 +37,9 @@ RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, co
 /// configuration asks for (signalsim drives, or SUMO does). Throws sumo::SumoError when SUMO fails.
 RunRecord drive(const StartedRun& run, const sumo::NetIndex& net);
 
-/// The step loop of `core` on `session` until the core says the run is over. Throws
-/// sumo::SumoError when SUMO fails.
-RunRecord run_steps(sumo::SumoSession& session, RunCore& core);
+/// The step loop of `core` on `session` until the core says the run is over; with `fleet`, fleet
+/// mode's pass over the other vehicles before each step (docs/fleet.md). Throws sumo::SumoError when
+/// SUMO fails.
+RunRecord run_steps(sumo::SumoSession& session, RunCore& core, FleetTracker* fleet = nullptr);
 
 }  // namespace signalsim

@@ -96,6 +96,7 @@ std::vector<Place> places(const YAML::Node& doc) {
                             {"perception", {"perception"}, &perception_keys()},
                             {"perception.v2i", {"perception", "v2i"}, &v2i_channel_keys()},
                             {"params", {"params"}, &params_keys()},
+                            {"fleet", {"fleet"}, &fleet_keys()},
                             {"obstacles[0]", {"obstacles", "0"}, &obstacle_keys()}};
   for (const char* list : {"maneuvers", "expect"}) {
     const KeyTable& kinds = std::string(list) == "maneuvers" ? maneuver_kinds() : expectation_kinds();
@@ -134,6 +135,11 @@ TEST(KeyTables, TheEveryKeyFilesHoldEveryKeyOfTheTablesAndNothingElse) {
 TEST(KeyTables, TheLoaderReadsEveryKey) {
   Scenario s;
   ASSERT_NO_THROW(s = load_scenario(kEveryKey));
+  EXPECT_TRUE(s.fleet.enabled);
+  EXPECT_FALSE(s.fleet.set_signals);  // signals: observe
+  EXPECT_EQ(s.fleet.vtype, "car");
+  EXPECT_EQ(s.fleet.vclass, "passenger");
+  EXPECT_EQ(s.fleet.id_pattern, "veh[0-9]+");
   EXPECT_EQ(s.sumo.sumo_args.size(), 2u);
   EXPECT_EQ(s.seed, 3);
   EXPECT_EQ(s.ego.depart_lane, 0);
@@ -216,6 +222,20 @@ TEST(KeyTables, ReadingAKeyTheTableDoesNotListIsALoaderBug) {
   EXPECT_THROW((void)fields.number("top_speed", 1.0, 0.0, 2.0), std::logic_error);
   EXPECT_THROW((void)fields.text("max_speed"), std::logic_error);  // a number in the table
   EXPECT_DOUBLE_EQ(fields.number("max_speed"), 3.0);
+}
+
+TEST(KeyTables, FleetModeIsOffWithoutTheKeyAndAnIdPatternMustBeARegularExpression) {
+  EXPECT_FALSE(load_scenario(kTakeOver).fleet.enabled);
+  const Scenario all = load_scenario(kTakeOver, {{"fleet.signals=set"}});  // what run --fleet sets
+  EXPECT_TRUE(all.fleet.enabled && all.fleet.set_signals && all.fleet.id_pattern.empty());
+  try {
+    (void)load_scenario(kTakeOver, {{"fleet.id_pattern=veh[0-9"}});
+    FAIL() << "a broken id_pattern was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("key 'fleet.id_pattern': 'veh[0-9' is not a regular expression"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 }  // namespace
