@@ -7,10 +7,8 @@ exit 4 (its run error), well-formed JUnit XML and a report, and an error row wit
 pictures.
 
   report_folder_test.py SIGNALSIM SOURCE_DIR"""
-import csv
 import json
 import os
-import re
 import shutil
 import signal
 import subprocess
@@ -19,26 +17,16 @@ import tempfile
 import time
 import xml.etree.ElementTree as ElementTree
 
-
-def check(condition, message):
-    if not condition:
-        print(f"FAIL: {message}", file=sys.stderr)
-        sys.exit(1)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from report_pages_test import check, page_data as table_rows  # noqa: E402
 
 
 def run(command, expected, cwd):
+    """As report_pages_test.run, with output that may not be UTF-8 (a Latin-1 file name)."""
     done = subprocess.run(command, capture_output=True, timeout=600, cwd=cwd)
     stdout, stderr = done.stdout.decode(errors="replace"), done.stderr.decode(errors="replace")
     check(done.returncode == expected, f"{command}: exit {done.returncode}, expected {expected}\n{stdout}\n{stderr}")
     return stdout, stderr
-
-
-def table_rows(out):
-    with open(os.path.join(out, "report.html"), encoding="utf-8") as f:
-        text = f.read()
-    data = json.loads(re.search(r'<script type="application/json" id="report-data">(.*?)</script>', text, re.S).group(1))
-    keys = [c["key"] for c in data["columns"]] + ["page"]
-    return text, [dict(zip(keys, row)) for row in data["rows"]]
 
 
 def golden_with_right_blinker(source, tmp):
