@@ -142,7 +142,10 @@ int make_html_report(const std::string& out_dir, bool all_pictures, int jobs, bo
   std::vector<std::string> args = {"report", out_dir, "--quiet"};
   if (all_pictures) args.push_back("--all");
   if (jobs > 0) args.insert(args.end(), {"--jobs", std::to_string(jobs)});
-  const int code = run_plot_tool(args);
+  // exit 2 (not an output folder) and 3 (not writable) are the tool's one line; others (a crash) also ours
+  const int code = run_plot_tool(args, true);
+  if (code != 0 && code != kExitBadInput && code != kExitPicture)
+    std::fprintf(stderr, "signalsim: the report failed (signalsim-plot exit code %d)\n", code);
   if (code == 0 && !quiet) std::printf("report: %s\n", (fs::path(out_dir) / kReportPage).string().c_str());
   return code;
 }
