@@ -25,6 +25,8 @@ from matplotlib.patches import Rectangle
 
 from signalsim_plot.cli import InputError
 from signalsim_plot.data import number, read_csv
+from signalsim_plot.heat_cells import (SIGNED, ZERO_GAP, cell_value, direction_text,  # noqa: F401
+                                       format_value, ordered_values, section_of_metric)
 
 FIXED_BEFORE = ("run", "scenario", "file")
 FIXED_AFTER = ("status",)
@@ -36,21 +38,6 @@ def swept_columns(header):
         return header[header.index("file") + 1:header.index("status")]
     except ValueError as e:
         raise InputError("results.csv lacks the 'file' or 'status' column") from e
-
-
-def cell_value(text):
-    """A cell as a number: numbers as they are, true/false as 1/0, anything else None."""
-    if text in ("true", "false"):
-        return 1.0 if text == "true" else 0.0
-    return number(text)
-
-
-def ordered_values(values):
-    """Distinct values: numerically sorted when all are numbers, else in first-seen (sweep) order."""
-    distinct = list(dict.fromkeys(values))
-    if all(number(v) is not None for v in distinct):
-        return sorted(distinct, key=float)
-    return distinct
 
 
 def default_metric(header, rows):
@@ -68,14 +55,8 @@ UNITS = {"lead_distance": "m", "stop_position_error": "m", "lead_time": "s", "ti
          "max_decel": "m/s²", "max_jerk": "m/s³", "collisions": "count", "blinker_events": "count",
          "flickers": "count", "missed_signals": "count", "red_light_violations": "count",
          "expectations_passed": "count", "expectations_total": "count"}
-# Signed metrics: a diverging map centred on 0, and what a negative value means.
-SIGNED = {"lead_distance": "< 0: late, the blinker came on after the section start",
-          "lead_time": "< 0: late, the blinker came on after the section start",
-          "stop_position_error": "< 0: at rest short of the stop point"}
 FAIL_COLOR, ERROR_COLOR, WRONG_COLOR = "#d00000", "#ff8c00", "#7b1fa2"
 MAX_NAME = 64
-ZERO_GAP = 0.25  # the diverging map: a value v != 0 is drawn at least this share of the half range from 0
-ARROWS = {"left": "←", "right": "→", "hazard": "↔", "none": "·"}
 
 
 def gapped_norm(half):
@@ -85,35 +66,6 @@ def gapped_norm(half):
     forward = lambda v: np.where(np.asarray(v) == 0, 0.0, np.asarray(v) + np.sign(v) * gap)  # noqa: E731
     inverse = lambda u: np.sign(u) * np.maximum(np.abs(u) - gap, 0.0)  # noqa: E731
     return FuncNorm((forward, inverse), vmin=-half, vmax=half)
-
-
-def format_value(value):
-    """A cell's value as text: never rounded to 0 (-0.004), 2 decimals, whole numbers from 1000."""
-    if value == 0:
-        return "0"
-    if abs(value) < 0.005:
-        return f"{value:.2g}"
-    return f"{value:.2f}" if abs(value) < 1000 else f"{value:.0f}"
-
-
-def section_of_metric(metric, header):
-    """The section a metric column belongs to (turn1 of turn1.lead_distance) when results.csv has its
-    blinker_at_start column, else None."""
-    item = metric.rsplit(".", 1)[0] if "." in metric else None
-    return item if item and f"{item}.blinker_at_start" in header else None
-
-
-def direction_text(directions, asked):
-    """The cell's line about the blinker at the section start: arrows with counts when the runs differ;
-    (text, wrong) where wrong says a run showed a blinker other than `asked` (and not none)."""
-    if not directions:
-        return "", False
-    if len(directions) == 1:
-        parts = [f"{ARROWS.get(b, b)} {b}" for b in directions]
-    else:
-        parts = [f"{ARROWS.get(b, b)}×{n}" for b, n in directions.items()]
-    wrong = any(b not in (asked, "none", "") for b in directions) and asked not in ("", None)
-    return "start: " + ", ".join(parts) + (f" ≠ asks {ARROWS.get(asked, asked)}" if wrong else ""), wrong
 
 
 def metric_kind(metric, rows):

@@ -219,7 +219,9 @@ Command add_check_command(CLI::App& app) {
               BatchSettings settings = to_settings(o->batch, "out/check", 300.0);
               settings.quiet = settings.quiet || isatty(STDOUT_FILENO) != 1;  // the verdicts below say it all
               const BatchResult result = run_batch(runs, settings);
+              const CommandFacts facts{"check", o->paths, "", o->golden_dir, o->set, {}, settings.jobs};
               if (result.interrupted) {
+                write_command_facts(settings.out_dir, facts);  // and no report or verdicts of an earlier check
                 std::printf("%s\n", batch_summary(result, settings.out_dir).c_str());
                 return kExitInterrupted;
               }
@@ -236,8 +238,8 @@ Command add_check_command(CLI::App& app) {
                           cases.size(), cases.size() == 1 ? "" : "s", cases.size() - failed - errors, failed, errors,
                           errors == 1 ? "" : "s", result.no_expectations, o->update ? " (golden files updated)" : "");
               if (!o->junit.empty()) write_junit(o->junit, "signalsim check", cases, result.wall);
+              write_command_facts(settings.out_dir, facts);
               write_check_record(settings.out_dir, cases);
-              write_command_facts(settings.out_dir, {"check", o->paths, "", o->golden_dir, o->set, {}, settings.jobs});
               const int code = errors > 0 ? kExitRunErrors : failed > 0 ? kExitFailed : 0;
               return finish_with_report(code, o->batch.report, settings.out_dir, settings.jobs, o->batch.quiet);
             } catch (const BatchInterrupted& e) {

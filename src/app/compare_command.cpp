@@ -179,6 +179,7 @@ int compare(const CompareOptions& o) {
   try {
     fs::create_directories(fs::path(settings.out_dir) / run_files::kRunsDir);
     for (const char* name : {kCsv, kPicture}) fs::remove(fs::path(settings.out_dir) / name);
+    remove_html_report(settings.out_dir);  // an interrupted compare leaves no report of an earlier one
     const std::string self = self_executable();
     for (std::size_t i = 0; i < scenarios.size(); ++i)
       for (const DriverPlan& plan : plans) {

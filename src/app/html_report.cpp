@@ -64,6 +64,12 @@ const char* check_status(JUnitCase::Result result) {
   return "passed";
 }
 
+// JSON text of `j`; a byte of a name or message that is not UTF-8 (a file name in Latin-1 on the
+// command line) becomes U+FFFD rather than an exception after the runs.
+std::string json_text(const nlohmann::ordered_json& j) {
+  return j.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
+}
+
 void write_or_warn(const fs::path& path, const std::string& text) {
   try {
     write_file_atomically(path.string(), text);
@@ -111,14 +117,15 @@ void write_command_facts(const std::string& out_dir, const CommandFacts& facts) 
   j["cores"] = std::thread::hardware_concurrency();
   j["jobs"] = facts.jobs;
   j["version"] = kVersionText;
-  write_or_warn(fs::path(out_dir) / kCommandFacts, j.dump(2) + "\n");
-  remove_html_report(out_dir);  // an earlier batch's must not pass for this one's: --report writes it anew
+  remove_html_report(out_dir);  // an earlier command's must not pass for this one's: --report writes it anew
+  write_or_warn(fs::path(out_dir) / kCommandFacts, json_text(j));
 }
 
 void remove_html_report(const std::string& out_dir) {
   std::error_code ignored;
   fs::remove(fs::path(out_dir) / kReportPage, ignored);
   fs::remove_all(fs::path(out_dir) / kReportDir, ignored);
+  fs::remove(fs::path(out_dir) / kCheckRecord, ignored);  // an earlier check's verdicts are not this command's
 }
 
 void write_check_record(const std::string& out_dir, const std::vector<JUnitCase>& cases) {
@@ -128,14 +135,17 @@ void write_check_record(const std::string& out_dir, const std::vector<JUnitCase>
   for (const JUnitCase& c : cases)
     j["cases"].push_back({{"name", c.name}, {"file", c.file}, {"status", check_status(c.result)}, {"message", c.message},
                           {"details", c.details}, {"system_out", c.system_out}, {"time", c.time}});
-  write_or_warn(fs::path(out_dir) / kCheckRecord, j.dump(2) + "\n");
+  write_or_warn(fs::path(out_dir) / kCheckRecord, json_text(j));
 }
 
 int make_html_report(const std::string& out_dir, bool all_pictures, int jobs, bool quiet) {
   std::vector<std::string> args = {"report", out_dir, "--quiet"};
   if (all_pictures) args.push_back("--all");
   if (jobs > 0) args.insert(args.end(), {"--jobs", std::to_string(jobs)});
-  const int code = run_plot_tool(args);
+  // exit 2 (not an output folder) and 3 (not writable) are the tool's one line; others (a crash) also ours
+  const int code = run_plot_tool(args, true);
+  if (code != 0 && code != kExitBadInput && code != kExitPicture)
+    std::fprintf(stderr, "signalsim: the report failed (signalsim-plot exit code %d)\n", code);
   if (code == 0 && !quiet) std::printf("report: %s\n", (fs::path(out_dir) / kReportPage).string().c_str());
   return code;
 }

@@ -40,10 +40,12 @@ void add_report_flag(CLI::App* sub, std::string& mode);
 
 /// Writes OUT/command.json: the command line, its inputs, when it started and finished (UTC), the wall
 /// time, the machine (host, system, cores) and --jobs. A file that cannot be written is a warning: the
-/// runs' own results stand. Removes an earlier report of the folder (OUT/report.html, OUT/report/).
+/// runs' own results stand. Removes what an earlier command left for the report (remove_html_report):
+/// call it before write_check_record.
 void write_command_facts(const std::string& out_dir, const CommandFacts& facts);
 
-/// Removes OUT/report.html and OUT/report/ (what a report of an earlier command left).
+/// Removes OUT/report.html, OUT/report/ and OUT/check.json: what an earlier command left for a report
+/// (an earlier check's verdicts would otherwise be read as this command's).
 void remove_html_report(const std::string& out_dir);
 
 /// OUT/check.json: check's verdict per scenario (name, file, status passed|failed|error|skipped,

@@ -128,7 +128,9 @@ void attach_pictures(JUnitCase& c, const std::string& run_dir) {
   std::error_code ec;
   if (!fs::exists(fs::path(run_dir) / run_files::kSummary, ec)) return;
   const fs::path plots = fs::path(run_dir) / "plots";
-  if (pngs_in(plots).empty()) run_plot_tool({run_dir, "--quiet"});  // a failure is reported; the case stands
+  // a run that ended before its timeline (SUMO did not load, a bad route) has nothing to draw
+  const bool drawable = fs::is_regular_file(fs::path(run_dir) / run_files::kTimeline, ec);
+  if (drawable && pngs_in(plots).empty()) run_plot_tool({run_dir, "--quiet"});  // a failure is reported; the case stands
   std::vector<std::string> pictures = pngs_in(plots);
   if (const fs::path gui = fs::path(run_dir) / run_files::kGuiScreenshot; fs::is_regular_file(gui, ec))
     pictures.push_back(gui.string());

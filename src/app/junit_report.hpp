@@ -36,7 +36,8 @@ JUnitCase junit_case(const RunSpec& run, const nlohmann::ordered_json& summary);
 nlohmann::ordered_json summary_or_null(const std::string& run_dir);
 
 /// For a failed or errored case: draws the run's pictures (signalsim-plot, unless `run_dir`/plots
-/// already holds them; a failure to draw is reported and the case keeps what there is) and attaches
+/// already holds them, or the run wrote no timeline.csv; a failure to draw is reported and the case keeps
+/// what there is) and attaches
 /// every PNG of `run_dir`/plots and `run_dir`/gui.png. Nothing for other cases or a run without a summary.
 void attach_pictures(JUnitCase& c, const std::string& run_dir);
 

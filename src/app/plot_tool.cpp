@@ -16,7 +16,7 @@ std::string plot_tool_path() {
   return (std::filesystem::path(data_dir()) / "python" / "signalsim-plot").string();
 }
 
-int run_plot_tool(const std::vector<std::string>& args) {
+int run_plot_tool(const std::vector<std::string>& args, bool quiet_failure) {
   const std::string tool = plot_tool_path();
   if (!std::filesystem::is_regular_file(tool)) {
     std::fprintf(stderr, "signalsim: plotting failed: %s not found (set SIGNALSIM_PLOT_TOOL)\n", tool.c_str());
@@ -26,7 +26,8 @@ int run_plot_tool(const std::vector<std::string>& args) {
   argv.insert(argv.end(), args.begin(), args.end());
   std::fflush(stdout);
   const int code = run_foreground(argv);
-  if (code != 0) std::fprintf(stderr, "signalsim: plotting failed (%s exit code %d)\n", tool.c_str(), code);
+  if (code != 0 && !quiet_failure)
+    std::fprintf(stderr, "signalsim: plotting failed (%s exit code %d)\n", tool.c_str(), code);
   return code;
 }
 

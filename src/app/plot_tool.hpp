@@ -12,8 +12,9 @@ namespace signalsim::app {
 std::string plot_tool_path();
 
 /// Runs `signalsim-plot ARGS...` in the foreground. Returns its exit code (127: could not start).
-/// Prints "signalsim: plotting failed ..." on stderr when it fails.
-int run_plot_tool(const std::vector<std::string>& args);
+/// Prints "signalsim: plotting failed ..." on stderr when it fails, unless `quiet_failure` (the tool's
+/// own line says why: `signalsim report`'s bad folder is one line).
+int run_plot_tool(const std::vector<std::string>& args, bool quiet_failure = false);
 
 /// `run --gui`: captions RUN_DIR/gui.png with its timeline row (signalsim-plot --gui-caption: time,
 /// blinker and source, the light and the judge's decision) and keeps what `picture` framed in its text

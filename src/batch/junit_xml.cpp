@@ -7,14 +7,22 @@
 #include <pugixml.hpp>
 
 #include "core/number_text.hpp"
+#include "scenario/utf8_text.hpp"
 
 namespace signalsim {
 namespace {
 
 // `text` with every character XML 1.0 cannot hold (the control characters but tab, line feed and
-// carriage return) replaced by a space; pugixml escapes the rest (&, <, >, ").
+// carriage return) replaced by a space, and each byte that is not UTF-8 (a file name in Latin-1) by
+// U+FFFD: the document is UTF-8. pugixml escapes the rest (&, <, >, ").
 std::string xml_text(const std::string& text) {
-  std::string out = text;
+  std::string out;
+  std::string_view rest = text;
+  while (const auto bad = find_invalid_utf8(rest)) {
+    out.append(rest.substr(0, bad->offset)).append("\xEF\xBF\xBD");
+    rest.remove_prefix(bad->offset + 1);
+  }
+  out.append(rest);
   for (char& c : out)
     if (static_cast<unsigned char>(c) < 0x20 && c != '\n' && c != '\t' && c != '\r') c = ' ';
   return out;

@@ -39,7 +39,8 @@ struct JUnitCase {
 ///                                                       Attachments plugin, GitLab's unit test reports)
 ///
 /// Times in seconds with 3 decimals. XML cannot hold control characters other than tab, line feed
-/// and carriage return (not even as a reference): each other one is written as a space.
+/// and carriage return (not even as a reference): each other one is written as a space. A byte that is
+/// not UTF-8 is written as U+FFFD.
 std::string junit_xml(const std::string& suite, const std::vector<JUnitCase>& cases, double time);
 
 }  // namespace signalsim

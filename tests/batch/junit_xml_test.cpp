@@ -8,6 +8,7 @@
 #include <pugixml.hpp>
 
 #include "batch/junit_xml.hpp"
+#include "scenario/utf8_text.hpp"
 
 namespace signalsim {
 namespace {
@@ -146,6 +147,26 @@ TEST(JUnitXml, SpecialCharactersGiveWellFormedXml) {
   EXPECT_EQ(attribute(c.child("failure"), "message"), "no golden file g/x<y & \"z\" .events.csv ");
   EXPECT_STREQ(c.child("failure").text().get(), "line 1 ]]> <![CDATA[ &amp;\n\tline 2  [0m\n");
   EXPECT_STREQ(c.child("system-out").text().get(), "expectation failed: <&> \n");
+}
+
+// A scenario file named in Latin-1 ("caf\xE9.yaml") gives names, files and messages that are not
+// UTF-8: the document declares UTF-8, so each such byte is written as U+FFFD (expat, which GitLab's
+// and python's parsers use, refuses the raw byte).
+TEST(JUnitXml, BytesThatAreNotUtf8BecomeReplacementCharacters) {
+  std::vector<JUnitCase> cases(1);
+  cases[0].name = "caf\xE9";
+  cases[0].file = "lat/caf\xE9.yaml";
+  cases[0].result = JUnitCase::Result::Error;
+  cases[0].message = "run error: lat/caf\xE9.yaml:3: bad \xC3";
+  cases[0].system_out = "\xFF\xFEtext\n";
+  const std::string xml = junit_xml("signalsim batch", cases, 1.0);
+  EXPECT_FALSE(find_invalid_utf8(xml)) << xml;
+  const pugi::xml_document doc = parsed(xml);
+  const pugi::xml_node c = doc.child("testsuites").child("testsuite").child("testcase");
+  EXPECT_EQ(attribute(c, "name"), "caf\uFFFD");
+  EXPECT_EQ(attribute(c, "file"), "lat/caf\uFFFD.yaml");
+  EXPECT_EQ(attribute(c.child("error"), "message"), "run error: lat/caf\uFFFD.yaml:3: bad \uFFFD");
+  EXPECT_EQ(std::string(c.child("system-out").text().get()), "\uFFFD\uFFFDtext\n");
 }
 
 }  // namespace

@@ -58,6 +58,17 @@ def sweep_report(signalsim, source, tmp):
     for cell, n in zip(links, counts):
         matching = [r for r in table if all(r[k] == v for k, v in cell.items())]
         check(len(matching) == n == 1, f"cell {cell} counts {n} runs, links to {len(matching)}")
+    # the roundabout exit's cells: a late lead of -0.12 m is tinted red, not the white of 0, and each cell
+    # says the blinker at the section start (results.csv roundabout_exit1.blinker_at_start)
+    for row in (r for r in table if r["scenario"] == "roundabout_exit"):
+        selection = {"ego.max_speed": row["ego.max_speed"], "country": row["country"], "scenario": "roundabout_exit"}
+        cell = next(m for m in re.finditer(r'<td[^>]*style="background:#(\w{6})"[^>]*><a href="#cell=([^"]+)">(.*?)</a></td>', text)
+                    if json.loads(unquote(m.group(2))) == selection)
+        background, shown = cell.group(1), cell.group(3)
+        blinker = row["roundabout_exit1.blinker_at_start"]
+        check(f"start: {'←' if blinker == 'left' else '→'} {blinker}" in shown, f"cell {selection}: {shown}")
+        if float(row["roundabout_exit1.lead_distance"]) < 0:
+            check(int(background[2:4], 16) < 230, f"cell {selection} of a late lead is near white: #{background}")
     check(len(os.listdir(os.path.join(out, "report", "runs"))) == 18, "not one page per run")
     check(not any(os.path.isdir(os.path.join(out, r["run_dir"], "plots")) for r in table),
           "pictures of passed runs drawn without --report=all")

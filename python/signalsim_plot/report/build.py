@@ -53,6 +53,17 @@ def build(out_dir, all_pictures=False, jobs=0):
     failures = pictures.draw([os.path.join(out_dir, d) for d, w in wanted.items() if w], jobs)
     pages_new = os.path.join(out_dir, PAGES + ".new")
     shutil.rmtree(pages_new, ignore_errors=True)
+    try:
+        runs = write_run_pages(out_dir, folder, pages_new, wanted, failures)
+    finally:
+        shutil.rmtree(pages_new, ignore_errors=True)  # left only when writing failed
+    index_path = os.path.join(out_dir, INDEX)
+    write_whole(index_path, index_page(folder, runs))
+    return index_path, failures
+
+
+def write_run_pages(out_dir, folder, pages_new, wanted, failures):
+    """Writes one page per run into pages_new, then puts it at OUT/report/runs; returns the runs."""
     os.makedirs(pages_new)
     runs = []
     for i, row in enumerate(folder.rows):
@@ -68,6 +79,4 @@ def build(out_dir, all_pictures=False, jobs=0):
         run.summary = None  # a sweep of thousands of runs holds one summary at a time
         runs.append(run)
     replace_folder(pages_new, os.path.join(out_dir, PAGES))
-    index_path = os.path.join(out_dir, INDEX)
-    write_whole(index_path, index_page(folder, runs))
-    return index_path, failures
+    return runs

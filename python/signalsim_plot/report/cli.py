@@ -1,5 +1,6 @@
 """signalsim-plot report OUT [--all] [--jobs N] [--quiet]: the HTML report of a batch, sweep, check or
-compare folder (called by `signalsim report` and the commands' --report)."""
+compare folder (called by `signalsim report` and the commands' --report). Exit 2: not an output folder;
+3: the report could not be written."""
 import argparse
 import sys
 
@@ -19,6 +20,9 @@ def main(argv):
     except InputError as e:
         print(f"signalsim-plot: {e}", file=sys.stderr)
         return 2
+    except OSError as e:  # a folder that cannot be written into (read-only, full): one line, exit 3
+        print(f"signalsim-plot: report: cannot write the report into {args.out}: {e}", file=sys.stderr)
+        return 3
     from signalsim_plot.report.pictures import NOT_FINISHED
     for run_dir, message in sorted(failures.items()):
         if message != NOT_FINISHED:

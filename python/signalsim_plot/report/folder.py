@@ -7,8 +7,9 @@ import os
 
 from signalsim_plot.cli import InputError
 
-COMMAND_FILE = "command.json"  # written by the batch commands (src/app/report_facts.cpp)
-CHECK_FILE = "check.json"      # check's verdict per scenario (src/batch/check_record.cpp)
+COMMAND_FILE = "command.json"  # written by the batch commands (src/app/html_report.cpp)
+CHECK_FILE = "check.json"      # check's verdict per scenario (src/app/html_report.cpp)
+RESULTS_COLUMNS = ("run", "scenario", "status", "run_dir")  # what the report needs of results.csv
 
 
 def read_json(path):
@@ -25,7 +26,7 @@ def read_json(path):
 def read_table(path):
     """(header, rows as dicts) of a CSV file."""
     try:
-        with open(path, newline="") as f:
+        with open(path, newline="", encoding="utf-8", errors="replace") as f:  # a Latin-1 file name: U+FFFD
             reader = csv.DictReader(f)
             rows = list(reader)
             return list(reader.fieldnames or []), rows
@@ -56,11 +57,14 @@ class Folder:
         comparison = os.path.join(out_dir, "comparison.csv")
         if os.path.isfile(results):
             self.header, self.rows = read_table(results)
+            missing = [c for c in RESULTS_COLUMNS if c not in self.header]
+            if missing:
+                raise InputError(f"{results}: not a results.csv of signalsim (no column {', '.join(missing)})")
             self.swept = swept_columns(self.header)
             cases = read_json(os.path.join(out_dir, CHECK_FILE))
-            for case in (cases or {}).get("cases", []):
-                self.checks[case.get("file", "")] = case
             self.kind = self.facts.get("command") or ("check" if cases is not None else "sweep" if self.swept else "batch")
+            for case in (cases or {}).get("cases", []) if self.kind == "check" else []:  # not an earlier check's
+                self.checks[case.get("file", "")] = case
         elif os.path.isfile(comparison):
             self.kind = "compare"
             self.comparison = read_table(comparison)
@@ -71,13 +75,14 @@ class Folder:
                              "nor a compare folder (comparison.csv)")
 
     def compare_rows(self):
-        """One row per run folder of compare (runs/NNNN-<name>-<driver>), in folder order."""
-        runs_dir = os.path.join(self.out_dir, "runs")
-        names = sorted(os.listdir(runs_dir)) if os.path.isdir(runs_dir) else []
-        rows = []
-        for name in names:
-            if os.path.isdir(os.path.join(runs_dir, name)):
-                rows.append({"run": str(len(rows)), "driver": name.rsplit("-", 1)[-1], "run_dir": f"runs/{name}"})
+        """One row per run of comparison.csv (its run_dir: runs/NNNN-<name>-<driver>), in the table's order;
+        a folder of runs/ that comparison.csv does not name is an earlier compare's."""
+        rows, seen = [], set()
+        for r in self.comparison[1]:
+            run_dir = r.get("run_dir", "")
+            if run_dir and run_dir not in seen:
+                seen.add(run_dir)
+                rows.append({"run": str(len(rows)), "driver": r.get("driver", ""), "run_dir": run_dir})
         return rows
 
     def run_dir(self, row):

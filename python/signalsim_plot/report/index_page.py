@@ -3,6 +3,7 @@ time), a sweep's heat maps, compare's table and picture, and the table of runs (
 report.js: sortable, filterable)."""
 import json
 import os
+import shlex
 
 from signalsim_plot.report import heatmap
 from signalsim_plot.report.html_bits import esc, facts_list, joined, link, page, table
@@ -69,8 +70,8 @@ def facts_html(folder, runs):
                                      f"{f['cores']} cores" if f.get("cores") else "",
                                      f"--jobs {f['jobs']}" if f.get("jobs") else "") if x)
     items = [
-        ("command", f"<code>{esc(' '.join(f['argv']))}</code>" if f.get("argv") else
-         "<span class=\"note\">not recorded (the folder was made without --report)</span>"),
+        ("command", f"<code>{esc(shlex.join(f['argv']))}</code>" if f.get("argv") else
+         "<span class=\"note\">not recorded (no command.json: the folder was made by an older signalsim)</span>"),
         ("suite", "" if f.get("sweep_file") else joined(f.get("inputs", []))), ("sweep file", esc(f.get("sweep_file", ""))),
         ("golden folder", esc(f.get("golden", ""))),
         ("scenarios", plural(len(distinct(r.file for r in runs)), "file")),
