@@ -2,6 +2,7 @@
 #include "session/gui_framing.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include <libsumo/libtraci.h>
 
@@ -12,6 +13,7 @@ namespace {
 
 constexpr double kLightReach = 80.0;   // [m] a light farther ahead is left out of the frame
 constexpr double kMargin = 12.0;       // [m] around the ego and the junctions
+constexpr double kNearJunction = 40.0;  // [m] ego to the junction's centre when the view is framed
 constexpr double kMinExtent = 60.0;    // [m] the narrowest view: a car and its lamps still visible
 
 // The junction of the first internal lane of `lane`'s links (the junction at its end); "" when none.
@@ -36,45 +38,32 @@ std::string light_junction_ahead(const std::string& ego, std::string& light) {
   return "";
 }
 
-struct Box {
-  double x_min = 0, y_min = 0, x_max = 0, y_max = 0;
-  void add(double x, double y) {
-    x_min = std::min(x_min, x), y_min = std::min(y_min, y);
-    x_max = std::max(x_max, x), y_max = std::max(y_max, y);
-  }
-  // Widened by `margin` on each side, then to `min_extent` about its centre.
-  void widen(double margin, double min_extent) {
-    x_min -= margin, y_min -= margin, x_max += margin, y_max += margin;
-    for (auto [lo, hi] : {std::pair{&x_min, &x_max}, std::pair{&y_min, &y_max}})
-      if (const double lack = min_extent - (*hi - *lo); lack > 0) *lo -= lack / 2, *hi += lack / 2;
-  }
-};
-
 }  // namespace
 
-GuiPicture frame_junction_ahead(const std::string& view, const std::string& ego) {
+std::optional<GuiPicture> frame_junction_ahead(const std::string& view, const std::string& ego) {
   GuiPicture picture;
   const std::string lane = libtraci::Vehicle::getLaneID(ego);
   picture.junction = lane.rfind(':', 0) == 0 ? junction_of_internal_lane(lane) : junction_at_end_of(lane);
-  if (picture.junction.empty()) return picture;  // the route ends on this lane: the view keeps the ego
+  if (picture.junction.empty()) return std::nullopt;  // the route ends on this lane
   const libsumo::TraCIPosition at = libtraci::Vehicle::getPosition(ego);
+  const libsumo::TraCIPosition centre = libtraci::Junction::getPosition(picture.junction);
+  if (std::hypot(centre.x - at.x, centre.y - at.y) > kNearJunction) return std::nullopt;  // not yet
   std::vector<std::string> junctions = {picture.junction};
   if (const std::string lit = light_junction_ahead(ego, picture.light); !lit.empty() && lit != picture.junction)
     junctions.push_back(lit);
   std::vector<libsumo::TraCIPosition> points = {at};
   for (const std::string& junction : junctions)
     for (const libsumo::TraCIPosition& p : libtraci::Junction::getShape(junction).value) points.push_back(p);
-  Box box{at.x, at.y, at.x, at.y};
-  for (const libsumo::TraCIPosition& p : points) box.add(p.x, p.y);
-  box.widen(kMargin, kMinExtent);
-  const double cx = (box.x_min + box.x_max) / 2, cy = (box.y_min + box.y_max) / 2;
-  const double width = box.x_max - box.x_min, height = box.y_max - box.y_min;
-  libtraci::GUI::trackVehicle(view, "");  // "" stops tracking: the view stays where it is set
-  // The zoom that fits the box: the extent shown at the present zoom (getBoundary right after a
-  // setZoom; after setBoundary sumo-gui 1.15 reports the box asked for, not what it draws, about twice
-  // as wide) scales inversely with the zoom. (A turned view would fit the approach along the picture's
-  // long side, but sumo-gui 1.15 leaves out what lies outside the unturned view.)
-  libtraci::GUI::setOffset(view, cx, cy);
+  // The view keeps tracking the ego (sumo-gui centres a tracked view when it draws, so the ego is
+  // where the picture's caption says, whenever sumo-gui draws it); the zoom is chosen so that the
+  // junctions around it fit. (Stopping the tracking and setting an offset was measured to leave the
+  // view where sumo-gui last drew it, seconds behind a fast run.)
+  double half_width = kMinExtent / 2, half_height = kMinExtent / 2;
+  for (const libsumo::TraCIPosition& p : points) {
+    half_width = std::max(half_width, std::abs(p.x - at.x) + kMargin);
+    half_height = std::max(half_height, std::abs(p.y - at.y) + kMargin);
+  }
+  const double width = 2 * half_width, height = 2 * half_height;
   const double zoom = libtraci::GUI::getZoom(view);
   libtraci::GUI::setZoom(view, zoom);
   std::vector<libsumo::TraCIPosition> seen = libtraci::GUI::getBoundary(view).value;
@@ -83,7 +72,11 @@ GuiPicture frame_junction_ahead(const std::string& view, const std::string& ego)
     libtraci::GUI::setZoom(view, zoom * closer);
     seen = libtraci::GUI::getBoundary(view).value;
   }
-  for (const libsumo::TraCIPosition& corner : seen) picture.view.insert(picture.view.end(), {corner.x, corner.y});
+  if (seen.size() == 2) {  // the extent shown, about the ego the view is centred on when drawn
+    const double shown_half_width = (seen[1].x - seen[0].x) / 2, shown_half_height = (seen[1].y - seen[0].y) / 2;
+    picture.view = {at.x - shown_half_width, at.y - shown_half_height, at.x + shown_half_width,
+                    at.y + shown_half_height};
+  }
   return picture;
 }
 

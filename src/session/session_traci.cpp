@@ -2,7 +2,7 @@
 //   gui      signalsim starts sumo-gui on a free 127.0.0.1 port (--start --quit-on-end), connects
 //            (through the relay of traci_relay.hpp, without a time limit unless --traci-timeout
 //            gives one: a user may pause sumo-gui), colours the ego and tracks it in the view (at
-//            its first blinker the view is framed on the junction ahead for the screenshot,
+//            its blinker on and the junction ahead near, the view is zoomed out to it for the screenshot,
 //            gui_framing.hpp), and stops the program by its PID at the end;
 //   connect  signalsim attaches to a SUMO someone else started with --remote-port and --num-clients,
 //            through a relay that checks every answer and bounds every wait (traci_relay.hpp), takes
@@ -122,14 +122,20 @@ class TraciSession final : public SessionImpl<LibtraciApi> {
     shots_left_ = kShotsPerPicture;  // the view at departure, replaced by the one at the first blinker
   }
 
-  // At the first blinker the view leaves the ego for the junction ahead (gui_framing.hpp): the
-  // picture answers where the blinker is for.
+  // At the first blinker the view at the default zoom is taken; while the blinker is on, the first
+  // step the junction ahead is near replaces it with the view zoomed out to that junction
+  // (gui_framing.hpp): the picture answers where the blinker is for.
   void on_command(int signal_mask) override {
     if (config_.backend.kind != BackendKind::Gui) return;
-    if (!blinker_seen_ && (signal_mask & kBlinkerMask) != 0) {
+    const bool blinking = (signal_mask & kBlinkerMask) != 0;
+    if (!blinker_seen_ && blinking) {
       blinker_seen_ = true;
       shots_left_ = kShotsPerPicture;
-      if (!config_.backend.screenshot.empty()) frame_view();
+      picture_ = GuiPicture{};
+    }
+    if (blinking && !framed_ && !config_.backend.screenshot.empty() && frame_view()) {
+      framed_ = true;
+      shots_left_ = kShotsPerPicture;
     }
     if (shots_left_ > 0) take_screenshot();
   }
@@ -172,11 +178,14 @@ class TraciSession final : public SessionImpl<LibtraciApi> {
     picture_.time = time();  // the row whose command this picture follows (the last one taken is kept)
   }
 
-  void frame_view() {
+  bool frame_view() {
     try {
-      picture_ = frame_junction_ahead(kView, ego_);
+      std::optional<GuiPicture> framed = frame_junction_ahead(kView, ego_);
+      if (!framed) return false;
+      picture_ = *framed;
+      return true;
     } catch (const libsumo::TraCIException&) {  // sumo-gui refused a view change: the view keeps the ego
-      picture_ = GuiPicture{};
+      return false;
     } catch (const std::exception& e) {
       throw SumoError("sumo-gui: framing the view failed: " + failure_reason(e));
     }
@@ -308,6 +317,7 @@ class TraciSession final : public SessionImpl<LibtraciApi> {
   static constexpr int kShotsPerPicture = 2;
   int shots_left_ = 0;
   bool blinker_seen_ = false;
+  bool framed_ = false;  // the view was framed on a junction ahead
   bool screenshot_pending_ = false;
   bool picture_taken_ = false;
   GuiPicture picture_;  // what the kept screenshot shows

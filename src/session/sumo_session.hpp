@@ -46,11 +46,11 @@ struct StandingVehicle {
 struct GuiPicture {
   /// [s] the simulation time of the row whose command the picture follows (its timeline.csv row)
   double time = 0.0;
-  /// the junction the view is framed on (the one ahead of the ego at its first blinker, SUMO's id);
-  /// empty: the view tracks the ego (at departure, or with no junction ahead)
+  /// the junction the view is zoomed out to (ahead of the ego, within 40 m, its blinker on; SUMO's
+  /// id); empty: the default zoom (at departure or the first blinker, no junction near)
   std::string junction;
   std::string light;  ///< the light ahead framed with it (TraCI getNextTLS, within reach); empty: none
-  /// [m] the net area the picture shows (GUI.getBoundary after framing): x_min, y_min, x_max, y_max
+  /// [m] the net area the picture shows (GUI.getBoundary's extent about the ego): x_min, y_min, x_max, y_max
   std::vector<double> view;
 };
 
@@ -71,7 +71,8 @@ struct BackendOptions {
   /// and its blinkers). Fleet mode shows the traffic around it (docs/fleet.md).
   double gui_zoom = 0.0;
   /// gui: a PNG of the view (TraCI GUI.screenshot) written here at the first step the ego's blinker
-  /// is on, the view framed on the junction ahead (or at departure when it never is); empty: none.
+  /// is on, replaced by the view zoomed out to the junction ahead once it is near (outputs.md
+  /// "gui.png"), or at departure when the blinker never comes on; empty: none.
   std::string screenshot;
   std::string sumo_gui_binary = "sumo-gui";
 };

@@ -93,27 +93,30 @@ gui() {
   DISPLAY=$display "$bin" run "$scenario" --out "$work/$name" --gui --quiet || fail "$name: --gui exit code $?"
   "$py" - "$work/$name" "$src" <<'PY' || fail "$name: the screenshot is not framed on the junction ahead or its caption is not the run's"
 # The caption: the timeline row whose command the kept picture follows (the second of the two shots
-# from the first row with a blinker bit in sumo_signals), its blinker, source and the judge's decision;
-# the view framed on the junction ahead: its shape (from the net, sumolib) and the ego inside the view.
+# from the first row with a blinker bit in sumo_signals and the junction ahead within 40 m of the
+# ego), its blinker, source and the judge's decision; the view framed on that junction: its shape
+# (from the net, sumolib) and the ego inside the view.
 import csv, json, sys
 sys.path.insert(0, "/usr/share/sumo/tools")
 import sumolib
 from PIL import Image
 run = sys.argv[1]
 rows = list(csv.DictReader(open(run + "/timeline.csv")))
-first = next(k for k, r in enumerate(rows) if r["sumo_signals"] and int(r["sumo_signals"]) & 7)
-row = rows[first + 1]
 im = Image.open(run + "/gui.png")
 info = im.info
+junction = info["signalsim:junction"]
+assert junction, info
+summary = json.load(open(run + "/summary.json"))
+net = sumolib.net.readNet(summary["net"] if summary["net"].startswith("/") else sys.argv[2] + "/" + summary["net"])
+cx, cy = net.getNode(junction).getCoord()
+first = next(k for k, r in enumerate(rows) if r["sumo_signals"] and int(r["sumo_signals"]) & 7
+             and ((float(r["x"]) - cx) ** 2 + (float(r["y"]) - cy) ** 2) ** 0.5 <= 40.0)
+row = rows[first + 1]
 assert info.get("signalsim:time") == row["time"], (info.get("signalsim:time"), row["time"])
 caption = info["Description"]
 for fact in (f"t = {row['time']} s", f"blinker: {row['blinker']} (source: {row['blinker_source']})",
              f"light {row['tl_id']}: state {row['tl_state']}", f"decided {row['tl_decision']}"):
     assert fact in caption, (fact, caption)
-junction = info["signalsim:junction"]
-assert junction, info
-summary = json.load(open(run + "/summary.json"))
-net = sumolib.net.readNet(summary["net"] if summary["net"].startswith("/") else sys.argv[2] + "/" + summary["net"])
 x0, y0, x1, y1 = (float(v) for v in info["signalsim:view"].split(","))
 for x, y in net.getNode(junction).getShape() + [(float(row["x"]), float(row["y"]))]:
     assert x0 - 0.5 <= x <= x1 + 0.5 and y0 - 0.5 <= y <= y1 + 0.5, ((x, y), (x0, y0, x1, y1))
