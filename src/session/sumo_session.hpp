@@ -102,6 +102,11 @@ struct SessionConfig {
   /// dynamics fast enough to follow command_lateral_offset() exactly: vehicle-type maxSpeedLat
   /// 10 m/s and the vehicle parameter laneChangeModel.lcAccelLat 20 m/s^2 (docs/behaviour.md §S4).
   double lateral_resolution = 0.0;
+  /// SUMO's continuous lane change (`--lanechange.duration`) [s], used when lateral_resolution is 0:
+  /// > step_length lets command_lateral_offset() move the ego from one lane's centre to the next one's
+  /// along the commanded offsets (its maxSpeedLat re-set every step; docs/behaviour.md §S4); every other
+  /// vehicle's lane change then takes this long instead of one step. 0 = off.
+  double lane_change_duration = 0.0;
   /// Inserted with the ego, each with a stop at its position that lasts for the whole run.
   std::vector<StandingVehicle> standing;
 };
