@@ -18,6 +18,8 @@ namespace {
 void read_summary(ResultRow& row, const RunSpec& run, const std::string& dir) {
   const auto summary = read_json_file((fs::path(dir) / run_files::kSummary).string());
   const std::string status = summary.value("status", "");
+  // The scenario's own name, as its run loaded it (the run list names a run by its file).
+  if (summary.contains("scenario") && summary["scenario"].is_string()) row.cells["scenario"] = summary["scenario"];
   if (!is_finished_status(status)) {
     row.cells["status"] = "error";
     row.cells["error"] = summary.value("error", "summary.json status '" + status + "'");
@@ -132,18 +134,6 @@ ResultRow make_row(const RunSpec& run, const std::string& out_dir, const std::st
   } else {
     error(message.empty() ? "exit code " + std::to_string(result.exit_code) : message);
   }
-  return row;
-}
-
-ResultRow load_error_row(const RunSpec& run) {
-  ResultRow row;
-  row.run = run.index;
-  row.cells["scenario"] = run.name;
-  row.cells["file"] = run.scenario;
-  for (const auto& [key, value] : run.values) row.cells[swept_column(key)] = value;
-  row.cells["wall_time"] = "0.00";
-  row.cells["status"] = "error";
-  row.cells["error"] = stderr_one_line(run.load_error);
   return row;
 }
 
