@@ -1,4 +1,5 @@
-"""How soon a large sweep starts its first run, and the parent's memory (tools/bench --only batchstart).
+"""How soon a large suite or sweep starts its first run, and the parent's memory (tools/bench --only
+batchstart).
 
 Writes FILES copies of scenarios/intersection_left.yaml (each its own name, the net's path made
 absolute) and a sweep over them with a grid of `seed` values: FILES x SEEDS runs (1 280 x 16 = 20 480).
@@ -8,7 +9,8 @@ start), reads the parent's peak RSS (VmHWM of /proc/PID/status) once that run is
 interrupts it with SIGINT (exit code 130 expected: finished rows are kept) and checks that --resume
 is accepted (a second start, interrupted the same way, must print "resuming: K of N runs already
 done" when K > 0, or start from the first run). Medians of the time to the first run and of the
-peak RSS. `--bin` measures another build, e.g. one from before a change.
+peak RSS. The same for `signalsim batch` over the FILES files (a suite; interrupted, not resumed).
+`--bin` measures another build, e.g. one from before a change.
 """
 import os
 import re
@@ -52,9 +54,11 @@ def peak_rss_kb(pid):
     return 0
 
 
-def start_and_interrupt(binary, env, sweep, out, resume):
-    """Seconds to the first run directory, the parent's peak RSS [kB], its stdout."""
-    argv = [binary, "sweep", sweep, "--out", out, "--jobs", "1"] + (["--resume"] if resume else [])
+def start_and_interrupt(binary, env, sweep, out, resume, command="sweep"):
+    """Seconds to the first run directory, the parent's peak RSS [kB], its stdout. `command` "batch"
+    runs the sweep's scenario folder as a suite instead."""
+    target = sweep if command == "sweep" else os.path.join(os.path.dirname(sweep), "scenarios")
+    argv = [binary, command, target, "--out", out, "--jobs", "1"] + (["--resume"] if resume else [])
     runs_dir = os.path.join(out, "runs")
     before = set(os.listdir(runs_dir)) if resume and os.path.isdir(runs_dir) else set()
     start = time.perf_counter()
@@ -79,11 +83,17 @@ def start_and_interrupt(binary, env, sweep, out, resume):
 
 
 def bench_batch_start(binary, env, work, runs, quick):
-    """Returns (first-run seconds, peak RSS kB) per round, and the run count."""
+    """Returns (first-run seconds, peak RSS kB) per round of the sweep, of the suite (`batch` over the
+    files), and the sweep's run count."""
     files = QUICK_FILES if quick else FILES
     sweep = write_sweep(work, files)
-    firsts, rss = [], []
+    firsts, rss, suite_firsts, suite_rss = [], [], [], []
     for _ in range(runs):
+        out = os.path.join(work, "suite_out")
+        shutil.rmtree(out, ignore_errors=True)
+        first, peak, _ = start_and_interrupt(binary, env, sweep, out, False, "batch")
+        suite_firsts.append(first)
+        suite_rss.append(peak)
         out = os.path.join(work, "out")
         shutil.rmtree(out, ignore_errors=True)
         first, peak, _ = start_and_interrupt(binary, env, sweep, out, False)
@@ -95,10 +105,15 @@ def bench_batch_start(binary, env, work, runs, quick):
         if done > 0 and "resuming: %d of %d runs already done" % (done, files * SEEDS) not in stdout:
             raise BenchError("--resume after SIGINT: no 'resuming: %d of %d' line in %r" % (done, files * SEEDS,
                                                                                              stdout[:300]))
-    return firsts, rss, files * SEEDS
+    return (firsts, rss), (suite_firsts, suite_rss), files * SEEDS
 
 
-def report(firsts, rss, total):
+def report(sweep, suite, total):
+    print("\n== a suite of %d scenario files (batch FOLDER), --jobs 1" % (total // SEEDS))
+    print("   time to the first run's start  %.3f s (median of %d; %.3f-%.3f)"
+          % (statistics.median(suite[0]), len(suite[0]), min(suite[0]), max(suite[0])))
+    print("   the parent's peak RSS           %.1f MB (median)" % (statistics.median(suite[1]) / 1024.0))
+    firsts, rss = sweep
     print("\n== a sweep of %d runs (%d scenario files x %d seeds), --jobs 1" % (total, total // SEEDS, SEEDS))
     print("   time to the first run's start  %.3f s (median of %d; %.3f-%.3f)"
           % (statistics.median(firsts), len(firsts), min(firsts), max(firsts)))
