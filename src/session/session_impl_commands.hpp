@@ -1,6 +1,7 @@
 // SessionImpl<Api>, part 2 of 3: what the session tells SUMO (session_impl.hpp has the class).
-// The ego's signals and speed, backing up, its lateral offset (sublane model or continuous lane change), its speed mode (emergency braking,
-// right of way) and speed factor (SUMO's lane limits), and the shift of a light's program. Where the
+// The ego's signals and speed, backing up, its lateral offset (the sublane model or the continuous
+// lane change), its speed mode (emergency braking, right of way) and speed factor (SUMO's lane
+// limits), and the shift of a light's program. Where the
 // ego is comes from the step's answer (session_impl_observe.hpp); its length and width are the ones
 // it departed with (take_control).
 // Included by session_impl.hpp only.
