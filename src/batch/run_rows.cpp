@@ -14,12 +14,27 @@ namespace signalsim {
 namespace fs = std::filesystem;
 namespace {
 
+// The scenario's own name, as its run loaded it (the run list names a run by its file).
+void name_from(ResultRow& row, const nlohmann::ordered_json& summary) {
+  if (summary.contains("scenario") && summary["scenario"].is_string()) row.cells["scenario"] = summary["scenario"];
+}
+
+// An errored run's name from the summary.json it left (an error after its scenario loaded), if any.
+void name_from_summary_file(ResultRow& row, const std::string& dir) {
+  std::error_code ec;
+  const fs::path path = fs::path(dir) / run_files::kSummary;
+  if (!fs::is_regular_file(path, ec)) return;
+  try {
+    name_from(row, read_json_file(path.string()));
+  } catch (const std::exception&) {  // half-written or not JSON: the file's stem stays
+  }
+}
+
 // Status, expectations and metrics from a finished worker's summary.json.
 void read_summary(ResultRow& row, const RunSpec& run, const std::string& dir) {
   const auto summary = read_json_file((fs::path(dir) / run_files::kSummary).string());
   const std::string status = summary.value("status", "");
-  // The scenario's own name, as its run loaded it (the run list names a run by its file).
-  if (summary.contains("scenario") && summary["scenario"].is_string()) row.cells["scenario"] = summary["scenario"];
+  name_from(row, summary);
   if (!is_finished_status(status)) {
     row.cells["status"] = "error";
     row.cells["error"] = summary.value("error", "summary.json status '" + status + "'");
@@ -133,6 +148,7 @@ ResultRow make_row(const RunSpec& run, const std::string& out_dir, const std::st
     }
   } else {
     error(message.empty() ? "exit code " + std::to_string(result.exit_code) : message);
+    name_from_summary_file(row, dir);
   }
   return row;
 }
