@@ -2,8 +2,8 @@
 
 bologna_acosta with its full demand (acosta.sumocfg: 8 622 vehicles over the hour), and a taken-over
 vehicle of a route file written here: it departs at 400 s (about 300 vehicles in the net) on edge 46
-and drives 46 201 201c. Departing on lane 2 it needs no lane change; departing on lane 0 its lane
-plan shifts it two lanes to the left on 46 (one shift line, 6.4 m, to the lane with the connection). Both runs are the same
+and drives 46 201 201c. Departing on lane 2 it needs no lane change; departing on lane 1 its lane
+plan shifts it one lane to the left on 46 (3.2 m, to the lane with the connection to 201). Both runs are the same
 simulation up to the departure; what a lane change costs is the model SUMO runs for it
 (docs/performance.md "Lane changes in traffic"). `--bin` measures another build, e.g. one from before
 a change. Interleaved runs; medians of CPU time (user + sys) and wall time.
@@ -45,7 +45,7 @@ def bench_lanechange(binary, env, work, runs, warm_up, quick):
     """Returns (samples without, samples with a lane change), each a list of measure.Sample."""
     os.makedirs(work, exist_ok=True)
     duration = DEPART + (30 if quick else DURATION - DEPART)
-    paths = {"without": write_case(work, 2, duration), "with": write_case(work, 0, duration)}
+    paths = {"without": write_case(work, 2, duration), "with": write_case(work, 1, duration)}
 
     def case(name):
         def run():

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <utility>
@@ -50,19 +51,38 @@ bool lane_changes_only(const LateralPlan& lateral) {
                      [](const LateralSegment& s) { return s.kind == LateralKind::LaneChange; });
 }
 
+// A continuous lane change crosses one lane: a shift over two or more lanes on one edge is one SUMO
+// manoeuvre after another, and the ego stops at the centre between them for the rest of that step
+// (docs/behaviour.md §S4). That step's lag is at most the plan's lateral motion in a step: its
+// steepest slope (1.875 shift / length for a quintic line) at the top speed. Such a shift is left to
+// the sublane model when that could exceed kMostLag.
+constexpr double kMostLag = 0.1;  // [m] half the default tolerance of lateral_offset_follows_plan
+bool lags_between_lanes(const LateralPlan& lateral, double max_speed, double step_length) {
+  for (const LateralSegment& segment : lateral.segments) {
+    const double lane_width = segment.left_half_width + segment.right_half_width;
+    for (const ShiftLine& line : segment.plan.lines()) {
+      const double shift = std::abs(line.relative_shift());
+      if (shift <= 1.5 * lane_width || line.length() <= 0.0) continue;  // one lane
+      if (1.875 * shift / line.length() * max_speed * step_length > kMostLag) return true;
+    }
+  }
+  return false;
+}
+
 // The lateral model of a run (docs/behaviour.md §S4): a user's own sublane model or continuous lane
-// change if their SUMO options set one, else the continuous lane change for lane changes only and
-// the sublane model for every other maneuver.
+// change if their SUMO options set one, else the continuous lane change for lane changes only (none
+// over several lanes fast enough to lag) and the sublane model for every other maneuver.
 void choose_lateral_model(sumo::SessionConfig& config, const LateralPlan& lateral,
                           std::optional<double> user_lateral_resolution, std::optional<double> user_lane_change_duration,
-                          double step_length) {
+                          double step_length, double max_speed) {
   if (user_lateral_resolution) {
     config.lateral_resolution = *user_lateral_resolution;
     if (config.lateral_resolution > 0.0 || !lateral.active()) return;
   }
   if (!lateral.active()) return;
   const bool user_continuous = user_lane_change_duration && *user_lane_change_duration > step_length + 1e-9;
-  if (lane_changes_only(lateral) && (!user_lane_change_duration || user_continuous))
+  if (lane_changes_only(lateral) && !lags_between_lanes(lateral, max_speed, step_length) &&
+      (!user_lane_change_duration || user_continuous))
     config.lane_change_duration = user_continuous ? *user_lane_change_duration : kLaneChangeSteps * step_length;
   else
     config.lateral_resolution = kSublaneWidth;
@@ -136,14 +156,13 @@ sumo::SessionConfig session_config(const Scenario& scenario, const sumo::RoutePl
   // SUMO never changes lanes on its own: signalsim drives every lane change (plan_lateral).
   config.keep_planned_lanes = true;
   // signalsim drives lateral motion with offsets re-commanded every step (docs/behaviour.md §S4).
-  choose_lateral_model(config, lateral, user_lateral_resolution, user_lane_change_duration, scenario.step_length);
+  choose_lateral_model(config, lateral, user_lateral_resolution, user_lane_change_duration, scenario.step_length,
+                       scenario.ego.max_speed);
   if (user_lateral_resolution && *user_lateral_resolution <= 0.0 && config.lateral_resolution > 0.0)
-    throw InputError(scenario.path, 0, "the scenario drives lateral motion (" +
-                                           std::string(lane_changes_only(lateral) ? "a lane change, with its SUMO "
-                                                                                    "options' lanechange.duration 0"
-                                                                                  : "avoidance, pull out or pull over") +
-                                           "), which needs SUMO's sublane model, but its SUMO options set "
-                                           "lateral-resolution " + std::to_string(*user_lateral_resolution));
+    throw InputError(scenario.path, 0, "the scenario drives lateral motion that needs SUMO's sublane model "
+                                       "(avoidance, pull out, pull over, or a shift over several lanes too fast "
+                                       "for the continuous lane change), but its SUMO options set "
+                                       "lateral-resolution " + std::to_string(*user_lateral_resolution));
   config.depart_pos_lat = lateral.depart_offset;
   for (const ObstacleSpec& o : scenario.obstacles) config.standing.push_back({o.id, o.edge, o.lane, o.pos, o.length});
   // SUMO driving: its own lane changes; maneuvers (a pull out's depart offset included) are signalsim's.
