@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <fstream>
 #include <set>
 #include <string>
 #include <vector>
@@ -21,15 +23,18 @@ struct Configured {
   std::vector<std::string> command_line;
 };
 
-Configured configured(const std::string& name, std::vector<std::string> set = {}) {
-  const Scenario scenario = load_scenario(std::string(SIGNALSIM_SOURCE_DIR) + "/scenarios/" + name + ".yaml",
-                                          ScenarioOverrides{std::move(set)});
+Configured configured_file(const std::string& path, std::vector<std::string> set = {}) {
+  const Scenario scenario = load_scenario(path, ScenarioOverrides{std::move(set)});
   const sumo::NetIndex net = sumo::NetIndex::load(scenario.net);
   const sumo::RoutePlan plan = plan_route(scenario, net);
   Configured c;
   c.config = session_config(scenario, plan, plan_lateral(scenario, plan, net), RunContext{});
   c.command_line = sumo::sumo_command_line(c.config, "sumo");
   return c;
+}
+
+Configured configured(const std::string& name, std::vector<std::string> set = {}) {
+  return configured_file(std::string(SIGNALSIM_SOURCE_DIR) + "/scenarios/" + name + ".yaml", std::move(set));
 }
 
 // Whether SUMO's command line gives `option` the number `value` (written exactly: 0.1 has 17 digits).
@@ -77,6 +82,31 @@ TEST(LateralModel, AUsersOwnOptionsDecideTheModel) {
   const Configured none = configured("intersection_left");
   EXPECT_FALSE(mentions(none, "--lateral-resolution"));
   EXPECT_FALSE(mentions(none, "--lanechange.duration"));
+}
+
+// bologna_acosta's edge 46 has three lanes; the route to 201 leaves from lane 2. From lane 1 one
+// continuous lane change does it; from lane 0 the shift crosses lane 1, where the continuous lane
+// change would stop the ego for a step (up to 1.875 * 6.4 m / 50 m * 13.89 m/s * 0.1 s = 0.33 m
+// behind the plan): the sublane model drives it, unless the ego is slow enough for that lag to stay
+// within 0.1 m.
+TEST(LateralModel, AFastShiftOverTwoLanesRunsTheSublaneModel) {
+  const std::string path = ::testing::TempDir() + "lateral_model_acosta.yaml";
+  {
+    std::ofstream out(path);
+    out << "name: two_lanes_on_46\nnet: " << SIGNALSIM_SOURCE_DIR
+        << "/sumo_nets/bologna_acosta/acosta_buslanes.net.xml\nstep_length: 0.1\nduration: 30\n"
+           "ego:\n  route: [\"46\", \"201\"]\n  depart_speed: 5\n";
+  }
+  const Configured one_lane = configured_file(path, {"ego.depart_lane=1"});
+  EXPECT_DOUBLE_EQ(one_lane.config.lane_change_duration, 0.2);
+  EXPECT_DOUBLE_EQ(one_lane.config.lateral_resolution, 0.0);
+  const Configured two_lanes = configured_file(path, {"ego.depart_lane=0"});
+  EXPECT_DOUBLE_EQ(two_lanes.config.lateral_resolution, 0.1);
+  EXPECT_DOUBLE_EQ(two_lanes.config.lane_change_duration, 0.0);
+  const Configured slow = configured_file(path, {"ego.depart_lane=0", "ego.max_speed=3", "ego.depart_speed=3"});
+  EXPECT_DOUBLE_EQ(slow.config.lane_change_duration, 0.2);
+  EXPECT_DOUBLE_EQ(slow.config.lateral_resolution, 0.0);
+  std::remove(path.c_str());
 }
 
 // The ego follows the plan gradually across the lane boundary, and SUMO shows the decider's blinker
