@@ -16,7 +16,9 @@ namespace {
 
 // The scenario's own name, as its run loaded it (the run list names a run by its file).
 void name_from(ResultRow& row, const nlohmann::ordered_json& summary) {
-  if (summary.contains("scenario") && summary["scenario"].is_string()) row.cells["scenario"] = summary["scenario"];
+  // (A file that did not load leaves a summary.json with an empty name: the file's stem stays.)
+  if (summary.contains("scenario") && summary["scenario"].is_string() && !summary["scenario"].get<std::string>().empty())
+    row.cells["scenario"] = summary["scenario"];
 }
 
 // An errored run's name from the summary.json it left (an error after its scenario loaded), if any.
