@@ -3,37 +3,36 @@
 
 #include <fcntl.h>
 #include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
-#include <cstdint>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
+#include <map>
 
-#include "core/number_text.hpp"
 #include "scenario/input_error.hpp"
 
 namespace signalsim {
 namespace fs = std::filesystem;
 namespace {
 
-// The file's bytes; "" for a file that cannot be read (a suite's file that did not load still has a
-// manifest line).
-std::string bytes_or_empty(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+// The file's size and modification time [ns] as "SIZE:MTIME"; "-" for a file that cannot be stat'ed.
+// Read from the file system's metadata: the parent never reads a scenario's contents.
+std::string file_stamp(const std::string& path) {
+  struct stat st {};
+  if (stat(path.c_str(), &st) != 0) return "-";
+  const long long ns = static_cast<long long>(st.st_mtim.tv_sec) * 1000000000LL + st.st_mtim.tv_nsec;
+  return std::to_string(static_cast<long long>(st.st_size)) + ":" + std::to_string(ns);
 }
 
 }  // namespace
 
 std::string batch_manifest(const std::vector<RunSpec>& runs) {
-  std::string out = "signalsim batch manifest 1\n";
+  std::string out = "signalsim batch manifest 2\n";
+  std::map<std::string, std::string> stamps;  // a scenario file is stat'ed once, however many runs it has
   for (const RunSpec& run : runs) {
-    const std::string bytes = bytes_or_empty(run.scenario);
-    std::uint64_t hash = 1469598103934665603ULL;
-    for (unsigned char c : bytes) hash = (hash ^ c) * 1099511628211ULL;
-    out += std::to_string(run.index) + "\t" + run.scenario + "\t" +
-           format_text("%016llx", static_cast<unsigned long long>(hash));
+    auto [it, fresh] = stamps.try_emplace(run.scenario);
+    if (fresh) it->second = file_stamp(run.scenario);
+    out += std::to_string(run.index) + "\t" + run.scenario + "\t" + it->second;
     for (const std::string& item : run.set) out += "\t" + item;
     out += "\n";
   }

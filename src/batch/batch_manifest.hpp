@@ -1,5 +1,5 @@
-// What ties an output directory to one batch: OUT/batch.manifest (every run's scenario, the hash of
-// its bytes and its --set items; --resume keeps earlier rows only when it is unchanged) and the lock
+// What ties an output directory to one batch: OUT/batch.manifest (every run's scenario, the file's
+// size and modification time and its --set items; --resume keeps earlier rows only when it is unchanged) and the lock
 // that keeps a second batch out of the same --out while one writes there.
 #pragma once
 
@@ -10,8 +10,10 @@
 
 namespace signalsim {
 
-/// The manifest text: one line per run (index, scenario, the FNV-1a hash of the scenario file's
-/// bytes, every --set), after a "signalsim batch manifest 1" line.
+/// The manifest text: one line per run (index, scenario, "SIZE:MTIME_NS" of the scenario file from
+/// stat, "-" when it has none, every --set), after a "signalsim batch manifest 2" line. No file is
+/// read: a changed file shows as another size or modification time (an edit that keeps both, within
+/// the file system's time resolution, is not seen; a file touched without a change is).
 std::string batch_manifest(const std::vector<RunSpec>& runs);
 
 /// OUT/batch.manifest

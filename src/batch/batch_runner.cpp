@@ -103,8 +103,7 @@ BatchStart start_batch(const std::vector<RunSpec>& runs, const BatchSettings& se
   for (const RunSpec& run : runs) {
     if (result.rows.count(run.index)) continue;
     fs::remove_all(fs::path(settings.out_dir) / batch.run_dirs[run.index]);  // a stale or half-written run
-    if (!run.load_error.empty()) batch.not_loaded.push_back(&run);  // an error row with the file's message
-    else batch.to_run.push_back(&run);
+    batch.to_run.push_back(&run);
   }
   batch.last_write = Clock::now();
   return batch;
@@ -121,13 +120,7 @@ BatchProgress begin_progress(BatchStart& batch, const BatchSettings& settings) {
   if (!settings.quiet && result.skipped > 0)
     std::printf("resuming: %zu of %zu runs already done, %zu to run\n", result.skipped, result.total,
                 batch.to_run.size());
-  BatchProgress progress(batch.to_run.size() + batch.not_loaded.size(), settings.quiet);
-  for (const RunSpec* run : batch.not_loaded) {
-    ResultRow row = load_error_row(*run);
-    progress.finished(*run, row);
-    result.rows[run->index] = std::move(row);
-  }
-  return progress;
+  return BatchProgress(batch.to_run.size(), settings.quiet);
 }
 
 bool run_in_worker_pool(const std::vector<const RunSpec*>& runs, const std::vector<std::string>& run_dirs,

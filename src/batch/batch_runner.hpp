@@ -6,7 +6,7 @@
 //   for each remaining run (by index): `signalsim run SCENARIO --out OUT/runs/NNNN-name --quiet
 //     --set ...` in one of `jobs` persistent workers, or as a process of its own with `isolate`
 //     (worker_pool.hpp, both watched by child_supervisor.hpp), each with the wall-clock timeout
-//   a run whose scenario file did not load (RunSpec::load_error): an error row with the message, no worker
+//   a run whose scenario file does not load: its worker exits 2 with the file's line, an error row
 //   as each worker ends: a row from its exit code and RUNDIR/summary.json (status passed, failed or
 //     no_expectations - a scenario without expectations, nothing checked, not a failure - expectations,
 //     "metrics"; computed from the run's files when summary.json has none), or an error row (exit
@@ -72,8 +72,7 @@ struct BatchStart {
   std::unique_ptr<ResultsFile> results_file;  ///< OUT/results.csv
   BatchResult result;                         ///< total; the rows kept by --resume (skipped)
   std::vector<std::string> run_dirs;          ///< "runs/NNNN-name" by run index
-  std::vector<const RunSpec*> to_run;         ///< loaded runs without a kept row, by index (run dirs removed)
-  std::vector<const RunSpec*> not_loaded;     ///< scenario files that did not load: error rows, no worker
+  std::vector<const RunSpec*> to_run;         ///< runs without a kept row, by index (run dirs removed)
   std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
   std::chrono::steady_clock::time_point last_write = std::chrono::steady_clock::now();
 };
@@ -87,8 +86,7 @@ BatchStart start_batch(const std::vector<RunSpec>& runs, const BatchSettings& se
 std::vector<std::string> run_dir_names(const std::vector<RunSpec>& runs);
 
 /// What every back-end does after start_batch: "resuming: K of N runs already done, M to run"
-/// (unless quiet or nothing was kept), the progress output over the runs still to run, and the
-/// error rows of the scenario files that did not load, through it.
+/// (unless quiet or nothing was kept) and the progress output over the runs still to run.
 BatchProgress begin_progress(BatchStart& batch, const BatchSettings& settings);
 
 /// Runs `runs` in worker processes (`signalsim run ... --out OUT/RUN_DIR`), at most settings.jobs at

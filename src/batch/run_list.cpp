@@ -85,26 +85,28 @@ std::vector<RunSpec> expand_sweep(const Sweep& sweep) {
   return out;
 }
 
-std::vector<RunSpec> suite_runs(const std::vector<std::string>& files, const std::vector<std::string>& set) {
-  std::vector<RunSpec> runs;
+void check_suite_overrides(const std::vector<std::string>& files, const std::vector<std::string>& set) {
   for (const std::string& file : files) {
     InterruptGuard::throw_if_interrupted();
-    RunSpec run;
-    run.index = runs.size();
-    run.scenario = file;
-    run.set = set;
     try {
-      run.name = load_scenario(file, ScenarioOverrides{set}).name;
+      load_scenario(file, ScenarioOverrides{set});
+      return;  // the overrides apply to a scenario: the other files are their runs' business
     } catch (const InputError& e) {
       // The command's own input (--set, a --params file): every run would fail alike.
       if (is_override_input(e.file(), ScenarioOverrides{set})) throw;
-      run.name = fs::path(file).stem().string();
-      run.load_error = e.what();
-    } catch (const std::exception& e) {  // a sumocfg the scenario names that does not read, ...
-      run.name = fs::path(file).stem().string();
-      run.load_error = e.what();
+    } catch (const std::exception&) {  // a sumocfg the scenario names that does not read, ...
     }
-    runs.push_back(std::move(run));
+  }
+}
+
+std::vector<RunSpec> suite_runs(const std::vector<std::string>& files, const std::vector<std::string>& set) {
+  check_suite_overrides(files, set);
+  std::vector<RunSpec> runs(files.size());
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    runs[i].index = i;
+    runs[i].scenario = files[i];
+    runs[i].name = fs::path(files[i]).stem().string();
+    runs[i].set = set;
   }
   return runs;
 }

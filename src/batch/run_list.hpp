@@ -1,6 +1,5 @@
 // The runs a batch makes: a sweep's (scenarios x grid x zip factors, see sweep_file.hpp for the
-// order; checked by sweep_check.hpp) or a suite's (one per scenario file, each loaded before any
-// starts).
+// order; checked by sweep_check.hpp) or a suite's (one per scenario file, each read by its own run).
 #pragma once
 
 #include <cstddef>
@@ -48,10 +47,14 @@ class SweepRuns {
 /// Every run of the sweep (names left empty), SweepRuns(sweep).at(0..size-1).
 std::vector<RunSpec> expand_sweep(const Sweep& sweep);
 
-/// The runs of a suite: one per scenario file with the same overrides. Loads each (no SUMO). A file
-/// that does not load (malformed, an unknown key, ...) is a run with `load_error` set and its file
-/// stem as name: it becomes an error row and the others run. Throws InputError for a bad --set or
-/// --params file (scenario/overrides.hpp is_override_input).
+/// The runs of a suite: one per scenario file with the same overrides, named by the file's stem. The
+/// files are not read here (check_suite_overrides aside): each run's worker loads its own, and a file
+/// that does not load (malformed, an unknown key, ...) is that run's error row while the others run.
 std::vector<RunSpec> suite_runs(const std::vector<std::string>& files, const std::vector<std::string>& set);
+
+/// Loads the suite's files in order until one loads with `set` (no SUMO): throws InputError for a bad
+/// --set or --params file (scenario/overrides.hpp is_override_input), which every run would meet.
+/// A file that does not load for its own reason is passed over (its run reports it).
+void check_suite_overrides(const std::vector<std::string>& files, const std::vector<std::string>& set);
 
 }  // namespace signalsim

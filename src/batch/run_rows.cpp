@@ -27,10 +27,29 @@ void add_fleet_cells(ResultRow& row, const nlohmann::ordered_json& summary) {
     for (const auto& [name, value] : fleet["sumo"].items()) row.cells.emplace("fleet_sumo_" + name, value.dump());
 }
 
+// The scenario's own name, as its run loaded it (the run list names a run by its file).
+void name_from(ResultRow& row, const nlohmann::ordered_json& summary) {
+  // (A file that did not load leaves a summary.json with an empty name: the file's stem stays.)
+  if (summary.contains("scenario") && summary["scenario"].is_string() && !summary["scenario"].get<std::string>().empty())
+    row.cells["scenario"] = summary["scenario"];
+}
+
+// An errored run's name from the summary.json it left (an error after its scenario loaded), if any.
+void name_from_summary_file(ResultRow& row, const std::string& dir) {
+  std::error_code ec;
+  const fs::path path = fs::path(dir) / run_files::kSummary;
+  if (!fs::is_regular_file(path, ec)) return;
+  try {
+    name_from(row, read_json_file(path.string()));
+  } catch (const std::exception&) {  // half-written or not JSON: the file's stem stays
+  }
+}
+
 // Status, expectations and metrics from a finished worker's summary.json.
 void read_summary(ResultRow& row, const RunSpec& run, const std::string& dir) {
   const auto summary = read_json_file((fs::path(dir) / run_files::kSummary).string());
   const std::string status = summary.value("status", "");
+  name_from(row, summary);
   if (!is_finished_status(status)) {
     row.cells["status"] = "error";
     row.cells["error"] = summary.value("error", "summary.json status '" + status + "'");
@@ -145,19 +164,8 @@ ResultRow make_row(const RunSpec& run, const std::string& out_dir, const std::st
     }
   } else {
     error(message.empty() ? "exit code " + std::to_string(result.exit_code) : message);
+    name_from_summary_file(row, dir);
   }
-  return row;
-}
-
-ResultRow load_error_row(const RunSpec& run) {
-  ResultRow row;
-  row.run = run.index;
-  row.cells["scenario"] = run.name;
-  row.cells["file"] = run.scenario;
-  for (const auto& [key, value] : run.values) row.cells[swept_column(key)] = value;
-  row.cells["wall_time"] = "0.00";
-  row.cells["status"] = "error";
-  row.cells["error"] = stderr_one_line(run.load_error);
   return row;
 }
 

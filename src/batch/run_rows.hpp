@@ -30,7 +30,4 @@ std::string stderr_one_line(const std::string& text);
 ResultRow make_row(const RunSpec& run, const std::string& out_dir, const std::string& run_dir, double timeout,
                    const ProcessResult& result);
 
-/// A suite's scenario file that did not load: its row says why.
-ResultRow load_error_row(const RunSpec& run);
-
 }  // namespace signalsim

@@ -13,10 +13,9 @@ namespace signalsim {
 struct RunSpec {
   std::size_t index = 0;
   std::string scenario;                                     ///< the scenario file
-  std::string name;                                         ///< the scenario's `name`
+  std::string name;  ///< the scenario file's stem, or a swept `name` (run directory, progress lines)
   std::vector<std::pair<std::string, std::string>> values;  ///< swept key -> value, sweep order
   std::vector<std::string> set;                             ///< every --set item for the run
-  std::string load_error;  ///< a suite's file that does not load: its one-line message (an error row)
 };
 
 }  // namespace signalsim

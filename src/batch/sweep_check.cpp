@@ -81,40 +81,32 @@ void SweepCheck::refuse(const RunSpec& run, const std::string& error) const {
 
 void SweepCheck::check_every_run() {
   std::string error;
-  names_.reserve(runs_.size());
   for (std::size_t i = 0; i < runs_.size(); ++i) {
     const RunSpec run = runs_.at(i);
     const auto name = loaded_name(run.scenario, run.set, error);
     if (!name) refuse(run, error);
-    names_.push_back(*name);
+    if (name_factor_ != SIZE_MAX) swept_names_[runs_.choice_of(i, name_factor_)] = *name;
   }
 }
 
 void SweepCheck::check_each_value() {
   std::string error;
-  const std::vector<std::string>& scenarios = runs_.sweep().scenarios;
-  for (std::size_t s = 0; s < scenarios.size(); ++s) {
-    const RunSpec first = runs_.at(runs_.index_of(s, 0, 0));
-    const auto name = loaded_name(first.scenario, first.set, error);
-    if (!name) refuse(first, error);
-    first_names_[s] = *name;
-    for (std::size_t f = 0; f < runs_.factors(); ++f)
-      for (std::size_t c = 1; c < runs_.choices(f); ++c) {
-        const RunSpec run = runs_.at(runs_.index_of(s, f, c));
-        const auto named = loaded_name(run.scenario, run.set, error);
-        if (!named) refuse(run, error);
-        if (f == name_factor_) swept_names_[{s, c}] = *named;
-      }
-  }
+  const RunSpec first = runs_.at(runs_.index_of(0, 0, 0));
+  const auto name = loaded_name(first.scenario, first.set, error);
+  if (!name) refuse(first, error);
+  if (name_factor_ != SIZE_MAX) swept_names_[0] = *name;
+  for (std::size_t f = 0; f < runs_.factors(); ++f)
+    for (std::size_t c = 1; c < runs_.choices(f); ++c) {
+      const RunSpec run = runs_.at(runs_.index_of(0, f, c));
+      const auto named = loaded_name(run.scenario, run.set, error);
+      if (!named) refuse(run, error);
+      if (f == name_factor_) swept_names_[c] = *named;
+    }
 }
 
 std::string SweepCheck::name_of(const RunSpec& run) const {
-  if (!names_.empty()) return names_.at(run.index);
-  const std::size_t per = runs_.size() / runs_.sweep().scenarios.size();
-  const std::size_t scenario = run.index / per;
-  if (name_factor_ != SIZE_MAX)
-    if (const std::size_t c = runs_.choice_of(run.index, name_factor_); c > 0) return swept_names_.at({scenario, c});
-  return first_names_.at(scenario);
+  if (name_factor_ != SIZE_MAX) return swept_names_.at(runs_.choice_of(run.index, name_factor_));
+  return std::filesystem::path(run.scenario).stem().string();
 }
 
 void check_sweep_runs(const Sweep& sweep, std::vector<RunSpec>& runs) {

@@ -1,9 +1,11 @@
 // A sweep's runs checked against their scenarios before any starts (scenarios loaded with overrides,
 // no SUMO), and the name each run gets. Up to kCombinationsChecked runs, every run is loaded. A
-// larger grid (up to a million runs) is checked without loading a scenario per run: per scenario, its
-// first run (every factor at its first value) and, for each factor, each of its values with the other
-// factors at their first: the sum of the factors' values, not their product. Each of those is a run
-// of the sweep, so what is refused is wrong; a combination wrong only beyond them is its run's error row.
+// larger grid (up to a million runs) is checked on its first scenario file alone, which no other
+// file is read for: its first run (every factor at its first value) and, for each factor, each of
+// its values with the other factors at their first: the sum of the factors' values, not their
+// product. Each of those is a run of the sweep, so what is refused is wrong; another scenario file
+// that does not load, or a combination wrong only beyond them, is its run's error row (its worker
+// reads its own file). A run is named by its scenario file's stem, or by its swept `name`.
 #pragma once
 
 #include <cstddef>
@@ -17,7 +19,7 @@
 namespace signalsim {
 
 /// Up to this many runs, every run's scenario is loaded with all of its overrides before any starts.
-inline constexpr std::size_t kCombinationsChecked = 10000;
+inline constexpr std::size_t kCombinationsChecked = 500;
 
 class SweepCheck {
  public:
@@ -27,7 +29,7 @@ class SweepCheck {
   /// `zip:` for a combination. Throws BatchInterrupted on SIGINT or SIGTERM under an InterruptGuard.
   explicit SweepCheck(const SweepRuns& runs);
 
-  /// The name the run's scenario gives it (its `name`, or a swept one).
+  /// The run's name: its swept `name` (as the scenario reads it), else its scenario file's stem.
   std::string name_of(const RunSpec& run) const;
 
  private:
@@ -36,11 +38,8 @@ class SweepCheck {
   [[noreturn]] void refuse(const RunSpec& run, const std::string& error) const;
 
   const SweepRuns& runs_;
-  std::vector<std::string> names_;  // every run's name, when every run is loaded
-  // Otherwise: each scenario's first run's name, and the name of each choice of the factor that
-  // sweeps `name` (scenario index, choice).
-  std::map<std::size_t, std::string> first_names_;
-  std::map<std::pair<std::size_t, std::size_t>, std::string> swept_names_;
+  // The name of each choice of the factor that sweeps `name`, when one does.
+  std::map<std::size_t, std::string> swept_names_;
   std::size_t name_factor_ = SIZE_MAX;
 };
 

@@ -108,6 +108,12 @@ class SessionImpl : public SumoSession {
 
   const SessionConfig config_;
   const std::string ego_;
+  /// How command_lateral_offset() moves the ego: SUMO's sublane model (changeSublane) or, without
+  /// it, its continuous lane change (continue_lane_change). A TraCI server's own sublane model wins.
+  bool sublane_ = config_.lateral_resolution > 0.0;
+  bool continuous_lane_change_ = !sublane_ && config_.lane_change_duration > 0.0;
+  bool lane_change_step_ = false;  ///< a continuous lane change moved the ego in this step
+  int last_signal_mask_ = -1;      ///< the mask command() sent for this step (-1: none)
 
  private:
   // A library call whose failure becomes a SumoError "SUMO could not report <what>: ...".
@@ -132,7 +138,9 @@ class SessionImpl : public SumoSession {
   /// class): a run starts from SUMO's own answers, also in a session SUMO reloaded.
   void forget_run_answers();
 
-  void apply_speed_mode();       // session_impl_commands.hpp
+  void apply_speed_mode();       // session_impl_commands.hpp, as the next one
+  void continue_lane_change(double shift, int ego_index, int reference_index);
+  void restore_blinkers_after_lane_change();
   void add_ego();                // session_impl_ego.hpp, as the next three
   bool wait_for_departure();
   void take_control();

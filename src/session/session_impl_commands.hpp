@@ -1,6 +1,7 @@
 // SessionImpl<Api>, part 2 of 3: what the session tells SUMO (session_impl.hpp has the class).
-// The ego's signals and speed, backing up, its lateral offset, its speed mode (emergency braking,
-// right of way) and speed factor (SUMO's lane limits), and the shift of a light's program. Where the
+// The ego's signals and speed, backing up, its lateral offset (the sublane model or the continuous
+// lane change), its speed mode (emergency braking, right of way) and speed factor (SUMO's lane
+// limits), and the shift of a light's program. Where the
 // ego is comes from the step's answer (session_impl_observe.hpp); its length and width are the ones
 // it departed with (take_control).
 // Included by session_impl.hpp only.
@@ -16,6 +17,7 @@ void SessionImpl<Api>::command(int signal_mask, double speed) {
   } catch (const std::exception& e) {
     throw SumoError("SUMO refused a command for the ego: " + failure_reason(e));
   }
+  last_signal_mask_ = signal_mask;
   on_command(signal_mask);
 }
 
@@ -29,7 +31,7 @@ void SessionImpl<Api>::move_back(double distance) {
     answers_.forget_ego();
     answers_.ego_moved = true;  // until the next step, where the ego is is asked directly
     const double drift = now.lateral_offset - Api::Vehicle::getLateralLanePosition(ego_);
-    if (config_.lateral_resolution > 0.0 && std::abs(drift) > 1e-6) Api::Vehicle::changeSublane(ego_, drift);
+    if (sublane_ && std::abs(drift) > 1e-6) Api::Vehicle::changeSublane(ego_, drift);
   } catch (const SumoError&) {
     throw;
   } catch (const std::exception& e) {
@@ -39,9 +41,10 @@ void SessionImpl<Api>::move_back(double distance) {
 
 template <class Api>
 void SessionImpl<Api>::command_lateral_offset(double target_offset_next_step, const std::string& reference_lane_id) {
-  if (config_.lateral_resolution <= 0.0)
-    throw SumoError("lateral offsets can only be commanded with SUMO's sublane model: set the session's "
-                    "lateral_resolution > 0 (--lateral-resolution)");
+  if (!sublane_ && !continuous_lane_change_)
+    throw SumoError("lateral offsets can only be commanded with SUMO's sublane model or its continuous lane "
+                    "change: set the session's lateral_resolution > 0 (--lateral-resolution) or "
+                    "lane_change_duration > step_length (--lanechange.duration)");
   try {
     const std::string& reference_edge = lanes_.lane_edge(reference_lane_id);
     const std::string& ego_edge = ego_state().edge;
@@ -66,12 +69,44 @@ void SessionImpl<Api>::command_lateral_offset(double target_offset_next_step, co
         lanes_.centre_distance(reference_edge, reference_index, hi) + 0.5 * lanes_.lane_width(lane(hi)) - half_width;
     double target = target_offset_next_step;
     if (lowest <= highest) target = std::clamp(target, lowest, highest);
-    Api::Vehicle::changeSublane(ego_, target - lateral_offset_from(reference_lane_id));
+    const double shift = target - lateral_offset_from(reference_lane_id);
+    if (sublane_) Api::Vehicle::changeSublane(ego_, shift);
+    else continue_lane_change(shift, ego_index, reference_index);
   } catch (const SumoError&) {
     throw;
   } catch (const std::exception& e) {
     throw SumoError("SUMO refused a lateral offset from lane '" + reference_lane_id + "': " + failure_reason(e));
   }
+}
+
+// Without the sublane model (docs/behaviour.md §S4): SUMO's continuous lane change moves the ego from
+// its lane's centre to the next lane's, `maxSpeedLat` a step while its vType sets one
+// (MSAbstractLaneChangeModel::computeSpeedLat: the manoeuvre's distance over whole steps at most that
+// fast). Re-set every step to the speed that lands on the commanded offset, it follows the plan. A
+// manoeuvre is started (changeLane, for one step) only towards the reference lane and only while the
+// ego is at a lane's centre, so that a running one is never redirected and one that SUMO ended a
+// step early is not followed by a step back. A shift away from the manoeuvre's direction holds the ego.
+template <class Api>
+void SessionImpl<Api>::continue_lane_change(double shift, int ego_index, int reference_index) {
+  constexpr double kAtCentre = 1e-9;    // [m] SUMO's offset between manoeuvres is exactly 0
+  constexpr double kSlowestLat = 1e-5;  // [m/s] maxSpeedLat > 0: SUMO divides by it
+  if (std::abs(ego_state().lateral_offset) <= kAtCentre) {
+    const int towards = reference_index > ego_index ? 1 : -1;  // lane indices grow to the left, as offsets
+    if (reference_index < 0 || ego_index == reference_index || shift * towards <= 0.0) return;
+    Api::Vehicle::changeLane(ego_, ego_index + towards, config_.step_length);
+  }
+  Api::Vehicle::setMaxSpeedLat(ego_, std::max(std::abs(shift) / config_.step_length, kSlowestLat));
+  lane_change_step_ = true;
+}
+
+// SUMO switches the blinkers off in the step a continuous lane change ends
+// (MSAbstractLaneChangeModel::endLaneChangeManeuver), over the mask sent for that step. Sent again
+// after that step (setSignals shows at once), SUMO shows the decider's blinker, as in every other step.
+template <class Api>
+void SessionImpl<Api>::restore_blinkers_after_lane_change() {
+  if (last_signal_mask_ < 0 || (ego_signals() & kBlinkerMask) == (last_signal_mask_ & kBlinkerMask)) return;
+  Api::Vehicle::setSignals(ego_, last_signal_mask_);
+  answers_.ego_signals = Api::Vehicle::getSignals(ego_);
 }
 
 template <class Api>

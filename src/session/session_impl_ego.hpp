@@ -71,7 +71,7 @@ void SessionImpl<Api>::add_ego() {
   Api::VehicleType::setSpeedDeviation(type, 0.0);
   // Sublane model: lateral speed and acceleration high enough that one changeSublane per step
   // lands exactly on the commanded offset (docs/behaviour.md §S4); the plan itself keeps them realistic.
-  if (config_.lateral_resolution > 0.0) Api::VehicleType::setMaxSpeedLat(type, 10.0);
+  if (sublane_) Api::VehicleType::setMaxSpeedLat(type, 10.0);
   for (const StandingVehicle& v : config_.standing) {
     const std::string standing_route = "standing_route_" + v.id, standing_type = "standing_type_" + v.id;
     Api::Route::add(standing_route, {v.edge});
@@ -106,12 +106,12 @@ void SessionImpl<Api>::take_control() {
     // The taken-over vehicle keeps its vType, but drives deterministically like an added ego.
     Api::Vehicle::setSpeedFactor(ego_, 1.0);
     Api::Vehicle::setImperfection(ego_, 0.0);
-    if (config_.lateral_resolution > 0.0) Api::Vehicle::setMaxSpeedLat(ego_, 10.0);
+    if (sublane_) Api::Vehicle::setMaxSpeedLat(ego_, 10.0);
   }
   if (!config_.sumo_drives) {  // SUMO driving keeps its default speed and lane-change modes
     apply_speed_mode();
     if (config_.keep_planned_lanes) Api::Vehicle::setLaneChangeMode(ego_, 0);
-    if (config_.lateral_resolution > 0.0) Api::Vehicle::setParameter(ego_, "laneChangeModel.lcAccelLat", "20");
+    if (sublane_) Api::Vehicle::setParameter(ego_, "laneChangeModel.lcAccelLat", "20");
   }
   vehicle_.id = ego_;
   vehicle_.length = Api::Vehicle::getLength(ego_);
@@ -141,7 +141,7 @@ template <class Api>
 void SessionImpl<Api>::move_to_depart_offset() {
   // libsumo 1.15's Vehicle::add has no departPosLat: the ego stands still (speed 0) while SUMO's
   // sublane model moves it sideways, a few steps (lcAccelLat 20 m/s^2), before the run starts.
-  if (config_.lateral_resolution <= 0.0) throw SumoError("a lateral depart offset needs lateral_resolution > 0");
+  if (!sublane_) throw SumoError("a lateral depart offset needs lateral_resolution > 0");
   Api::Vehicle::setSpeed(ego_, 0.0);
   for (int i = 0; i < 100; ++i) {
     const double delta = config_.depart_pos_lat - Api::Vehicle::getLateralLanePosition(ego_);

@@ -41,6 +41,8 @@ bool SessionImpl<Api>::step() {
                            ? !contains_id(static_cast<const libsumo::TraCIStringList&>(*arrived->second).value, ego_)
                            : !contains_id(Api::Simulation::getArrivedIDList(), ego_);
     if (!alive) ego_present_ = false;
+    if (alive && lane_change_step_) restore_blinkers_after_lane_change();
+    lane_change_step_ = false;
     on_stepped();
     return alive;
   } catch (const SumoError&) {

@@ -273,14 +273,22 @@ class TraciSession final : public SessionImpl<LibtraciApi> {
                         " s differs from the step length of SUMO at " + endpoint(b) + ", " +
                         short_number(server_step) + " s (Simulation::getDeltaT)");
       for (const char* option : {"net-file", "route-files", "additional-files", "seed", "collision.action",
-                                 "time-to-teleport", "lateral-resolution"})
+                                 "time-to-teleport", "lateral-resolution", "lanechange.duration"})
         server_options_.emplace_back(option, libtraci::Simulation::getOption(option));
-      // Lateral motion needs SUMO's sublane model, which only the server's start can switch on.
-      if (config_.lateral_resolution > 0.0 &&
-          !(parse_number(libtraci::Simulation::getOption("lateral-resolution")) > 0.0))
-        throw SumoError("the scenario drives lateral motion (a lane change or another maneuver), which needs "
+      // Lateral motion needs SUMO's sublane model or its continuous lane change, which only the
+      // server's start can switch on; a server's sublane model also drives a lane change.
+      const bool server_sublane = parse_number(libtraci::Simulation::getOption("lateral-resolution")) > 0.0;
+      const bool server_continuous =
+          parse_number(libtraci::Simulation::getOption("lanechange.duration")) > server_step + 1e-9;
+      if (continuous_lane_change_ && server_sublane) sublane_ = true, continuous_lane_change_ = false;
+      if (config_.lateral_resolution > 0.0 && !server_sublane)
+        throw SumoError("the scenario drives lateral motion (a maneuver beside a lane's centre), which needs "
                         "SUMO's sublane model: start SUMO at " + endpoint(b) + " with --lateral-resolution " +
                         short_number(config_.lateral_resolution));
+      if (continuous_lane_change_ && !server_continuous)
+        throw SumoError("the scenario drives a lane change, which needs SUMO's continuous lane change or its "
+                        "sublane model: start SUMO at " + endpoint(b) + " with --lanechange.duration " +
+                        short_number(config_.lane_change_duration) + " (or --lateral-resolution)");
     } catch (const SumoError&) {
       leave();
       throw;

@@ -38,6 +38,8 @@ std::vector<std::string> sumo_command_line(const SessionConfig& config, const st
   else args.insert(args.end(), {"--log", config.log_file});
   if (config.lateral_resolution > 0.0 && !sets(config.extra_args, "lateral-resolution"))
     args.insert(args.end(), {"--lateral-resolution", exact_number(config.lateral_resolution)});
+  if (config.lane_change_duration > 0.0 && !sets(config.extra_args, "lanechange.duration"))
+    args.insert(args.end(), {"--lanechange.duration", exact_number(config.lane_change_duration)});
   args.insert(args.end(), config.extra_args.begin(), config.extra_args.end());
   return args;
 }

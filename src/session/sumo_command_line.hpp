@@ -11,8 +11,9 @@ namespace signalsim::sumo {
 
 /// `binary` followed by SUMO's options for `config` (docs/behaviour.md §S1): the net, route and additional
 /// files, step length, begin, seed, collisions as warnings, no teleporting, SUMO's messages to
-/// config.log_file, the sublane model when asked for, then config.extra_args. The options signalsim
-/// sets by default and a user may replace (`time-to-teleport`, `no-step-log`, `duration-log.disable`)
+/// config.log_file, the sublane model or the continuous lane change when asked for, then config.extra_args. The options signalsim
+/// sets by default and a user may replace (`time-to-teleport`, `no-step-log`, `duration-log.disable`,
+/// `lateral-resolution`, `lanechange.duration`)
 /// are left out when extra_args gives them (SUMO refuses an option given twice).
 std::vector<std::string> sumo_command_line(const SessionConfig& config, const std::string& binary);
 

@@ -118,6 +118,11 @@ struct SessionConfig {
   /// dynamics fast enough to follow command_lateral_offset() exactly: vehicle-type maxSpeedLat
   /// 10 m/s and the vehicle parameter laneChangeModel.lcAccelLat 20 m/s^2 (docs/behaviour.md §S4).
   double lateral_resolution = 0.0;
+  /// SUMO's continuous lane change (`--lanechange.duration`) [s], used when lateral_resolution is 0:
+  /// > step_length lets command_lateral_offset() move the ego from one lane's centre to the next one's
+  /// along the commanded offsets (its maxSpeedLat re-set every step; docs/behaviour.md §S4); every other
+  /// vehicle's lane change then takes this long instead of one step. 0 = off.
+  double lane_change_duration = 0.0;
   /// Inserted with the ego, each with a stop at its position that lasts for the whole run.
   std::vector<StandingVehicle> standing;
 };
@@ -197,16 +202,19 @@ class SumoSession {
   /// internal edge. Throws SumoError for an unknown lane.
   virtual double lateral_offset_from(const std::string& reference_lane_id) const = 0;
 
-  /// Moves the ego sideways (SUMO changeSublane) so that after the next step its offset from the
-  /// centre of `reference_lane_id` is `target_offset_next_step` [m, left positive]. Call it every
-  /// step while a lateral plan is driven (the plan's offset at the s the ego will have after the
-  /// step). It moves the ego across lane boundaries too (a lane change). The ego follows exactly as
-  /// long as the plan stays within maxSpeedLat 10 m/s and lcAccelLat 20 m/s^2 (SessionConfig::
-  /// lateral_resolution). When the calls stop, the ego kept its offset in our SUMO 1.15 runs (alone
-  /// on the road, even through a junction onto the next edge), while docs/behaviour.md §S4 reports a drift
-  /// back to the lane centre: rely on neither, command the offset you want. Needs the sublane model
-  /// (SessionConfig::lateral_resolution > 0) and the ego on the reference lane's edge; throws
-  /// SumoError otherwise. The target is clamped to the road border: the ego's whole width stays on
+  /// Moves the ego sideways so that after the next step its offset from the centre of
+  /// `reference_lane_id` is `target_offset_next_step` [m, left positive]. Call it every step while a
+  /// lateral plan is driven (the plan's offset at the s the ego will have after the step). It moves
+  /// the ego across lane boundaries too (a lane change). With the sublane model
+  /// (SessionConfig::lateral_resolution > 0: changeSublane) the ego follows exactly as long as the
+  /// plan stays within maxSpeedLat 10 m/s and lcAccelLat 20 m/s^2; without it, SUMO's continuous lane
+  /// change (SessionConfig::lane_change_duration > step_length) moves the ego from lane centre to lane
+  /// centre, towards the reference lane only, at the maxSpeedLat re-set every step (within
+  /// millimetres). When the calls stop, the ego kept its offset in our SUMO 1.15 runs (alone on the
+  /// road, even through a junction onto the next edge), while docs/behaviour.md §S4 reports a drift
+  /// back to the lane centre: rely on neither, command the offset you want. Needs one of the two
+  /// models and the ego on the reference lane's edge; throws SumoError otherwise. The target is
+  /// clamped to the road border: the ego's whole width stays on
   /// the run of lanes around its own that its vehicle class may use (a sidewalk or any lane that
   /// disallows it is a border, like the outside of the edge). Unclamped, SUMO would refuse a move past
   /// the border and leave the ego short of it.

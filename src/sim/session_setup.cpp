@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <utility>
@@ -36,6 +37,56 @@ std::optional<int> known_departure_lane(const sumo::RouteFileVehicle& v, const s
 }
 
 constexpr double kSublaneWidth = 0.1;  // [m] SUMO --lateral-resolution when signalsim needs the sublane model
+// SUMO's --lanechange.duration for a run whose lateral motion is lane changes only, in steps: the
+// least that is continuous (SUMO: more than one step), so that every other vehicle's lane change
+// stays as short as it can (docs/performance.md "Lane changes in traffic").
+constexpr double kLaneChangeSteps = 2.0;
+
+// Whether every lateral motion of the plan goes from one lane's centre to another's (the lane
+// changes), which SUMO's continuous lane change drives; avoidance, pull out and pull over move the
+// ego beside a lane's centre, which needs the sublane model.
+bool lane_changes_only(const LateralPlan& lateral) {
+  return lateral.depart_offset == 0.0 && lateral.backward == 0.0 &&
+         std::all_of(lateral.segments.begin(), lateral.segments.end(),
+                     [](const LateralSegment& s) { return s.kind == LateralKind::LaneChange; });
+}
+
+// A continuous lane change crosses one lane: a shift over two or more lanes on one edge is one SUMO
+// manoeuvre after another, and the ego stops at the centre between them for the rest of that step
+// (docs/behaviour.md §S4). That step's lag is at most the plan's lateral motion in a step: its
+// steepest slope (1.875 shift / length for a quintic line) at the top speed. Such a shift is left to
+// the sublane model when that could exceed kMostLag.
+constexpr double kMostLag = 0.1;  // [m] half the default tolerance of lateral_offset_follows_plan
+bool lags_between_lanes(const LateralPlan& lateral, double max_speed, double step_length) {
+  for (const LateralSegment& segment : lateral.segments) {
+    const double lane_width = segment.left_half_width + segment.right_half_width;
+    for (const ShiftLine& line : segment.plan.lines()) {
+      const double shift = std::abs(line.relative_shift());
+      if (shift <= 1.5 * lane_width || line.length() <= 0.0) continue;  // one lane
+      if (1.875 * shift / line.length() * max_speed * step_length > kMostLag) return true;
+    }
+  }
+  return false;
+}
+
+// The lateral model of a run (docs/behaviour.md §S4): a user's own sublane model or continuous lane
+// change if their SUMO options set one, else the continuous lane change for lane changes only (none
+// over several lanes fast enough to lag) and the sublane model for every other maneuver.
+void choose_lateral_model(sumo::SessionConfig& config, const LateralPlan& lateral,
+                          std::optional<double> user_lateral_resolution, std::optional<double> user_lane_change_duration,
+                          double step_length, double max_speed) {
+  if (user_lateral_resolution) {
+    config.lateral_resolution = *user_lateral_resolution;
+    if (config.lateral_resolution > 0.0 || !lateral.active()) return;
+  }
+  if (!lateral.active()) return;
+  const bool user_continuous = user_lane_change_duration && *user_lane_change_duration > step_length + 1e-9;
+  if (lane_changes_only(lateral) && !lags_between_lanes(lateral, max_speed, step_length) &&
+      (!user_lane_change_duration || user_continuous))
+    config.lane_change_duration = user_continuous ? *user_lane_change_duration : kLaneChangeSteps * step_length;
+  else
+    config.lateral_resolution = kSublaneWidth;
+}
 
 // Waiting for a taken-over vehicle: until the sumocfg's end, else a day.
 double take_over_deadline(const Scenario& s) { return s.sumo.end ? *s.sumo.end : s.sumo.begin + 86400.0; }
@@ -68,6 +119,7 @@ sumo::SessionConfig session_config(const Scenario& scenario, const sumo::RoutePl
   config.additional = scenario.additional;
   const bool gui = context.backend.kind == sumo::BackendKind::Gui;
   std::optional<double> user_lateral_resolution;  // a user's own sublane model, for their traffic too
+  std::optional<double> user_lane_change_duration;  // and their own continuous lane change
   try {
     // sumo_args win over the sumocfg's options of the same name (SUMO refuses an option twice).
     const std::vector<sumo::SumoOption> own = sumo::parse_sumo_tokens(scenario.sumo.sumo_args);
@@ -78,6 +130,7 @@ sumo::SessionConfig session_config(const Scenario& scenario, const sumo::RoutePl
     for (const std::vector<sumo::SumoOption>* options : {&std::as_const(cfg), &own})
       for (const sumo::SumoOption& o : *options)
         if (o.name == "lateral-resolution") user_lateral_resolution = std::atof(o.value.c_str());
+        else if (o.name == "lanechange.duration") user_lane_change_duration = std::atof(o.value.c_str());
     config.extra_args = sumo::sumo_tokens(cfg, scenario.sumo.sumocfg, context.out_dir, scenario.sumo.cfg_dir, gui);
     const auto tokens = sumo::sumo_tokens(own, "sumo_args", context.out_dir, scenario.sumo.scenario_dir, gui);
     config.extra_args.insert(config.extra_args.end(), tokens.begin(), tokens.end());
@@ -102,16 +155,14 @@ sumo::SessionConfig session_config(const Scenario& scenario, const sumo::RoutePl
   config.emergency_decel = scenario.ego.emergency_decel;
   // SUMO never changes lanes on its own: signalsim drives every lane change (plan_lateral).
   config.keep_planned_lanes = true;
-  // signalsim drives lateral motion with sublane offsets re-commanded every step (docs/behaviour.md §S4):
-  // SUMO's sublane model, the user's own resolution if they run one.
-  if (lateral.active()) config.lateral_resolution = kSublaneWidth;
-  if (user_lateral_resolution) {
-    if (lateral.active() && *user_lateral_resolution <= 0.0)
-      throw InputError(scenario.path, 0, "the scenario drives lateral motion (a lane change or another maneuver), "
-                                         "which needs SUMO's sublane model, but its SUMO options set "
-                                         "lateral-resolution " + std::to_string(*user_lateral_resolution));
-    config.lateral_resolution = *user_lateral_resolution;
-  }
+  // signalsim drives lateral motion with offsets re-commanded every step (docs/behaviour.md §S4).
+  choose_lateral_model(config, lateral, user_lateral_resolution, user_lane_change_duration, scenario.step_length,
+                       scenario.ego.max_speed);
+  if (user_lateral_resolution && *user_lateral_resolution <= 0.0 && config.lateral_resolution > 0.0)
+    throw InputError(scenario.path, 0, "the scenario drives lateral motion that needs SUMO's sublane model "
+                                       "(avoidance, pull out, pull over, or a shift over several lanes too fast "
+                                       "for the continuous lane change), but its SUMO options set "
+                                       "lateral-resolution " + std::to_string(*user_lateral_resolution));
   config.depart_pos_lat = lateral.depart_offset;
   for (const ObstacleSpec& o : scenario.obstacles) config.standing.push_back({o.id, o.edge, o.lane, o.pos, o.length});
   // SUMO driving: its own lane changes; maneuvers (a pull out's depart offset included) are signalsim's.
@@ -162,8 +213,9 @@ StartedRun start_run(PlannedRun planned, const sumo::NetIndex& net, const RunCon
   sumo::SessionConfig& config = run.config;
   config = session_config(run.scenario, plan, run.lateral, context);
   // A departure lane SUMO chooses at insertion (random, free, ...) may need a lane change at once:
-  // signalsim drives it with the sublane model, which must be on from the start.
-  if (definition && !planned.departure_known && config.lateral_resolution <= 0.0) config.lateral_resolution = kSublaneWidth;
+  // signalsim drives it with the continuous lane change, which must be on from the start.
+  if (definition && !planned.departure_known && config.lateral_resolution <= 0.0 && config.lane_change_duration <= 0.0)
+    config.lane_change_duration = kLaneChangeSteps * run.scenario.step_length;
   if (context.backend.kind == sumo::BackendKind::Connect &&
       (!run.scenario.sumo.route_files.empty() || !run.scenario.additional.empty() ||
        !run.scenario.sumo.cfg_options.empty()))
@@ -186,11 +238,13 @@ StartedRun start_run(PlannedRun planned, const sumo::NetIndex& net, const RunCon
     run.scenario = with_taken_over_ego(run.scenario, vehicle, *definition);
     plan = plan_route(run.scenario, net);
     run.lateral = plan_lateral(run.scenario, plan, net);
-    if (run.lateral.active() && config.lateral_resolution <= 0.0 && !context.sumo_drives)
+    if (run.lateral.active() && config.lateral_resolution <= 0.0 && config.lane_change_duration <= 0.0 &&
+        !context.sumo_drives)
       throw InputError(definition->file, definition->line,
                        "vehicle '" + vehicle.id + "' departed on lane " + std::to_string(vehicle.depart_lane) +
-                           " and its route needs a lane change, which signalsim drives with SUMO's sublane model; "
-                           "SUMO runs without it (the route file's departLane did not say that a change is needed)");
+                           " and its route needs a lane change, which signalsim drives with SUMO's continuous lane "
+                           "change; SUMO runs without it (the route file's departLane did not say that a change is "
+                           "needed)");
   }
   run.plan = std::move(plan);
   return run;
