@@ -21,6 +21,11 @@ std::size_t RouteMap::index_at(double s) const {
   return static_cast<std::size_t>(it - starts_.begin()) - 1;
 }
 
+std::size_t RouteMap::index_at(double s, std::size_t hint) const {
+  const bool in_hint = hint < starts_.size() && starts_[hint] <= s && (hint + 1 == starts_.size() || s < starts_[hint + 1]);
+  return in_hint ? hint : index_at(s);  // in_hint: hint is the last start at or before s
+}
+
 RouteMap::Window RouteMap::window(double s_from, double s_to) const {
   if (lanelets_.empty() || s_to < s_from) return {};
   const std::size_t first = index_at(s_from);

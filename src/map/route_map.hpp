@@ -30,6 +30,8 @@ class RouteMap {
   /// Index of the lanelet containing s (s on a boundary belongs to the later lanelet;
   /// clamped to the first/last lanelet outside the route).
   std::size_t index_at(double s) const;
+  /// The same, looking at lanelet `hint` first (a front that stays on its lanelet needs no search).
+  std::size_t index_at(double s, std::size_t hint) const;
 
   /// Indices [first, last) of the lanelets overlapping [s_from, s_to] (clamped to the route).
   struct Window {

@@ -86,5 +86,37 @@ TEST(RouteLocator, AnotherConnectionNeverGoesBackNorPastTheJunction) {
   EXPECT_LE(p.s_front, route.at(2).s_end());
 }
 
+
+// Step after step on one lanelet the front is placed from that lanelet (its lane position capped at
+// its length), and a lane the route drives twice is placed at its next visit, not its first.
+TEST(RouteLocator, StepsOnOneLaneletAndALaneDrivenTwiceArePlacedOnTheLaneletReached) {
+  const auto lanelet = [](const std::string& lane, double s, double length) {
+    Lanelet l;
+    l.lane_id = lane;
+    l.edge_id = lane.substr(0, lane.rfind('_'));
+    l.s_start = s;
+    l.length = length;
+    return l;
+  };
+  const RouteMap loop({lanelet("a_0", 0, 100), lanelet("b_0", 100, 50), lanelet("a_0", 150, 100)});
+  RouteLocator locator(loop, 0.0);
+  EXPECT_DOUBLE_EQ(locator.locate("a_0", "a", 10.0).s_front, 10.0);
+  EXPECT_DOUBLE_EQ(locator.locate("a_0", "a", 20.0).s_front, 20.0);
+  EXPECT_DOUBLE_EQ(locator.locate("a_0", "a", 120.0).s_front, 100.0);  // capped at the lanelet's end
+  EXPECT_EQ(locator.locate("b_0", "b", 49.0).index, 1u);
+  const RouteLocator::Place again = locator.locate("a_0", "a", 5.0);
+  EXPECT_DOUBLE_EQ(again.s_front, 155.0);
+  EXPECT_EQ(again.index, 2u);
+  EXPECT_DOUBLE_EQ(locator.locate("a_0", "a", 6.0).s_front, 156.0);
+}
+
+// index_at with a hint answers as without one, on a boundary (the later lanelet), before the route,
+// past its end and with a hint that is wrong.
+TEST(RouteMap, IndexAtWithAHintAnswersAsWithout) {
+  const RouteMap route = junction_route();
+  for (const double s : {-1.0, 0.0, 50.0, 99.999, 100.0, 104.0, 105.0, 114.0, 115.0, 165.0, 500.0})
+    for (std::size_t hint = 0; hint < 6; ++hint) EXPECT_EQ(route.index_at(s, hint), route.index_at(s)) << s << ' ' << hint;
+}
+
 }  // namespace
 }  // namespace signalsim
