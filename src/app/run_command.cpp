@@ -112,6 +112,7 @@ RunContext run_context(const RunOptions& options) {
 // the embedded back-end; no expectations (none can be given), so the status is no_expectations.
 int run_egoless(const RunOptions& options, const Scenario& scenario, const RunContext& context) {
   if (context.sumo_drives) throw InputError("--driver", 0, "--driver sumo drives the ego, and the scenario has none");
+  if (options.plot) throw InputError("--plot", 0, "the pictures are of the ego's run, and the scenario has no ego");
   if (context.backend.kind != sumo::BackendKind::Embedded)
     throw InputError(options.gui ? "--gui" : "--connect", 0,
                      "a scenario without an ego (fleet: without ego:) runs on the embedded back-end only");

@@ -86,14 +86,17 @@ grep -q fleet_cross_traffic_egoless "$work/egoless_batch/report.html" || fail "e
 printf 'name: no_ego\nnet: %s\nduration: 5\n' "$src/sumo_nets/cross/cross.net.xml" > "$work/no_ego.yaml"
 printf 'name: no_ego\nnet: %s\nfleet:\nexpect:\n  - blinker_never: left\n' "$src/sumo_nets/cross/cross.net.xml" \
   > "$work/no_ego_expect.yaml"
-refused() {  # FILE TEXT: the run exits 2 with one line holding TEXT
-  local msg rc
-  msg=$("$bin" run "$work/$1" --out "$work/bad_out" --quiet 2>&1); rc=$?
-  [ $rc -eq 2 ] || fail "egoless $1: exit code $rc, not 2"
-  case $msg in *"$2"*) ;; *) fail "egoless $1: message '$msg' lacks '$2'" ;; esac
+refused() {  # FILE TEXT [ARGS...]: the run exits 2 with one line holding TEXT
+  local file=$1 want=$2 msg rc
+  shift 2
+  msg=$("$bin" run "$file" --out "$work/bad_out" --quiet "$@" 2>&1); rc=$?
+  [ $rc -eq 2 ] || fail "egoless $file $*: exit code $rc, not 2"
+  case $msg in *"$want"*) ;; *) fail "egoless $file $*: message '$msg' lacks '$want'" ;; esac
 }
-refused no_ego.yaml "no_ego.yaml: missing required key 'ego'"
-refused no_ego_expect.yaml "no_ego_expect.yaml:4: key 'expect': is about the ego, and the scenario has none"
+refused "$work/no_ego.yaml" "no_ego.yaml: missing required key 'ego'"
+refused "$work/no_ego_expect.yaml" "no_ego_expect.yaml:4: key 'expect': is about the ego, and the scenario has none"
+refused "$egoless" "--driver: --driver sumo drives the ego, and the scenario has none" --driver sumo
+refused "$egoless" "--plot: the pictures are of the ego's run, and the scenario has no ego" --plot
 
 # ego on bologna/acosta with its demand (hundreds of vehicles), its first 60 s
 acosta=$src/tests/data/scenarios/acosta_red_light_right_of_way.yaml
