@@ -90,6 +90,8 @@ std::vector<Checked> check_scenarios(const std::vector<std::string>& files, cons
   std::vector<Checked> out;
   for (const std::string& file : files) {
     const Scenario scenario = load_scenario(file, ScenarioOverrides{set});
+    if (!scenario.has_ego)  // an egoless fleet run (docs/fleet.md "Without an ego")
+      throw InputError(file, 0, "compare drives the ego with signalsim and with SUMO, and the scenario has none");
     auto net = nets.find(scenario.net);
     if (net == nets.end()) net = nets.emplace(scenario.net, sumo::NetIndex::load(scenario.net)).first;
     const PlannedRun planned = plan_run(scenario, net->second);

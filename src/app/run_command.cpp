@@ -20,6 +20,7 @@
 #include "step/route_planning.hpp"
 #include "scenario/scenario.hpp"
 #include "scenario/sumo_inputs.hpp"
+#include "sim/egoless_run.hpp"
 #include "sim/step_loop.hpp"
 #include "net/net_index.hpp"
 #include "route/route_builder.hpp"
@@ -107,6 +108,36 @@ RunContext run_context(const RunOptions& options) {
   return context;
 }
 
+// A scenario without an ego (docs/fleet.md "Without an ego"): fleet mode over SUMO's traffic alone, on
+// the embedded back-end; no expectations (none can be given), so the status is no_expectations.
+int run_egoless(const RunOptions& options, const Scenario& scenario, const RunContext& context) {
+  if (context.sumo_drives) throw InputError("--driver", 0, "--driver sumo drives the ego, and the scenario has none");
+  if (options.plot) throw InputError("--plot", 0, "the pictures are of the ego's run, and the scenario has no ego");
+  if (context.backend.kind != sumo::BackendKind::Embedded)
+    throw InputError(options.gui ? "--gui" : "--connect", 0,
+                     "a scenario without an ego (fleet: without ego:) runs on the embedded back-end only");
+  const std::shared_ptr<const sumo::NetIndex> net = sumo::NetIndex::load_shared(scenario.net);
+  set_notes_enabled(!options.quiet);
+  for (const std::string& note : scenario.notes) note_once(note);
+  for (const std::string& warning : scenario.warnings) warn_once(warning);
+  clear_run_outputs(options.out_dir);  // as a run with an ego: no earlier run's files stay
+  sumo::throw_if_interrupted();
+  const auto start = std::chrono::steady_clock::now();
+  RunRecord record = signalsim::run_egoless(scenario, *net, context);
+  if (!record.sumo.log.empty()) record.sumo.log_counts = sumo::count_sumo_log(record.sumo.log, sumo::kDefaultEgoId);
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const std::vector<LawVerdict> law;
+  const RunStatus status = run_status({}, law);
+  write_run_outputs(options.out_dir, scenario, sumo::RoutePlan{}, record, {}, status, &law);
+  if (!options.quiet)
+    std::printf("%s: %s (no ego; %lld steps to t=%.1f s, ended by %s, %.2f s wall)\n"
+                "  fleet: %d vehicles followed, %d signalled, %zu blinker changes, %d left to SUMO\n",
+                scenario.name.c_str(), std::string(to_string(status)).c_str(), record.egoless->steps,
+                record.egoless->end_time, record.egoless->ended.c_str(), wall, record.fleet->totals.vehicles_followed,
+                record.fleet->totals.vehicles_signalled, record.fleet->events.size(), record.fleet->totals.left_to_sumo);
+  return 0;
+}
+
 int run(const RunOptions& options) {
   std::optional<Scenario> scenario;
   // Ctrl-C / SIGTERM unwind the run (sumo-gui stopped by its PID, an error summary written).
@@ -117,6 +148,7 @@ int run(const RunOptions& options) {
     scenario = load_scenario(options.scenario_path, options.overrides);
     RunContext context = run_context(options);
     if (scenario->fleet.enabled) context.backend.gui_zoom = kFleetGuiZoom;  // the traffic around the ego
+    if (!scenario->has_ego) return run_egoless(options, *scenario, context);
     // SUMO driving leaves no decision to a system under test: refused rather than silently not run.
     if (context.sumo_drives)
       for (const SutSpec* sut : {&scenario->decider, &scenario->light_judge})

@@ -270,11 +270,19 @@ void write_run_outputs(const std::string& dir, const Scenario& scenario, const s
   summary["country"] = scenario.country;
   summary["step_length"] = scenario.step_length;
   summary["duration"] = scenario.duration;
-  summary["ego"] = ego_json(scenario, record.sumo.ego);
-  summary["route"] = {{"edges", scenario.ego.route},
-                      {"lanelets", plan.map.size()},
-                      {"length", as_written(plan.map.length(), 3)},
-                      {"lane_changes", plan.lane_changes}};
+  // Without an ego (docs/fleet.md "Without an ego"): no ego and no route; how long the traffic ran.
+  summary["ego"] = scenario.has_ego ? ego_json(scenario, record.sumo.ego) : nlohmann::ordered_json();
+  if (scenario.has_ego)
+    summary["route"] = {{"edges", scenario.ego.route},
+                        {"lanelets", plan.map.size()},
+                        {"length", as_written(plan.map.length(), 3)},
+                        {"lane_changes", plan.lane_changes}};
+  else
+    summary["route"] = nullptr;
+  if (record.egoless)
+    summary["egoless"] = {{"steps", record.egoless->steps},
+                          {"end_time", as_written(record.egoless->end_time, 3)},
+                          {"ended", record.egoless->ended}};
   summary["counts"] = counts_json(record, scenario.sumo.begin);
   summary["not_arrived"] = not_arrived_json(record);
   summary["off_plan"] = off_plan_json(record);

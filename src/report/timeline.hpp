@@ -188,6 +188,13 @@ struct LightObservation {
   JudgeZone zone = JudgeZone::None;
 };
 
+/// A run without an ego (docs/fleet.md "Without an ego"): how long SUMO's traffic ran.
+struct EgolessRun {
+  long long steps = 0;      ///< SUMO steps run
+  double end_time = 0.0;    ///< [s] SUMO time after the last step
+  std::string ended;        ///< "duration" (begin + duration reached) or "no_vehicles" (none left to run)
+};
+
 struct RunRecord {
   Driver driver = Driver::Signalsim;
   std::vector<TimelineRow> rows;
@@ -209,6 +216,8 @@ struct RunRecord {
   RunSumoInfo sumo;
   /// Fleet mode's record (docs/fleet.md); empty when it is off.
   std::optional<FleetRecord> fleet;
+  /// Set only for a run without an ego (its rows and events are then empty).
+  std::optional<EgolessRun> egoless;
 };
 
 }  // namespace signalsim

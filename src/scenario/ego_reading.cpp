@@ -58,6 +58,11 @@ bool strict_params(const YAML::Node& root, const std::string& path) {
 }  // namespace
 
 void read_ego(const YamlFields& top, const YAML::Node& root, const std::string& path, Scenario& s) {
+  if (!top.has("ego") && top.has("fleet")) {  // an egoless fleet run (docs/fleet.md "Without an ego")
+    s.has_ego = false;
+    s.strict_params = strict_params(root, path);
+    return;
+  }
   if (!top.has("ego")) throw InputError(path, 0, "missing required key 'ego'");
   YamlFields ego(top.node("ego"), path, "ego", ego_keys());
   for (const KeySpec& key : ego_keys().keys)  // what the scenario gave (vehicle_info is not a value)
@@ -100,6 +105,14 @@ void read_ego(const YamlFields& top, const YAML::Node& root, const std::string& 
       if (ego.has(key))
         ego.fail(key, "vehicle '" + s.ego.id + "' (ego.id) departs as its route file says; remove ego." + key);
   ego.finish();
+}
+
+void refuse_ego_only_keys(const YamlFields& top) {
+  static const char* const kEgoOnly[] = {"obstacles", "maneuvers", "perception", "decider", "light_judge", "expect"};
+  for (const char* key : kEgoOnly)
+    if (top.has(key))
+      top.fail(key, std::string("is about the ego, and the scenario has none (fleet: without ego:, docs/fleet.md "
+                                "\"Without an ego\"); give an ego or remove ") + key);
 }
 
 }  // namespace signalsim

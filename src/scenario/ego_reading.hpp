@@ -16,6 +16,11 @@ namespace signalsim {
 /// Notes vehicle_info values the keys replace in s.notes (and keys Autoware dropped in s.warnings). Throws InputError (file, line, key): a
 /// missing ego or route, a value out of range or of the wrong type, base_link_to_front beyond the
 /// length, depart keys beside ego.id, a bad vehicle_info file or footprint.
+/// Without `ego:` but with `fleet:` it reads nothing and sets s.has_ego false (an egoless fleet run).
 void read_ego(const YamlFields& top, const YAML::Node& root, const std::string& path, Scenario& s);
+
+/// For a scenario without an ego: throws InputError at the first key that is about the ego
+/// (obstacles, maneuvers, perception, decider, light_judge, expect).
+void refuse_ego_only_keys(const YamlFields& top);
 
 }  // namespace signalsim

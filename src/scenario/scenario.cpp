@@ -109,6 +109,7 @@ void read_scenario(const YAML::Node& root, const std::string& path, const YAML::
   read_expectations(top, path, s);
   read_systems_under_test(top, path, s);
   read_fleet(top, path, s);
+  if (!s.has_ego) refuse_ego_only_keys(top);
   top.finish();
   if (country) check_driving_side(*country, s);
 }

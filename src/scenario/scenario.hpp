@@ -274,6 +274,9 @@ struct Scenario {
   SutSpec light_judge;
   double sut_timeout = 5.0;       ///< `sut_timeout:` [s] a SUT's answer to one step at most
   FleetSpec fleet;                ///< `fleet:` (off unless given)
+  /// false: no `ego:` (only with `fleet:`): SUMO's traffic alone, fleet mode from the first step
+  /// (docs/fleet.md "Without an ego"); `ego` then holds its defaults and nothing reads them.
+  bool has_ego = true;
   /// Where each key came from: its line, or the --set item that gave it (key_error below).
   KeyOrigins origins;
 };

@@ -33,7 +33,8 @@ const KeyTable& scenario_keys() {
                             "the sumocfg's seed when it has one"),
           text_key_or("country", "", "A country preset (config/countries/<code>.yaml, e.g. jp): its parameter "
                                      "values apply after params.files; empty for none."),
-          as_required(table_key("ego", KeyType::Mapping, ego_keys(), "The ego vehicle and its route.")),
+          table_key("ego", KeyType::Mapping, ego_keys(),
+                    "The ego vehicle and its route; optional only with fleet: (an egoless fleet run, docs/fleet.md)."),
           table_key("perception", KeyType::Mapping, perception_keys(),
                     "The traffic-light perception model's faults; all off by default."),
           shape_key("light_offsets", KeyType::NumberMapping,
@@ -57,7 +58,7 @@ const KeyTable& scenario_keys() {
           table_key("expect", KeyType::KindList, expectation_kinds(),
                     "Expectations checked after the run (exit code 1 when one fails)."),
       },
-      {{"net", "sumocfg"}}};
+      {{"net", "sumocfg"}, {"ego", "fleet"}}};
   return table;
 }
 

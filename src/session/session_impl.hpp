@@ -56,6 +56,7 @@ class SessionImpl : public SumoSession {
   // Reads (session_impl_observe.hpp).
   bool step() override;
   double time() const override;
+  int expected_vehicles() const override;
   EgoState ego() const override;
   int ego_signals() const override;
   int ego_signals_now() const override;

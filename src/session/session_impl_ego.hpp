@@ -11,6 +11,7 @@ namespace signalsim::sumo {
 template <class Api>
 void SessionImpl<Api>::insert_ego() {
   forget_run_answers();
+  if (config_.no_ego) return;  // SUMO's traffic alone (an egoless fleet run)
   try {
     if (config_.take_over.empty()) add_ego();
     const bool departed = wait_for_departure();

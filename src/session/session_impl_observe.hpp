@@ -83,6 +83,11 @@ double SessionImpl<Api>::time() const {
 // The ego's state: from the step's subscribed answer over TraCI (one round trip a step instead of
 // nine), else from the getters; once a step either way.
 template <class Api>
+int SessionImpl<Api>::expected_vehicles() const {
+  return guarded("the expected vehicles", [] { return Api::Simulation::getMinExpectedNumber(); });
+}
+
+template <class Api>
 EgoState SessionImpl<Api>::ego() const {
   return guarded("the ego", [this] { return ego_state(); });
 }

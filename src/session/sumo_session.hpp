@@ -90,6 +90,9 @@ struct SessionConfig {
   double step_length = 0.1;
   double begin = 0.0;  ///< SUMO --begin [s]
   int seed = 1;
+  /// No ego at all (an egoless fleet run, docs/fleet.md "Without an ego"): SUMO's traffic alone; the
+  /// ego's keys below are unused and the caller must not ask about or command an ego.
+  bool no_ego = false;
   /// The ego: an id of a vehicle of the route files to take over when it departs, or empty to add
   /// one (id kDefaultEgoId) on `route` at `begin`.
   std::string take_over;
@@ -174,6 +177,9 @@ class SumoSession {
   /// Advances one step. Returns false once the ego has arrived (it is then gone).
   virtual bool step() = 0;
   virtual double time() const = 0;
+  /// The vehicles SUMO still has to run: those present plus those waiting to be inserted
+  /// (Simulation::getMinExpectedNumber); 0 once all traffic has left.
+  virtual int expected_vehicles() const = 0;
 
   virtual EgoState ego() const = 0;
   /// The signal mask SUMO shows for the ego now (docs/behaviour.md §S4 read-back).

@@ -3,6 +3,9 @@
 #   junction     the signalised crossing with turning traffic: every turning vehicle's blinker by the
 #                rule at C, straight ones none; SUMO's FCD (--fcd-output.signals) shows it every step
 #   observe      signals: observe: SUMO's own blinker measured against the rules
+#   egoless      the crossing's traffic without an ego: the junction check on its own, the run ending
+#                when no vehicle is left; batch and report on it; an egoless scenario without fleet:,
+#                or with an expectation, refused at its line
 #   ego          the ego's timeline.csv and events.csv byte-identical with and without --fleet, on
 #                the crossing and on bologna/acosta with its own demand; there every vehicle of the
 #                traffic at the same place at every step (SUMO's FCD)
@@ -50,6 +53,50 @@ for f in timeline.csv events.csv; do
   cmp -s "$work/cross_plain/$f" "$work/cross_fleet/$f" || fail "ego: cross $f differs with --fleet"
 done
 [ -e "$work/cross_plain/fleet_events.csv" ] && fail "fleet_events.csv written without fleet mode"
+
+# egoless: the crossing's traffic alone, fleet mode from the first step
+egoless=$data/cross_traffic_egoless.yaml
+"$bin" run "$egoless" --out "$work/egoless" --quiet --set "$fcd_args" || fail "egoless: exit code $?"
+check junction "$work/egoless" "$work/egoless/fcd.xml"
+"$py" - "$work/egoless" <<'PY' || fail "egoless: summary.json or the empty ego files"
+import json, sys
+run = sys.argv[1]
+s = json.load(open(run + "/summary.json"))
+assert s["status"] == "no_expectations" and s["ego"] is None and s["route"] is None, s["status"]
+# The last of the 54 vehicles leaves before the 300 s duration: the run ends with no vehicle left.
+e = s["egoless"]
+assert e["ended"] == "no_vehicles" and e["steps"] == round(e["end_time"] * 10) and 100 < e["end_time"] < 300, e
+for name in ("timeline.csv", "events.csv"):
+    lines = open(run + "/" + name).read().splitlines()
+    assert len(lines) == 1 and lines[0].startswith("time,s_front,"), (name, lines[:2])
+PY
+"$bin" run "$egoless" --out "$work/egoless_short" --quiet --set duration=30 || fail "egoless 30 s: exit code $?"
+"$py" -c 'import json,sys; e=json.load(open(sys.argv[1]))["egoless"]; assert e == {"steps": 300, "end_time": 30.0, "ended": "duration"}, e' \
+  "$work/egoless_short/summary.json" || fail "egoless: duration=30 did not end the run at 30 s"
+"$bin" batch "$egoless" "$cross" --out "$work/egoless_batch" -j2 --junit "$work/egoless_batch/junit.xml" >/dev/null \
+  || fail "egoless batch: exit code $?"
+"$py" - "$work/egoless_batch/results.csv" <<'PY' || fail "egoless batch: results.csv"
+import csv, sys
+rows = {r["scenario"]: r for r in csv.DictReader(open(sys.argv[1]))}
+r = rows["fleet_cross_traffic_egoless"]
+assert r["status"] == "no_expectations" and r["fleet_followed"] == "54" and r["fleet_signalled"] == "36", r
+PY
+"$bin" report "$work/egoless_batch" >/dev/null || fail "egoless report: exit code $?"
+grep -q fleet_cross_traffic_egoless "$work/egoless_batch/report.html" || fail "egoless report: the run is missing"
+printf 'name: no_ego\nnet: %s\nduration: 5\n' "$src/sumo_nets/cross/cross.net.xml" > "$work/no_ego.yaml"
+printf 'name: no_ego\nnet: %s\nfleet:\nexpect:\n  - blinker_never: left\n' "$src/sumo_nets/cross/cross.net.xml" \
+  > "$work/no_ego_expect.yaml"
+refused() {  # FILE TEXT [ARGS...]: the run exits 2 with one line holding TEXT
+  local file=$1 want=$2 msg rc
+  shift 2
+  msg=$("$bin" run "$file" --out "$work/bad_out" --quiet "$@" 2>&1); rc=$?
+  [ $rc -eq 2 ] || fail "egoless $file $*: exit code $rc, not 2"
+  case $msg in *"$want"*) ;; *) fail "egoless $file $*: message '$msg' lacks '$want'" ;; esac
+}
+refused "$work/no_ego.yaml" "no_ego.yaml: missing required key 'ego'"
+refused "$work/no_ego_expect.yaml" "no_ego_expect.yaml:4: key 'expect': is about the ego, and the scenario has none"
+refused "$egoless" "--driver: --driver sumo drives the ego, and the scenario has none" --driver sumo
+refused "$egoless" "--plot: the pictures are of the ego's run, and the scenario has no ego" --plot
 
 # ego on bologna/acosta with its demand (hundreds of vehicles), its first 60 s
 acosta=$src/tests/data/scenarios/acosta_red_light_right_of_way.yaml

@@ -100,6 +100,8 @@ TEST(JsonSchema, HoldsEveryScenarioKeyWithItsShapeDefaultAndRange) {
   const json doc = scenario_schema();
   expect_table(doc, scenario_keys());
   EXPECT_EQ(doc["allOf"][0]["anyOf"][1]["required"][0], "sumocfg");  // net or sumocfg
+  EXPECT_EQ(doc["allOf"][1]["anyOf"][0]["required"][0], "ego");      // ego, or fleet without one
+  EXPECT_EQ(doc["allOf"][1]["anyOf"][1]["required"][0], "fleet");
   EXPECT_EQ(doc["properties"]["maneuvers"]["items"]["properties"]["lane_change"]["dependencies"]["to_lane"][0], "edge");
 }
 

@@ -34,7 +34,8 @@ scenario, sweep = validator("scenario"), validator("sweep")
 
 # Every bundled file validates: the suite, its sweeps, and the test data that loads.
 scenario_files = ["/scenarios/*.yaml", "/tests/data/schema/*.yaml", "/tests/data/scenarios/*.yaml",
-                  "/tests/data/user_sumo/*.yaml", "/tests/data/compare/*.yaml", "/tests/batch/data/[rt]*.yaml"]
+                  "/tests/data/user_sumo/*.yaml", "/tests/data/compare/*.yaml", "/tests/batch/data/[rt]*.yaml",
+                  "/tests/data/fleet/cross_traffic_egoless.yaml"]
 sweep_files = ["/scenarios/sweeps/*.yaml", "/tests/data/sweeps/*.yaml", "/tests/batch/data/sweep_*.yaml"]
 bundled = [(scenario, p) for pattern in scenario_files for p in glob.glob(src + pattern)]
 bundled += [(sweep, p) for pattern in sweep_files for p in glob.glob(src + pattern)]
@@ -97,6 +98,7 @@ cases = [
     ("parameter_range", lambda d: d["params"]["set"]["v2i"].update(last_time_allowed_to_pass=99),
      "parameter 'v2i.last_time_allowed_to_pass': value 99 is out of range [0, 60]"),
     ("missing_name", lambda d: d.pop("name"), "missing required key 'name'"),
+    ("missing_ego_and_fleet", lambda d: (d.pop("ego"), d.pop("fleet")), "missing required key 'ego'"),
     ("lists_not_a_mapping", lambda d: d.update(params=[1]), "'params' must be a mapping of key: value"),
 ]
 for name, change, message in cases:
