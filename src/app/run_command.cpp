@@ -258,9 +258,13 @@ Command add_run_command(CLI::App& app) {
       ->check(number_between(0.1, 86400.0));
   sub->add_flag("--fleet", options->fleet,
                 "Fleet mode: every vehicle of SUMO's traffic gets its blinker from the reference decider (the "
-                "scenario's fleet: filters kept; the same as --set fleet.signals=set, docs/fleet.md)");
+                "scenario's fleet: filters kept; the same as --set fleet.signals=set, which a --set fleet.signals "
+                "given beside it overrides, docs/fleet.md)");
   return {sub, [options] {
-            if (options->fleet) options->overrides.set.push_back("fleet.signals=set");
+            // A --set fleet.signals=... beside --fleet (observe) is the user's word and wins.
+            const bool signals_set = std::any_of(options->overrides.set.begin(), options->overrides.set.end(),
+                                                 [](const std::string& item) { return item.starts_with("fleet.signals="); });
+            if (options->fleet && !signals_set) options->overrides.set.push_back("fleet.signals=set");
             return run(*options);
           }};
 }

@@ -6,8 +6,11 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <map>
+#include <sstream>
+#include <vector>
 
 #include "scenario/input_error.hpp"
 
@@ -37,6 +40,42 @@ std::string batch_manifest(const std::vector<RunSpec>& runs) {
     out += "\n";
   }
   return out;
+}
+
+namespace {
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+std::vector<std::string> fields_of(const std::string& line) {
+  std::vector<std::string> fields;
+  std::istringstream in(line);
+  for (std::string field; std::getline(in, field, '\t');) fields.push_back(field);
+  return fields;
+}
+
+// What differs between two lines of the same run index: "run I (FILE): ..."
+std::string run_difference(const std::vector<std::string>& was, const std::vector<std::string>& is) {
+  const std::string run = "run " + is[0] + " (" + is[1] + "): ";
+  if (was.size() < 3 || was[1] != is[1]) return run + "another scenario file than " + (was.size() > 1 ? was[1] : "?");
+  if (was[2] != is[2])
+    return run + (is[2] == "-" ? "the file is gone" : "the file changed (size or modification time)");
+  return run + "other --set values";
+}
+
+}  // namespace
+
+std::string manifest_difference(const std::string& earlier, const std::string& now) {
+  if (earlier == now) return "";
+  const std::vector<std::string> was = lines_of(earlier), is = lines_of(now);
+  if (was.empty() || is.empty() || was[0] != is[0]) return "the manifest there is of another signalsim version";
+  for (std::size_t i = 1; i < std::min(was.size(), is.size()); ++i)
+    if (was[i] != is[i]) return run_difference(fields_of(was[i]), fields_of(is[i]));
+  return "the batch there had " + std::to_string(was.size() - 1) + " runs, this one " + std::to_string(is.size() - 1);
 }
 
 std::string manifest_path(const std::string& out_dir) { return (fs::path(out_dir) / "batch.manifest").string(); }

@@ -16,6 +16,11 @@ namespace signalsim {
 /// the file system's time resolution, is not seen; a file touched without a change is).
 std::string batch_manifest(const std::vector<RunSpec>& runs);
 
+/// What differs between an earlier manifest and this batch's, for a refusal: the first run whose
+/// scenario, file stamp or --set values differ ("run 3 (a/b.yaml): the file changed (size or
+/// modification time)"), a different number of runs, or an earlier manifest version. "" when equal.
+std::string manifest_difference(const std::string& earlier, const std::string& now);
+
 /// OUT/batch.manifest
 std::string manifest_path(const std::string& out_dir);
 

@@ -71,10 +71,12 @@ BatchStart start_batch(const std::vector<RunSpec>& runs, const BatchSettings& se
   batch.run_dirs = run_dir_names(runs);
 
   if (settings.resume && fs::exists(csv)) {
-    if (!fs::exists(manifest_file) || read_text_file(manifest_file) != manifest)
+    const std::string changed =
+        fs::exists(manifest_file) ? manifest_difference(read_text_file(manifest_file), manifest) : "it has no batch.manifest";
+    if (!changed.empty())
       throw InputError(settings.out_dir, 0,
                        "--resume: the results there were made with other settings (scenarios, their "
-                       "contents or --set values changed); use another --out");
+                       "contents or --set values changed: " + changed + "); use another --out");
     for (auto& [index, row] : read_results_csv(csv)) {
       if (index >= runs.size() || !row_matches(row, runs[index]))
         throw InputError(csv, static_cast<int>(index) + 2,

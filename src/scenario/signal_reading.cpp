@@ -1,15 +1,31 @@
 // Reading perception, the V2I channel and light offsets through their key tables.
 #include "scenario/signal_reading.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 #include <regex>
+#include <string_view>
 
 #include "scenario/input_error.hpp"
 #include "scenario/scenario_keys.hpp"
 
 namespace signalsim {
 namespace {
+
+// SUMO's vClass names (SUMOVehicleClass.cpp, 1.15 and the classes added since), so that a misspelt
+// `fleet.vclass` is refused at its line instead of selecting no vehicle.
+constexpr std::array<std::string_view, 34> kSumoVClasses = {
+    "ignoring",   "private",    "emergency",     "authority", "army",      "vip",      "pedestrian",
+    "passenger",  "hov",        "taxi",          "bus",       "coach",     "delivery", "truck",
+    "trailer",    "motorcycle", "moped",         "bicycle",   "evehicle",  "tram",     "rail_urban",
+    "rail",       "rail_electric", "rail_fast",  "ship",      "container", "cable_car", "subway",
+    "aircraft",   "wheelchair", "scooter",       "drone",     "custom1",   "custom2"};
+
+bool is_sumo_vclass(const std::string& name) {
+  return std::find(kSumoVClasses.begin(), kSumoVClasses.end(), name) != kSumoVClasses.end();
+}
 
 // The intervals of key `name` of `f` (`blackouts`, `omissions`); `key` is its full path for messages.
 std::vector<PerceptionModelParameters::Blackout> parse_intervals(YamlFields& f, const std::string& name,
@@ -97,6 +113,8 @@ void read_fleet(const YamlFields& top, const std::string& path, Scenario& s) {
   s.fleet.vclass = f.text_or("vclass", "");
   s.fleet.id_pattern = f.text_or("id_pattern", "");
   s.fleet.set_signals = f.choice("signals") == "set";
+  if (f.has("vclass") && !is_sumo_vclass(s.fleet.vclass))
+    f.fail("vclass", "'" + s.fleet.vclass + "' is not a SUMO vClass (passenger, bus, truck, ...)");
   if (!s.fleet.id_pattern.empty()) {
     try {
       std::regex check(s.fleet.id_pattern, std::regex::ECMAScript);

@@ -88,6 +88,22 @@ void choose_lateral_model(sumo::SessionConfig& config, const LateralPlan& latera
     config.lateral_resolution = kSublaneWidth;
 }
 
+// A user's SUMO options that cannot run the sublane model the plan needs: a lateral-resolution of 0,
+// or a positive lanechange.duration (SUMO refuses it beside a lateral-resolution: MSFrame::checkOptions).
+void refuse_user_lateral_options(const std::string& path, const sumo::SessionConfig& config,
+                                 std::optional<double> user_lateral_resolution,
+                                 std::optional<double> user_lane_change_duration) {
+  if (config.lateral_resolution <= 0.0 || (user_lateral_resolution && *user_lateral_resolution > 0.0)) return;
+  const char* needs = "the scenario drives lateral motion that needs SUMO's sublane model (avoidance, pull out, "
+                      "pull over, a shift over several lanes too fast for the continuous lane change, or lane "
+                      "changes with a lanechange.duration of a step or less), but its SUMO options set ";
+  if (user_lateral_resolution)
+    throw InputError(path, 0, needs + ("lateral-resolution " + std::to_string(*user_lateral_resolution)));
+  if (user_lane_change_duration && *user_lane_change_duration > 0.0)
+    throw InputError(path, 0, needs + ("lanechange.duration " + std::to_string(*user_lane_change_duration)) +
+                                  ", which SUMO does not run beside the sublane model");
+}
+
 // Waiting for a taken-over vehicle: until the sumocfg's end, else a day.
 double take_over_deadline(const Scenario& s) { return s.sumo.end ? *s.sumo.end : s.sumo.begin + 86400.0; }
 
@@ -158,11 +174,7 @@ sumo::SessionConfig session_config(const Scenario& scenario, const sumo::RoutePl
   // signalsim drives lateral motion with offsets re-commanded every step (docs/behaviour.md §S4).
   choose_lateral_model(config, lateral, user_lateral_resolution, user_lane_change_duration, scenario.step_length,
                        scenario.ego.max_speed);
-  if (user_lateral_resolution && *user_lateral_resolution <= 0.0 && config.lateral_resolution > 0.0)
-    throw InputError(scenario.path, 0, "the scenario drives lateral motion that needs SUMO's sublane model "
-                                       "(avoidance, pull out, pull over, or a shift over several lanes too fast "
-                                       "for the continuous lane change), but its SUMO options set "
-                                       "lateral-resolution " + std::to_string(*user_lateral_resolution));
+  refuse_user_lateral_options(scenario.path, config, user_lateral_resolution, user_lane_change_duration);
   config.depart_pos_lat = lateral.depart_offset;
   for (const ObstacleSpec& o : scenario.obstacles) config.standing.push_back({o.id, o.edge, o.lane, o.pos, o.length});
   // SUMO driving: its own lane changes; maneuvers (a pull out's depart offset included) are signalsim's.

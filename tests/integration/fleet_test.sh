@@ -49,6 +49,10 @@ check junction "$work/cross_fcd" "$work/cross_fcd/fcd.xml"
 check same "$work/cross_fleet" "$work/cross_fcd"
 "$bin" run "$cross" --out "$work/cross_observe" --quiet --set fleet.signals=observe || fail "observe: exit code $?"
 check observe "$work/cross_observe"
+# --fleet beside --set fleet.signals=observe observes: the --set wins over --fleet's signals=set.
+"$bin" run "$cross" --out "$work/cross_fleet_observe" --quiet --fleet --set fleet.signals=observe ||
+  fail "--fleet with observe: exit code $?"
+grep -q '"mode": "observe"' "$work/cross_fleet_observe/summary.json" || fail "--fleet overrode --set fleet.signals=observe"
 for f in timeline.csv events.csv; do
   cmp -s "$work/cross_plain/$f" "$work/cross_fleet/$f" || fail "ego: cross $f differs with --fleet"
 done

@@ -67,13 +67,13 @@ TEST(LateralModel, AvoidancePullOutAndPullOverRunTheSublaneModel) {
 }
 
 TEST(LateralModel, AUsersOwnOptionsDecideTheModel) {
-  // Their sublane model drives the lane change too; their lane-change duration of a step or less is
-  // a jump in SUMO, so the sublane model drives it; a longer one is used as it is.
+  // Their sublane model drives the lane change too; their lane-change duration of 0 is a jump in
+  // SUMO, so the sublane model drives it; a longer one than a step is used as it is.
   EXPECT_DOUBLE_EQ(configured("lane_change_right", {"sumo_args=[--lateral-resolution, 0.4]"}).config.lateral_resolution,
                    0.4);
-  const Configured one_step = configured("lane_change_right", {"sumo_args=[--lanechange.duration, 0.1]"});
-  EXPECT_DOUBLE_EQ(one_step.config.lateral_resolution, 0.1);
-  EXPECT_DOUBLE_EQ(one_step.config.lane_change_duration, 0.0);
+  const Configured zero = configured("lane_change_right", {"sumo_args=[--lanechange.duration, 0]"});
+  EXPECT_DOUBLE_EQ(zero.config.lateral_resolution, 0.1);
+  EXPECT_DOUBLE_EQ(zero.config.lane_change_duration, 0.0);
   const Configured longer = configured("lane_change_right", {"sumo_args=[--lanechange.duration, 3]"});
   EXPECT_DOUBLE_EQ(longer.config.lateral_resolution, 0.0);
   EXPECT_DOUBLE_EQ(longer.config.lane_change_duration, 3.0);
@@ -82,6 +82,23 @@ TEST(LateralModel, AUsersOwnOptionsDecideTheModel) {
   const Configured none = configured("intersection_left");
   EXPECT_FALSE(mentions(none, "--lateral-resolution"));
   EXPECT_FALSE(mentions(none, "--lanechange.duration"));
+}
+
+// SUMO refuses a positive lanechange.duration beside the sublane model ("Only one of the options ...",
+// naming an option the user did not give): a duration of a step or less for a lane change, or any for
+// avoidance, is refused before SUMO starts, naming the user's option.
+TEST(LateralModel, AUsersLaneChangeDurationThatNeedsTheSublaneModelIsRefused) {
+  for (const auto& [name, duration] : {std::pair{"lane_change_right", "0.1"}, std::pair{"avoidance_left", "3"}}) {
+    try {
+      (void)configured(name, {std::string("sumo_args=[--lanechange.duration, ") + duration + "]"});
+      ADD_FAILURE() << name << " with lanechange.duration " << duration << " was accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("needs SUMO's sublane model"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("but its SUMO options set lanechange.duration " + std::string(duration)),
+                std::string::npos)
+          << e.what();
+    }
+  }
 }
 
 // bologna_acosta's edge 46 has three lanes; the route to 201 leaves from lane 2. From lane 1 one

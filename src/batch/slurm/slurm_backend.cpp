@@ -121,10 +121,13 @@ BatchResult collect_slurm_batch(const std::vector<RunSpec>& runs, const BatchSet
     throw std::runtime_error(settings.out_dir + ": --collect: no Slurm job was submitted there (slurm/job.json is " +
                              "missing); submit with --backend slurm");
   const std::string manifest_file = manifest_path(settings.out_dir);
-  if (!fs::exists(manifest_file) || read_text_file(manifest_file) != batch_manifest(runs))
+  const std::string changed = fs::exists(manifest_file)
+                                  ? manifest_difference(read_text_file(manifest_file), batch_manifest(runs))
+                                  : "it has no batch.manifest";
+  if (!changed.empty())
     throw InputError(settings.out_dir, 0,
                      "--collect: the runs there were made with other settings (scenarios, their contents or "
-                     "--set values changed); collect with the command that submitted them");
+                     "--set values changed: " + changed + "); collect with the command that submitted them");
   const ChunkList list = read_chunk_list(settings.out_dir);
 
   BatchStart batch;

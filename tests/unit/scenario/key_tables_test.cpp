@@ -238,5 +238,19 @@ TEST(KeyTables, FleetModeIsOffWithoutTheKeyAndAnIdPatternMustBeARegularExpressio
   }
 }
 
+TEST(KeyTables, AFleetVclassMustBeASumoVehicleClass) {
+  EXPECT_EQ(load_scenario(kTakeOver, {{"fleet.vclass=bus"}}).fleet.vclass, "bus");
+  for (const std::string& bad : {"passengr", "3", "Passenger"}) {
+    try {
+      (void)load_scenario(kTakeOver, {{"fleet.vclass=" + bad}});
+      ADD_FAILURE() << "fleet.vclass " << bad << " was accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("key 'fleet.vclass': '" + bad + "' is not a SUMO vClass"),
+                std::string::npos)
+          << e.what();
+    }
+  }
+}
+
 }  // namespace
 }  // namespace signalsim
