@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "route/route_builder.hpp"
+#include "turn_signal/exit_signal_marking.hpp"
 
 namespace signalsim {
 
@@ -50,7 +51,7 @@ std::shared_ptr<const FleetRoute> FleetRoutes::route(const std::vector<std::stri
     if (edges.empty()) throw sumo::RouteError("the route has no edges");
     sumo::LaneChangeEgo vehicle;
     vehicle.vclass = vclass;
-    built->map = sumo::build_route(net_, edges, {}, vehicle).map;
+    built->map = route_for_decider(sumo::build_route(net_, edges, {}, vehicle).map, params_);
     find_stretches(*built);
   } catch (const std::exception& e) {
     built->error = e.what();

@@ -12,6 +12,7 @@
 
 #include "map/route_map.hpp"
 #include "net/net_index.hpp"
+#include "turn_signal/turn_signal_parameters.hpp"
 
 namespace signalsim {
 
@@ -38,7 +39,9 @@ struct FleetRoute {
 
 class FleetRoutes {
  public:
-  explicit FleetRoutes(const sumo::NetIndex& net) : net_(net) {}
+  /// `params`: the scenario's decider parameters (its country's exit-signal marking is applied to
+  /// every route, as to the ego's: exit_signal_marking.hpp).
+  FleetRoutes(const sumo::NetIndex& net, const TurnSignalParameters& params) : net_(net), params_(params) {}
 
   /// The route of `edges` for a vehicle of SUMO class `vclass` (the lanes it may use), built on first
   /// use. Never throws (a failure is the route's error).
@@ -49,6 +52,7 @@ class FleetRoutes {
 
  private:
   const sumo::NetIndex& net_;
+  TurnSignalParameters params_;
   std::unordered_map<std::string, std::shared_ptr<const FleetRoute>> routes_;  // by vClass and edges, joined with ' '
   int not_understood_ = 0;
 };

@@ -16,7 +16,7 @@ std::string source_name(RequestSource s) { return s == RequestSource::None ? "no
 
 FleetTracker::FleetTracker(const FleetSpec& spec, const TurnSignalParameters& params, std::string country,
                            const sumo::NetIndex& net, std::string ego_id, double step_length)
-    : spec_(spec), params_(params), ego_id_(std::move(ego_id)), step_length_(step_length), routes_(net) {
+    : spec_(spec), params_(params), ego_id_(std::move(ego_id)), step_length_(step_length), routes_(net, params) {
   if (!spec.id_pattern.empty()) id_pattern_.emplace(spec.id_pattern, std::regex::ECMAScript);
   record_.set_signals = spec.set_signals;
   record_.country = std::move(country);

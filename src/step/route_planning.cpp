@@ -15,8 +15,7 @@
 namespace signalsim {
 
 sumo::RoutePlan prepare_route(sumo::RoutePlan plan, const TurnSignalParameters& params) {
-  if (params.turn_signal_roundabout_exit_signal_from_previous_exit)
-    plan.map = mark_exit_signal_lanes(std::move(plan.map));
+  plan.map = route_for_decider(std::move(plan.map), params);
   return plan;
 }
 

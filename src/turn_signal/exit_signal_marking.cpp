@@ -43,4 +43,9 @@ RouteMap mark_exit_signal_lanes(RouteMap route) {
   return RouteMap(std::move(lanelets));
 }
 
+RouteMap route_for_decider(RouteMap route, const TurnSignalParameters& params) {
+  if (!params.turn_signal_roundabout_exit_signal_from_previous_exit) return route;
+  return mark_exit_signal_lanes(std::move(route));
+}
+
 }  // namespace signalsim

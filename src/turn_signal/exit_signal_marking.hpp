@@ -8,6 +8,7 @@
 #pragma once
 
 #include "map/route_map.hpp"
+#include "turn_signal/turn_signal_parameters.hpp"
 
 namespace signalsim {
 
@@ -32,5 +33,10 @@ namespace signalsim {
 /// the front leaves the junction of the previous exit (or the entry, for the first exit) and stays on to
 /// the end of the exit lanelet.
 RouteMap mark_exit_signal_lanes(RouteMap route);
+
+/// The route as the decider sees it under `params`: marked as above when the country's
+/// `turn_signal_roundabout_exit_signal_from_previous_exit` is set (Japan), else unchanged. The one
+/// home of that choice, for the ego's route and for every fleet vehicle's.
+RouteMap route_for_decider(RouteMap route, const TurnSignalParameters& params);
 
 }  // namespace signalsim

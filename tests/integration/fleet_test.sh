@@ -9,7 +9,7 @@
 #   ego          the ego's timeline.csv and events.csv byte-identical with and without --fleet, on
 #                the crossing and on bologna/acosta with its own demand; there every vehicle of the
 #                traffic at the same place at every step (SUMO's FCD)
-#   roundabout   the roundabout under de and kr (entry and exit signals by the preset), with a vehicle
+#   roundabout   the roundabout under de, kr and jp (entry and exit signals by the preset), with a vehicle
 #                a rerouter sends to another exit once it is on the ring
 #   sweep        a sweep over countries in fleet mode: results.csv's fleet_* columns per country
 #   teleport     a vehicle SUMO teleports past the junction: followed, its blinker off after
@@ -128,7 +128,7 @@ assert v["followed"] > 100 and v["signalled"] > 50, v
 PY
 
 # roundabout under two countries, with a rerouted vehicle
-for c in de kr; do
+for c in de kr jp; do
   "$bin" run "$data/roundabout_traffic.yaml" --out "$work/roundabout_$c" --quiet --set country=$c ||
     fail "roundabout $c: exit code $?"
   check roundabout "$work/roundabout_$c" $c

@@ -13,7 +13,7 @@ const sumo::NetIndex& cross() {
 }
 
 TEST(FleetRoutes, OneRoutePerVclassAndEdgesIsBuiltOnceAndShared) {
-  FleetRoutes routes(cross());
+  FleetRoutes routes(cross(), TurnSignalParameters{});
   const auto a = routes.route({"in_N", "out_E"}, "passenger");
   const auto b = routes.route({"in_N", "out_E"}, "passenger");
   EXPECT_EQ(a.get(), b.get());
@@ -23,7 +23,7 @@ TEST(FleetRoutes, OneRoutePerVclassAndEdgesIsBuiltOnceAndShared) {
 }
 
 TEST(FleetRoutes, ATurnIsOneSignalStretchAndAStraightRouteHasNone) {
-  FleetRoutes routes(cross());
+  FleetRoutes routes(cross(), TurnSignalParameters{});
   const auto left = routes.route({"in_N", "out_E"}, "passenger");
   ASSERT_EQ(left->stretches.size(), 1u);
   // the turn's internal lanes: from the end of in_N (189.60 m) to the start of out_E
@@ -33,7 +33,7 @@ TEST(FleetRoutes, ATurnIsOneSignalStretchAndAStraightRouteHasNone) {
 }
 
 TEST(FleetRoutes, QuietOnlyWhileEveryStretchIsPassedOrBeyondReach) {
-  FleetRoutes routes(cross());
+  FleetRoutes routes(cross(), TurnSignalParameters{});
   const auto left = routes.route({"in_N", "out_E"}, "passenger");
   const double reach = 3.0 * 13.89 + 30.0;  // 71.67 m
   EXPECT_TRUE(left->quiet_at(100.0, 96.3, reach));    // 89.6 m to the turn, 1 m margin
@@ -45,7 +45,7 @@ TEST(FleetRoutes, QuietOnlyWhileEveryStretchIsPassedOrBeyondReach) {
 }
 
 TEST(FleetRoutes, ARouteThatCannotBeBuiltIsRememberedWithItsReason) {
-  FleetRoutes routes(cross());
+  FleetRoutes routes(cross(), TurnSignalParameters{});
   const auto broken = routes.route({"in_N", "in_S"}, "passenger");  // not connected
   EXPECT_FALSE(broken->understood());
   EXPECT_NE(broken->error.find("in_N"), std::string::npos) << broken->error;
