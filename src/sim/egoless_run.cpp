@@ -3,6 +3,7 @@
 
 #include "fleet/fleet_tracker.hpp"
 #include "sim/fleet_port.hpp"
+#include "sim/step_loop.hpp"
 
 namespace signalsim {
 
@@ -14,10 +15,9 @@ RunRecord run_egoless(const Scenario& scenario, const sumo::NetIndex& net, const
   run.config.no_ego = true;
   run.session = sumo::open_session(run.config);
   sumo::SumoSession& session = *run.session;
-  for (const auto& [tls, offset] : scenario.light_offsets) session.shift_light_program(tls, offset);
-  FleetTracker tracker(scenario.fleet, scenario.run_params.decider, scenario.country, net, std::string(),
-                       session.delta_t());
-  FleetPort port(session, tracker);
+  shift_light_programs(run);
+  std::optional<FleetTracker> tracker = fleet_tracker(run, net);  // the scenario has fleet: (egoless_run.hpp)
+  FleetPort port(session, *tracker);
   // The last step starts before the end, as the ego's run (half a step of tolerance for rounding).
   const double end = scenario.sumo.begin + scenario.duration - 0.5 * scenario.step_length;
   RunRecord record;
@@ -34,7 +34,7 @@ RunRecord run_egoless(const Scenario& scenario, const sumo::NetIndex& net, const
   }
   ran.end_time = session.time();
   record.sumo = run_sumo_info(run);
-  record.fleet = tracker.finish();
+  record.fleet = tracker->finish();
   return record;
 }
 

@@ -277,13 +277,17 @@ RunSumoInfo run_sumo_info(const StartedRun& run) {
   return info;
 }
 
+void shift_light_programs(const StartedRun& run) {
+  for (const auto& [tls, offset] : run.scenario.light_offsets) run.session->shift_light_program(tls, offset);
+}
+
 // The route's lights with arrow bulbs from every program SUMO loaded (additional files may replace the
 // net's program); then the scenario's light offsets shift the programs.
 CoreSetup core_setup(const StartedRun& run, const sumo::NetIndex& net) {
   sumo::SumoSession& session = *run.session;
   std::vector<sumo::ApproachLight> lights = sumo::approach_lights(net, run.plan.map);
   for (sumo::ApproachLight& a : lights) a.has_arrow = sumo::shows_arrow(session.program_states(a.tls_id), a);
-  for (const auto& [tls, offset] : run.scenario.light_offsets) session.shift_light_program(tls, offset);
+  shift_light_programs(run);
   return CoreSetup{run.scenario,      run.plan.map,    run.lateral, std::move(lights), run_sumo_info(run),
                    session.time(),    run.suts};
 }

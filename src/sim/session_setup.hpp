@@ -79,6 +79,9 @@ StartedRun start_run(PlannedRun planned, const sumo::NetIndex& net, const RunCon
 /// output directory and log, the server's options and the back-end's notes. Never throws.
 RunSumoInfo run_sumo_info(const StartedRun& run);
 
+/// Shifts SUMO's light programs by the scenario's light_offsets (once, after SUMO started).
+void shift_light_programs(const StartedRun& run);
+
 /// What a run's core is built from (step_core.hpp CoreSetup): the route's lights with arrow bulbs from
 /// SUMO's loaded programs, the record's SUMO fields and SUMO's time now. Shifts the light programs by
 /// the scenario's light_offsets (call once, before the first step). Throws sumo::SumoError.

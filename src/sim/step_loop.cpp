@@ -17,17 +17,12 @@ RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, co
   return drive(run, net);
 }
 
-namespace {
-
-// Fleet mode's tracker for a run whose scenario asks for it (docs/fleet.md), else nothing.
 std::optional<FleetTracker> fleet_tracker(const StartedRun& run, const sumo::NetIndex& net) {
   if (!run.scenario.fleet.enabled) return std::nullopt;
   return std::optional<FleetTracker>(std::in_place, run.scenario.fleet, run.scenario.run_params.decider,
                                      run.scenario.country, net, run.session->ego_vehicle().id,
                                      run.session->delta_t());
 }
-
-}  // namespace
 
 RunRecord drive(const StartedRun& run, const sumo::NetIndex& net) {
   CoreSetup setup = core_setup(run, net);  // shifts the light programs

@@ -17,6 +17,8 @@
 // (step/sumo_driven_core.hpp), which commands nothing.
 #pragma once
 
+#include <optional>
+
 #include "fleet/fleet_tracker.hpp"
 #include "net/net_index.hpp"
 #include "report/timeline.hpp"
@@ -36,6 +38,10 @@ RunRecord run_scenario(const Scenario& scenario, const sumo::RoutePlan& plan, co
 /// The step loop on a run whose SUMO is started (session_setup.hpp start_run), with the core its
 /// configuration asks for (signalsim drives, or SUMO does). Throws sumo::SumoError when SUMO fails.
 RunRecord drive(const StartedRun& run, const sumo::NetIndex& net);
+
+/// Fleet mode's tracker for a started run whose scenario asks for it (docs/fleet.md), else nothing;
+/// the ego (none in an egoless run: an empty id) is never among its vehicles.
+std::optional<FleetTracker> fleet_tracker(const StartedRun& run, const sumo::NetIndex& net);
 
 /// The step loop of `core` on `session` until the core says the run is over; with `fleet`, fleet
 /// mode's pass over the other vehicles before each step (docs/fleet.md). Throws sumo::SumoError when
