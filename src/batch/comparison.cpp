@@ -7,7 +7,7 @@
 #include <limits>
 #include <map>
 
-#include "batch/csv.hpp"
+#include "core/csv.hpp"
 #include "report/signal_sections.hpp"
 #include "report/outputs.hpp"
 

@@ -7,7 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "batch/csv.hpp"
+#include "core/csv.hpp"
 #include "report/metric_columns.hpp"
 
 namespace signalsim {

@@ -8,7 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "batch/csv.hpp"
+#include "core/csv.hpp"
 #include "step/behavior_stage.hpp"
 #include "report/metrics.hpp"
 #include "step/route_planning.hpp"

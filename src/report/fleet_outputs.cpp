@@ -1,26 +1,13 @@
 // Fleet mode's files; see fleet_outputs.hpp.
 #include "report/fleet_outputs.hpp"
 
+#include "core/csv.hpp"
 #include "core/number_text.hpp"
 #include "report/atomic_file.hpp"
 #include "scenario/scenario.hpp"  // to_string(Blinker)
 
 namespace signalsim {
 namespace {
-
-// A CSV field: quoted (quotes doubled) when it holds a comma, a quote or a line break.
-void append_field(std::string& out, const std::string& text) {
-  if (text.find_first_of(",\"\n\r") == std::string::npos) {
-    out += text;
-    return;
-  }
-  out += '"';
-  for (char c : text) {
-    if (c == '"') out += '"';
-    out += c;
-  }
-  out += '"';
-}
 
 double mean(double sum, int count) { return count > 0 ? as_written(sum / count, 3) : 0.0; }
 
@@ -46,7 +33,7 @@ nlohmann::ordered_json place_json(const std::string& id, const FleetPlaceStats& 
 void write_fleet_events_csv(const std::string& path, const FleetRecord& record) {
   std::string out = "vehicle,time,blinker,s_front,place,place_kind,source\n";
   for (const FleetEvent& e : record.events) {
-    append_field(out, e.vehicle);
+    out += csv_field(e.vehicle);
     out += ',';
     append_fixed(out, e.time, 3);
     out += ',';
@@ -54,7 +41,7 @@ void write_fleet_events_csv(const std::string& path, const FleetRecord& record) 
     out += ',';
     append_fixed(out, e.s_front, 3);
     out += ',';
-    append_field(out, e.place);
+    out += csv_field(e.place);
     out += ',';
     out += e.place_kind;
     out += ',';

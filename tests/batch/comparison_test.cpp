@@ -7,7 +7,7 @@
 
 #include "route_lanelets.hpp"
 #include "batch/comparison.hpp"
-#include "batch/csv.hpp"
+#include "core/csv.hpp"
 #include "report/metrics.hpp"
 
 namespace signalsim {

@@ -1,5 +1,5 @@
 // CSV text (RFC 4180): quoting a field, splitting a text into records (see csv.hpp).
-#include "batch/csv.hpp"
+#include "core/csv.hpp"
 
 namespace signalsim {
 

@@ -1,5 +1,6 @@
-// CSV text (RFC 4180) as results.csv, timeline.csv, events.csv and compare's tables use it: quoting
-// one field, and splitting a whole text into records of fields. Nothing here knows any column.
+// CSV text (RFC 4180) as signalsim writes and reads it (results.csv, fleet_events.csv, compare's
+// tables, timeline.csv read back): quoting one field, and splitting a whole text into records of
+// fields. Nothing here knows any column.
 #pragma once
 
 #include <string>
