@@ -19,7 +19,10 @@ def read_summary(run_dir):
 
 
 def country_of(summary):
-    """The country preset the run used: the first parameter whose source is 'country XX'; '' when none."""
+    """The country preset the run used: summary.json's `country` ('' when none); a summary written
+    before that field: the first parameter whose source is 'country XX'."""
+    if isinstance(summary.get("country"), str):
+        return summary["country"]
     for source in (summary.get("parameter_sources") or {}).values():
         where = source.get("from", "") if isinstance(source, dict) else ""
         if where.startswith("country "):
